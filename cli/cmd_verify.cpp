@@ -1,0 +1,76 @@
+#include <iostream>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "penumbra/runtime/verify.hpp"
+#include "penumbra/support/atomic_file.hpp"
+
+namespace penumbra::cli {
+namespace {
+
+struct VerifyArgs {
+  std::string library;
+  std::string device;
+  std::vector<std::string> variants;
+  bool validation = false;
+  bool verbose = false;
+};
+
+void print_summary(const VerifyReport& report) {
+  for (const DepthCheck& c : report.depth_checks) {
+    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass on " << c.scene << ": "
+              << c.mismatched << " of " << c.texels << " texels off\n";
+  }
+  for (const VariantRun& v : report.variants) {
+    for (const TargetRun& t : v.targets) {
+      if (!t.executed) continue;
+      double max_error = 0.0;
+      for (const SceneRun& s : t.scenes) max_error = std::max(max_error, s.comparison.max_abs_error);
+      std::cout << (t.pass ? "PASS " : "FAIL ") << v.name << " [" << to_string(t.target)
+                << "] max error " << max_error << "\n";
+    }
+  }
+  std::cout << report.runs - report.failed << " passed, " << report.failed << " failed\n";
+}
+
+}  // namespace
+
+void add_verify_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<VerifyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "verify", "Run every variant on the Vulkan device and check it against the CPU reference");
+  cmd->add_option("library", args->library, "Built library directory")->required();
+  cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
+  cmd->add_option("--variant", args->variants, "Only these variants (repeatable)");
+  cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
+  cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
+  cmd->callback([args, &exit_code] {
+    auto library = load_library(args->library);
+    if (!library) {
+      exit_code = report(library.error());
+      return;
+    }
+    auto engine = Engine::create({.device = args->device, .validation = args->validation},
+                                 stderr_diagnostics(args->verbose));
+    if (!engine) {
+      exit_code = report(engine.error());
+      return;
+    }
+    auto result = verify_library(*library, **engine, {.variants = args->variants},
+                                 stderr_diagnostics(args->verbose));
+    if (!result) {
+      exit_code = report(result.error());
+      return;
+    }
+    const auto path = library->root / "verify.json";
+    if (Status s = write_file_atomic(path, to_json(*result, *library).dump(2) + "\n"); !s) {
+      exit_code = report(s.error());
+      return;
+    }
+    print_summary(*result);
+    std::cout << "results: " << path.string() << "\n";
+    exit_code = result->pass() ? kExitOk : kExitCheckFailed;
+  });
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,19 @@
+// Exit codes (contract section 4) and error reporting for the commands.
+#pragma once
+
+#include "penumbra/support/diagnostics.hpp"
+#include "penumbra/support/result.hpp"
+
+namespace penumbra::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitCheckFailed = 1;  // a verification check failed
+inline constexpr int kExitBadInput = 2;     // bad input or usage, with a message
+
+// Prints "penumbra: error: <where>: <message>" to stderr; returns kExitBadInput.
+int report(const Error& error);
+
+// Diagnostics to stderr, notes only when `verbose`.
+DiagnosticConsumer stderr_diagnostics(bool verbose);
+
+}  // namespace penumbra::cli

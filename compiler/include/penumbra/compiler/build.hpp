@@ -1,0 +1,52 @@
+// Building a shader library: every pass of every variant for each of its
+// targets, written under an output directory with index.json.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string_view>
+
+#include "penumbra/compiler/model.hpp"
+#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/compiler/stage.hpp"
+#include "penumbra/support/diagnostics.hpp"
+
+namespace penumbra {
+
+// "0.1.0": the version written into index.json's generator field.
+std::string_view penumbra_version();
+
+struct BuildOptions {
+  int jobs = 1;  // shaders compiled in parallel (penumbra build -j)
+};
+
+struct BuildSummary {
+  std::size_t variants = 0;  // variants written
+  std::size_t files = 0;     // shader files written
+};
+
+// Compiles everything into a staging directory and swaps it into `out_dir`
+// only when all of it succeeded: on error `out_dir` is left as it was.
+// `diagnostics` is called from the calling thread only.
+Result<BuildSummary> build_library(std::span<const Variant> variants,
+                                   const std::filesystem::path& out_dir,
+                                   const BuildOptions& options,
+                                   const DiagnosticConsumer& diagnostics);
+
+// One compiled stage, in memory.
+struct CompiledStage {
+  std::vector<std::uint32_t> spirv;  // for the target (the source of `text`)
+  std::string text;                  // target text; empty for spirv
+  ShaderInterface interface;
+};
+
+struct CompiledPass {
+  CompiledStage vert;
+  CompiledStage frag;
+};
+
+// Compiles one pass of one variant for one target without writing files.
+Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass);
+
+}  // namespace penumbra

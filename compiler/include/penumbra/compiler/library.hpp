@@ -1,0 +1,40 @@
+// A built shader library read back from OUT/index.json.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "penumbra/compiler/model.hpp"
+#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/compiler/stage.hpp"
+
+namespace penumbra {
+
+struct PassFiles {
+  std::string vert;  // relative to the library root
+  std::string frag;
+};
+
+struct LibraryVariant {
+  Variant variant;  // keys, disks (the baked values) and targets
+  std::map<PassKind, std::map<Target, PassFiles>> passes;
+};
+
+struct Library {
+  std::filesystem::path root;
+  std::string generator;
+  std::vector<LibraryVariant> variants;
+
+  const LibraryVariant* find(std::string_view name) const;
+};
+
+// Reads OUT/index.json; errors name the file and the JSON path.
+Result<Library> load_library(const std::filesystem::path& root);
+
+// Reads a .spv file into words.
+Result<std::vector<std::uint32_t>> read_spirv_file(const std::filesystem::path& path);
+
+}  // namespace penumbra

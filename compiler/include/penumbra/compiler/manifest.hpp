@@ -1,0 +1,70 @@
+// Permutation manifests: which variants to build, for which targets.
+// The schema, expansion rules and error format are in docs/manifest.md.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "penumbra/compiler/model.hpp"
+#include "penumbra/support/result.hpp"
+
+namespace penumbra {
+
+// The built-in disk family (the whitepaper's 16 points); never declared.
+inline constexpr std::string_view kWhitepaperDisk = "whitepaper16";
+
+// A generated disk family from "disks": one disk per sample count.
+struct DiskFamily {
+  std::string method = "sample_elimination";  // a generate_disk method
+  std::uint64_t seed = 1;
+};
+
+// Allowed values per variant axis; an empty list means "not given".
+struct AxisValues {
+  std::vector<Technique> technique;
+  std::vector<int> blocker_samples;
+  std::vector<int> pcf_samples;
+  std::vector<int> kernel;
+  std::vector<std::string> disk;  // family names
+  std::vector<Target> target;
+};
+
+// One entry of "sets": the cartesian product of its axes. `axes.target`
+// holds the manifest's "targets" when the set gives none.
+struct VariantSet {
+  std::string json_path;  // e.g. "/sets/2", for messages
+  AxisValues axes;
+};
+
+// One entry of "exclude": matches variants whose keys are among every given
+// axis's values, and removes the given targets from them (all when none given).
+struct Exclusion {
+  std::string json_path;  // e.g. "/exclude/0"
+  AxisValues match;
+};
+
+// A parsed and validated manifest, not yet expanded.
+struct Manifest {
+  std::string source;                       // file name used in messages
+  std::map<std::string, DiskFamily> disks;  // declared families by name
+  std::vector<Target> targets;              // default targets of every set
+  std::vector<VariantSet> sets;
+  std::vector<Exclusion> exclude;
+};
+
+// Reads and validates a manifest file. Errors: io when the file cannot be
+// read; bad_input naming the file, the JSON path and what is allowed.
+Result<Manifest> load_manifest(const std::filesystem::path& path);
+
+// The same for manifest text; `source_name` stands for the file in messages.
+Result<Manifest> parse_manifest(std::string_view json_text, std::string_view source_name);
+
+// All variants with their disks, exclusions applied and duplicates merged,
+// sorted by technique (hard, pcf_grid, pcf_poisson, pcss) and then by keys.
+Result<std::vector<Variant>> expand(const Manifest& manifest);
+
+}  // namespace penumbra

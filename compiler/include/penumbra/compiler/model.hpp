@@ -1,0 +1,68 @@
+// The data model shared by the compiler, the reference and the runtime:
+// techniques, targets, Poisson disks and variants.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "penumbra/support/result.hpp"
+
+namespace penumbra {
+
+enum class Technique { hard, pcf_grid, pcf_poisson, pcss };
+enum class Target { spirv, glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9 };
+
+inline constexpr std::array kAllTechniques = {Technique::hard, Technique::pcf_grid,
+                                              Technique::pcf_poisson, Technique::pcss};
+inline constexpr std::array kAllTargets = {Target::spirv,   Target::glsl450,   Target::glsl330,
+                                           Target::essl300, Target::hlsl_dx10, Target::hlsl_dx9};
+
+std::string_view to_string(Technique technique);
+std::string_view to_string(Target target);
+std::optional<Technique> parse_technique(std::string_view name);
+std::optional<Target> parse_target(std::string_view name);
+// "hard, pcf_grid, ..." for messages that list what is allowed.
+std::string allowed_techniques();
+std::string allowed_targets();
+
+// Largest sample count / kernel size any variant may use.
+inline constexpr int kMaxSamples = 128;
+
+using Point2 = std::array<float, 2>;
+
+// A Poisson disk exactly as baked into shaders (float32 values).
+struct Disk {
+  std::string name;                       // family name from the manifest, e.g. "whitepaper16"
+  std::string method;                     // "whitepaper", "best_candidate", "sample_elimination"
+  std::uint64_t seed = 0;                 // generator seed (0 for whitepaper16)
+  std::vector<Point2> points;             // the baked points, in order
+  double normalized_min_distance = 0.0;   // min pairwise distance / hexagonal-packing bound
+};
+
+// The keys that select a variant of a technique. Unused keys stay empty.
+struct VariantKeys {
+  std::optional<int> kernel;            // pcf_grid: odd K
+  std::optional<int> blocker_samples;   // pcss
+  std::optional<int> pcf_samples;       // pcf_poisson, pcss
+  std::optional<std::string> disk;      // disk family name: pcf_poisson, pcss
+};
+
+// One fully specified permutation: what gets compiled and verified.
+struct Variant {
+  std::string name;                 // stable, e.g. "pcss_b16_p16_whitepaper16"
+  Technique technique = Technique::hard;
+  VariantKeys keys;
+  std::optional<Disk> blocker_disk; // pcss only
+  std::optional<Disk> pcf_disk;     // pcf_poisson and pcss
+  std::vector<Target> targets;      // targets this variant is emitted for, in kAllTargets order
+};
+
+// Builds the stable variant name from technique and keys:
+// hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16.
+std::string variant_name(Technique technique, const VariantKeys& keys);
+
+}  // namespace penumbra

@@ -1,0 +1,103 @@
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
+
+#include "build/index_json.hpp"
+#include "build/pass_plan.hpp"
+#include "build/pipeline.hpp"
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/support/atomic_file.hpp"
+
+namespace penumbra {
+namespace {
+
+// Shared shaders once per target used by any variant, then each variant's own.
+std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
+  std::vector<ShaderJob> jobs;
+  for (Target target : kAllTargets) {
+    const bool used = std::any_of(variants.begin(), variants.end(), [&](const Variant& v) {
+      return std::find(v.targets.begin(), v.targets.end(), target) != v.targets.end();
+    });
+    if (!used) continue;
+    for (const PassStageSource& source : pass_plan()) {
+      if (!source.per_variant) jobs.push_back(make_job(source, target, nullptr));
+    }
+  }
+  for (const Variant& variant : variants) {
+    for (Target target : variant.targets) {
+      for (const PassStageSource& source : pass_plan()) {
+        if (source.per_variant) jobs.push_back(make_job(source, target, &variant));
+      }
+    }
+  }
+  return jobs;
+}
+
+// Runs all jobs on `threads` workers. Returns the error of the first failing
+// job in plan order, so the message does not depend on thread timing.
+Status run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int threads) {
+  std::vector<std::optional<Error>> errors(jobs.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < jobs.size() && !failed; i = next++) {
+      if (Status status = pipeline.run(jobs[i]); !status) {
+        errors[i] = status.error();
+        failed = true;
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+  }
+  for (auto& error : errors) {
+    if (error) return *error;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string_view penumbra_version() { return PENUMBRA_VERSION; }
+
+Result<BuildSummary> build_library(std::span<const Variant> variants,
+                                   const std::filesystem::path& out_dir,
+                                   const BuildOptions& options,
+                                   const DiagnosticConsumer& diagnostics) {
+  if (variants.empty()) {
+    return make_error(Error::Kind::bad_input, out_dir.string(), "no variants to build");
+  }
+  auto staged = StagedDirectory::create(out_dir);
+  if (!staged) return staged.error();
+
+  std::vector<ShaderJob> jobs = plan_jobs(variants);
+  const int threads = std::clamp(options.jobs, 1, 64);
+  diagnostics({Severity::note, out_dir.string(),
+               "compiling " + std::to_string(jobs.size()) + " shaders for " +
+                   std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
+                   " threads"});
+  PENUMBRA_TRY(run_jobs(jobs, Pipeline(staged->staging()), threads));
+
+  const std::string index = index_json(variants, jobs).dump(2) + "\n";
+  PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index));
+  PENUMBRA_TRY(staged->commit());
+  return BuildSummary{variants.size(), jobs.size()};
+}
+
+Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass) {
+  const Pipeline pipeline(std::nullopt);
+  CompiledPass out;
+  for (const PassStageSource& source : pass_plan()) {
+    if (source.pass != pass) continue;
+    ShaderJob job = make_job(source, target, &variant);
+    PENUMBRA_TRY(pipeline.run(job));
+    CompiledStage& stage = source.stage == ShaderStage::vertex ? out.vert : out.frag;
+    stage = CompiledStage{std::move(job.spirv), std::move(job.text), std::move(job.interface)};
+  }
+  return out;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,102 @@
+#include "build/index_json.hpp"
+
+#include "build/pass_plan.hpp"
+#include "penumbra/compiler/build.hpp"
+
+namespace penumbra {
+namespace {
+
+nlohmann::json points_json(const Disk& disk) {
+  nlohmann::json points = nlohmann::json::array();
+  // float -> double is exact: the JSON holds the baked float32 values.
+  for (const Point2& p : disk.points) {
+    points.push_back({static_cast<double>(p[0]), static_cast<double>(p[1])});
+  }
+  return points;
+}
+
+nlohmann::json disk_info_json(const Disk& disk) {
+  return {{"name", disk.name},
+          {"method", disk.method},
+          {"seed", disk.seed},
+          {"count", disk.points.size()},
+          {"normalized_min_distance", disk.normalized_min_distance}};
+}
+
+// The job that produced `source` for `target` (shared or this variant's).
+const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant,
+                          Target target, const PassStageSource& source) {
+  for (const ShaderJob& job : jobs) {
+    const bool owner = source.per_variant ? job.variant == &variant : job.variant == nullptr;
+    if (owner && job.target == target && job.pass == source.pass && job.stage == source.stage) {
+      return &job;
+    }
+  }
+  return nullptr;
+}
+
+nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>& jobs) {
+  nlohmann::json out = {{"name", variant.name},
+                        {"technique", to_string(variant.technique)},
+                        {"keys", variant_keys_json(variant.keys)}};
+  nlohmann::json disks = nlohmann::json::object();
+  nlohmann::json disk_info = nlohmann::json::object();
+  if (variant.blocker_disk) {
+    disks["blocker"] = points_json(*variant.blocker_disk);
+    disk_info["blocker"] = disk_info_json(*variant.blocker_disk);
+  }
+  if (variant.pcf_disk) {
+    disks["pcf"] = points_json(*variant.pcf_disk);
+    disk_info["pcf"] = disk_info_json(*variant.pcf_disk);
+  }
+  out["disks"] = disks;
+  out["disk_info"] = disk_info;
+
+  nlohmann::json targets = nlohmann::json::array();
+  nlohmann::json passes = nlohmann::json::object();
+  nlohmann::json reflection = nlohmann::json::object();
+  for (Target target : variant.targets) {
+    targets.push_back(to_string(target));
+    for (const PassStageSource& source : pass_plan()) {
+      const ShaderJob* job = find_job(jobs, variant, target, source);
+      if (!job) continue;
+      const std::string pass(to_string(source.pass));
+      const std::string stage = source.stage == ShaderStage::vertex ? "vert" : "frag";
+      const std::string target_name(to_string(target));
+      passes[pass][target_name][stage] = job->output_path;
+      reflection[pass][target_name][stage] = job->interface;
+    }
+  }
+  out["targets"] = targets;
+  out["passes"] = passes;
+  out["reflection"] = reflection;
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json variant_keys_json(const VariantKeys& keys) {
+  nlohmann::json out = nlohmann::json::object();
+  if (keys.kernel) out["kernel"] = *keys.kernel;
+  if (keys.blocker_samples) out["blocker_samples"] = *keys.blocker_samples;
+  if (keys.pcf_samples) out["pcf_samples"] = *keys.pcf_samples;
+  if (keys.disk) out["disk"] = *keys.disk;
+  return out;
+}
+
+nlohmann::json index_json(std::span<const Variant> variants, const std::vector<ShaderJob>& jobs) {
+  nlohmann::json out = {{"generator", "penumbra " + std::string(penumbra_version())},
+                        {"schema", 1},
+                        {"defaults",
+                         {{"light_world_size", 0.5},
+                          {"light_frustum_width", 3.75},
+                          {"near_plane", 9.5},
+                          {"bias", 0.0},
+                          {"filter_radius_texels", 2.0}}}};
+  nlohmann::json list = nlohmann::json::array();
+  for (const Variant& variant : variants) list.push_back(variant_json(variant, jobs));
+  out["variants"] = list;
+  return out;
+}
+
+}  // namespace penumbra

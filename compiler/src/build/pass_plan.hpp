@@ -1,0 +1,28 @@
+// Which shaderlib files make up each pass, and where their output goes.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "penumbra/compiler/stage.hpp"
+
+namespace penumbra {
+
+struct PassStageSource {
+  PassKind pass;
+  ShaderStage stage;
+  std::string_view source;     // shaderlib path
+  std::string_view file_stem;  // output name before the stage suffix
+  bool per_variant;            // false: shared by every variant of a target
+};
+
+std::span<const PassStageSource> pass_plan();
+
+// "spirv/common/depth.vert.spv" or "hlsl_dx9/pcss_b16_p16_whitepaper16/query.frag.hlsl".
+std::string output_path(const PassStageSource& source, Target target, const Variant* variant);
+
+// A job for `source`, ready to run through the pipeline.
+ShaderJob make_job(const PassStageSource& source, Target target, const Variant* variant);
+
+}  // namespace penumbra

@@ -1,0 +1,29 @@
+#include "build/pipeline.hpp"
+
+#include "stages/stages.hpp"
+
+namespace penumbra {
+
+Pipeline::Pipeline(std::optional<std::filesystem::path> write_root) {
+  stages_.push_back(std::make_unique<PreprocessStage>());
+  stages_.push_back(std::make_unique<CompileStage>());
+  stages_.push_back(std::make_unique<ValidateStage>());
+  stages_.push_back(std::make_unique<OptimizeStage>());
+  stages_.push_back(std::make_unique<CrossCompileStage>());
+  stages_.push_back(std::make_unique<ReflectStage>());
+  if (write_root) stages_.push_back(std::make_unique<WriteStage>(std::move(*write_root)));
+}
+
+Status Pipeline::run(ShaderJob& job) const {
+  for (const auto& stage : stages_) {
+    Status status = stage->process(job);
+    if (!status) {
+      Error error = status.error();
+      error.message = std::string(stage->name()) + ": " + error.message;
+      return error;
+    }
+  }
+  return {};
+}
+
+}  // namespace penumbra

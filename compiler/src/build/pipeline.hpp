@@ -1,0 +1,26 @@
+// The ordered stages a ShaderJob runs through.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "penumbra/compiler/stage.hpp"
+
+namespace penumbra {
+
+class Pipeline {
+ public:
+  // preprocess, compile, validate, optimize, cross-compile, reflect, and,
+  // when `write_root` is given, write.
+  explicit Pipeline(std::optional<std::filesystem::path> write_root);
+
+  // Runs every stage in order; stops at the first error, naming the stage.
+  Status run(ShaderJob& job) const;
+
+ private:
+  std::vector<std::unique_ptr<Stage>> stages_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,18 @@
+// variant.glsl: the generated header every shader includes first. It holds
+// the target's defines and the variant's technique, sample counts and
+// Poisson disks as constant arrays.
+#pragma once
+
+#include <string>
+
+#include "penumbra/compiler/model.hpp"
+
+namespace penumbra {
+
+// `variant` may be null for shaders shared by every variant.
+std::string variant_header(const Variant* variant, Target target);
+
+// A float formatted so that reading it back as float32 gives the same bits.
+std::string glsl_float(float value);
+
+}  // namespace penumbra

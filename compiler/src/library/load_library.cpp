@@ -1,0 +1,121 @@
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "penumbra/compiler/library.hpp"
+
+namespace penumbra {
+namespace {
+
+using nlohmann::json;
+
+Error index_error(const std::filesystem::path& file, const std::string& path,
+                  const std::string& message) {
+  return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
+}
+
+Disk read_disk(const json& points, const json& info) {
+  Disk disk;
+  disk.name = info.value("name", "");
+  disk.method = info.value("method", "");
+  disk.seed = info.value("seed", std::uint64_t{0});
+  disk.normalized_min_distance = info.value("normalized_min_distance", 0.0);
+  for (const json& p : points) {
+    disk.points.push_back({p.at(0).get<float>(), p.at(1).get<float>()});
+  }
+  return disk;
+}
+
+Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,
+                                    const std::string& path) {
+  LibraryVariant out;
+  Variant& v = out.variant;
+  v.name = j.at("name").get<std::string>();
+  auto technique = parse_technique(j.at("technique").get<std::string>());
+  if (!technique) {
+    return index_error(file, path + "/technique",
+                       "unknown technique; allowed: " + allowed_techniques());
+  }
+  v.technique = *technique;
+  const json& keys = j.at("keys");
+  if (keys.contains("kernel")) v.keys.kernel = keys["kernel"].get<int>();
+  if (keys.contains("blocker_samples")) v.keys.blocker_samples = keys["blocker_samples"].get<int>();
+  if (keys.contains("pcf_samples")) v.keys.pcf_samples = keys["pcf_samples"].get<int>();
+  if (keys.contains("disk")) v.keys.disk = keys["disk"].get<std::string>();
+  const json& disks = j.at("disks");
+  const json info = j.value("disk_info", json::object());
+  if (disks.contains("blocker")) {
+    v.blocker_disk = read_disk(disks["blocker"], info.value("blocker", json::object()));
+  }
+  if (disks.contains("pcf")) v.pcf_disk = read_disk(disks["pcf"], info.value("pcf", json::object()));
+  for (const json& t : j.at("targets")) {
+    auto target = parse_target(t.get<std::string>());
+    if (!target) {
+      return index_error(file, path + "/targets", "unknown target; allowed: " + allowed_targets());
+    }
+    v.targets.push_back(*target);
+  }
+  for (auto& [pass_name, by_target] : j.at("passes").items()) {
+    const PassKind pass = pass_name == "depth" ? PassKind::depth : PassKind::query;
+    for (auto& [target_name, files] : by_target.items()) {
+      auto target = parse_target(target_name);
+      if (!target) continue;
+      out.passes[pass][*target] = PassFiles{files.at("vert"), files.at("frag")};
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+const LibraryVariant* Library::find(std::string_view name) const {
+  for (const LibraryVariant& v : variants) {
+    if (v.variant.name == name) return &v;
+  }
+  return nullptr;
+}
+
+Result<Library> load_library(const std::filesystem::path& root) {
+  const std::filesystem::path file = root / "index.json";
+  std::ifstream in(file);
+  if (!in) {
+    return make_error(Error::Kind::io, file.string(),
+                      "cannot open the library index (run `penumbra build` first)");
+  }
+  Library library;
+  library.root = root;
+  try {
+    const json j = json::parse(in);
+    library.generator = j.at("generator").get<std::string>();
+    const json& variants = j.at("variants");
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+      auto v = read_variant(file, variants[i], "/variants/" + std::to_string(i));
+      if (!v) return v.error();
+      library.variants.push_back(std::move(*v));
+    }
+  } catch (const json::exception& e) {
+    return make_error(Error::Kind::bad_input, file.string(),
+                      std::string("malformed library index: ") + e.what());
+  }
+  return library;
+}
+
+Result<std::vector<std::uint32_t>> read_spirv_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return make_error(Error::Kind::io, path.string(), "cannot open the SPIR-V file");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  const std::string data = bytes.str();
+  if (data.size() < 20 || data.size() % 4 != 0) {
+    return make_error(Error::Kind::bad_input, path.string(), "not a SPIR-V module (bad size)");
+  }
+  std::vector<std::uint32_t> words(data.size() / 4);
+  std::memcpy(words.data(), data.data(), data.size());
+  if (words[0] != 0x07230203u) {
+    return make_error(Error::Kind::bad_input, path.string(), "not a SPIR-V module (bad magic)");
+  }
+  return words;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,141 @@
+#include "manifest/axes.hpp"
+
+#include "penumbra/compiler/disk.hpp"
+
+namespace penumbra::manifest_detail {
+namespace {
+
+// The largest odd kernel that fits kMaxSamples.
+constexpr int kMaxKernel = kMaxSamples % 2 == 1 ? kMaxSamples : kMaxSamples - 1;
+
+// Reads one value or a list of values with `read_one`, appending to `out`.
+template <typename T, typename ReadOne>
+Status read_list(const JsonNode& node, ReadOne read_one, std::vector<T>& out) {
+  Result<std::vector<JsonNode>> items = node.items();
+  if (!items) return items.error();
+  for (const JsonNode& item : *items) {
+    Result<T> value = read_one(item);
+    if (!value) return value.error();
+    out.push_back(std::move(*value));
+  }
+  return {};
+}
+
+Result<Technique> read_technique(const JsonNode& node) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (auto technique = parse_technique(*name)) return *technique;
+  return node.error("unknown technique '" + *name +
+                    "'; allowed techniques: " + allowed_techniques());
+}
+
+Result<Target> read_target(const JsonNode& node) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (auto target = parse_target(*name)) return *target;
+  return node.error("unknown target '" + *name + "'; allowed targets: " + allowed_targets());
+}
+
+Result<int> read_sample_count(const JsonNode& node) {
+  Result<int> count = node.integer();
+  if (!count) return count.error();
+  if (Status status = check_sample_count(*count); !status) return node.error(status.error());
+  return *count;
+}
+
+Result<int> read_kernel(const JsonNode& node) {
+  Result<int> kernel = node.integer();
+  if (!kernel) return kernel.error();
+  if (*kernel >= 1 && *kernel <= kMaxKernel && *kernel % 2 == 1) return *kernel;
+  return node.error("kernel " + std::to_string(*kernel) + " is not allowed; allowed odd sizes 1.." +
+                    std::to_string(kMaxKernel));
+}
+
+Result<std::string> read_disk(const JsonNode& node,
+                              const std::map<std::string, DiskFamily>& disks) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (*name == kWhitepaperDisk || disks.contains(*name)) return name;
+  std::string allowed;
+  for (const auto& [declared, family] : disks) allowed += declared + ", ";
+  return node.error("unknown disk '" + *name + "'; allowed disks: " + allowed +
+                    std::string(kWhitepaperDisk) + " (declare generated disks under /disks)");
+}
+
+}  // namespace
+
+std::string_view axis_name(Axis axis) {
+  switch (axis) {
+    case Axis::kernel:
+      return "kernel";
+    case Axis::blocker_samples:
+      return "blocker_samples";
+    case Axis::pcf_samples:
+      return "pcf_samples";
+    case Axis::disk:
+      return "disk";
+  }
+  return {};
+}
+
+bool uses(Technique technique, Axis axis) {
+  switch (technique) {
+    case Technique::hard:
+      return false;
+    case Technique::pcf_grid:
+      return axis == Axis::kernel;
+    case Technique::pcf_poisson:
+      return axis == Axis::pcf_samples || axis == Axis::disk;
+    case Technique::pcss:
+      return axis != Axis::kernel;
+  }
+  return false;
+}
+
+bool is_given(const AxisValues& values, Axis axis) {
+  switch (axis) {
+    case Axis::kernel:
+      return !values.kernel.empty();
+    case Axis::blocker_samples:
+      return !values.blocker_samples.empty();
+    case Axis::pcf_samples:
+      return !values.pcf_samples.empty();
+    case Axis::disk:
+      return !values.disk.empty();
+  }
+  return false;
+}
+
+std::string describe_axes(Technique technique) {
+  std::string out;
+  for (Axis axis : kKeyAxes) {
+    if (!uses(technique, axis)) continue;
+    if (!out.empty()) out += ", ";
+    out += axis_name(axis);
+  }
+  return out.empty() ? "no keys" : out;
+}
+
+Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& disks,
+                 AxisValues& out) {
+  const auto read_disk_here = [&disks](const JsonNode& item) { return read_disk(item, disks); };
+  if (node.has("technique")) {
+    PENUMBRA_TRY(read_list(node.member("technique"), read_technique, out.technique));
+  }
+  if (node.has("blocker_samples")) {
+    PENUMBRA_TRY(read_list(node.member("blocker_samples"), read_sample_count, out.blocker_samples));
+  }
+  if (node.has("pcf_samples")) {
+    PENUMBRA_TRY(read_list(node.member("pcf_samples"), read_sample_count, out.pcf_samples));
+  }
+  if (node.has("kernel")) PENUMBRA_TRY(read_list(node.member("kernel"), read_kernel, out.kernel));
+  if (node.has("disk")) PENUMBRA_TRY(read_list(node.member("disk"), read_disk_here, out.disk));
+  if (node.has("target")) PENUMBRA_TRY(read_targets(node.member("target"), out.target));
+  return {};
+}
+
+Status read_targets(const JsonNode& node, std::vector<Target>& out) {
+  return read_list(node, read_target, out);
+}
+
+}  // namespace penumbra::manifest_detail

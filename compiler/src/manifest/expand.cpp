@@ -1,0 +1,160 @@
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <tuple>
+
+#include "manifest/axes.hpp"
+#include "penumbra/compiler/disk.hpp"
+#include "penumbra/compiler/manifest.hpp"
+
+namespace penumbra {
+namespace {
+
+using manifest_detail::Axis;
+using manifest_detail::uses;
+
+// The axis's values when the technique uses it, else one empty value, so the
+// product below skips unused axes.
+template <typename T>
+std::vector<std::optional<T>> axis_values(Technique technique, Axis axis,
+                                          const std::vector<T>& values) {
+  if (!uses(technique, axis)) return {std::nullopt};
+  return {values.begin(), values.end()};
+}
+
+std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes) {
+  std::vector<VariantKeys> out;
+  for (const auto& kernel : axis_values(technique, Axis::kernel, axes.kernel)) {
+    for (const auto& blocker :
+         axis_values(technique, Axis::blocker_samples, axes.blocker_samples)) {
+      for (const auto& pcf : axis_values(technique, Axis::pcf_samples, axes.pcf_samples)) {
+        for (const auto& disk : axis_values(technique, Axis::disk, axes.disk)) {
+          out.push_back({kernel, blocker, pcf, disk});
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// whitepaper16 serves any count up to its 16 points as a prefix; other
+// families are generated. `key` names the sample axis in messages.
+Result<Disk> resolve_disk(const Manifest& manifest, const std::string& family, int count,
+                          std::string_view key) {
+  if (family == kWhitepaperDisk) {
+    Disk disk = whitepaper16();
+    const int size = static_cast<int>(disk.points.size());
+    if (count < 1 || count > size) {
+      return make_error(Error::Kind::bad_input, "",
+                        std::string(key) + " " + std::to_string(count) + " is out of range for " +
+                            disk.name + "; allowed 1.." + std::to_string(size) + " (declare a " +
+                            "generated disk under /disks for more samples)");
+    }
+    disk.points.resize(static_cast<std::size_t>(count));
+    disk.normalized_min_distance = normalized_min_distance(disk.points);
+    return disk;
+  }
+  const auto found = manifest.disks.find(family);
+  if (found == manifest.disks.end()) {
+    return make_error(Error::Kind::bad_input, "", "disk '" + family + "' is not declared");
+  }
+  Result<Disk> disk = generate_disk({count, found->second.seed, found->second.method});
+  if (disk) disk->name = family;
+  return disk;
+}
+
+Result<Variant> make_variant(const Manifest& manifest, Technique technique,
+                             const VariantKeys& keys) {
+  Variant variant;
+  variant.name = variant_name(technique, keys);
+  variant.technique = technique;
+  variant.keys = keys;
+  if (keys.blocker_samples && keys.disk) {
+    Result<Disk> disk =
+        resolve_disk(manifest, *keys.disk, *keys.blocker_samples, "blocker_samples");
+    if (!disk) return disk.error();
+    variant.blocker_disk = std::move(*disk);
+  }
+  if (keys.pcf_samples && keys.disk) {
+    Result<Disk> disk = resolve_disk(manifest, *keys.disk, *keys.pcf_samples, "pcf_samples");
+    if (!disk) return disk.error();
+    variant.pcf_disk = std::move(*disk);
+  }
+  return variant;
+}
+
+template <typename T>
+bool contains(const std::vector<T>& values, const T& value) {
+  return std::find(values.begin(), values.end(), value) != values.end();
+}
+
+// An axis an exclusion does not give matches anything; one it gives matches
+// only variants that have the key with one of its values.
+template <typename T>
+bool allows(const std::vector<T>& values, const std::optional<T>& value) {
+  return values.empty() || (value && contains(values, *value));
+}
+
+bool matches(const AxisValues& match, const Variant& variant) {
+  return (match.technique.empty() || contains(match.technique, variant.technique)) &&
+         allows(match.kernel, variant.keys.kernel) &&
+         allows(match.blocker_samples, variant.keys.blocker_samples) &&
+         allows(match.pcf_samples, variant.keys.pcf_samples) &&
+         allows(match.disk, variant.keys.disk);
+}
+
+void apply(const Exclusion& exclusion, Variant& variant) {
+  if (!matches(exclusion.match, variant)) return;
+  if (exclusion.match.target.empty()) {
+    variant.targets.clear();
+  } else {
+    std::erase_if(variant.targets,
+                  [&](Target target) { return contains(exclusion.match.target, target); });
+  }
+}
+
+// Technique order, then keys ascending; names are unique, so this is total.
+bool variant_less(const Variant& a, const Variant& b) {
+  return std::tie(a.technique, a.keys.kernel, a.keys.blocker_samples, a.keys.pcf_samples,
+                  a.keys.disk) < std::tie(b.technique, b.keys.kernel, b.keys.blocker_samples,
+                                          b.keys.pcf_samples, b.keys.disk);
+}
+
+}  // namespace
+
+// Variants are keyed by name, so a variant that several sets produce is built
+// once and gets the union of their targets.
+Result<std::vector<Variant>> expand(const Manifest& manifest) {
+  std::map<std::string, Variant> by_name;
+  for (const VariantSet& set : manifest.sets) {
+    for (Technique technique : set.axes.technique) {
+      for (const VariantKeys& keys : key_product(technique, set.axes)) {
+        const std::string name = variant_name(technique, keys);
+        auto it = by_name.find(name);
+        if (it == by_name.end()) {
+          Result<Variant> variant = make_variant(manifest, technique, keys);
+          if (!variant) {
+            return make_error(variant.error().kind, manifest.source + ": " + set.json_path,
+                              "variant " + name + ": " + variant.error().message);
+          }
+          it = by_name.emplace(name, std::move(*variant)).first;
+        }
+        std::vector<Target>& targets = it->second.targets;
+        targets.insert(targets.end(), set.axes.target.begin(), set.axes.target.end());
+      }
+    }
+  }
+
+  std::vector<Variant> variants;
+  for (auto& [name, variant] : by_name) {
+    std::ranges::sort(variant.targets);
+    variant.targets.erase(std::unique(variant.targets.begin(), variant.targets.end()),
+                          variant.targets.end());
+    for (const Exclusion& exclusion : manifest.exclude) apply(exclusion, variant);
+    if (!variant.targets.empty()) variants.push_back(std::move(variant));
+  }
+  std::ranges::sort(variants, variant_less);
+  return variants;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,84 @@
+#include <algorithm>
+
+#include "manifest/axes.hpp"
+#include "manifest/sections.hpp"
+
+namespace penumbra::manifest_detail {
+namespace {
+
+// Every technique has the keys it needs, and every key given is used by one of
+// them (a key nobody uses is most likely a mistake).
+Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
+  if (axes.technique.empty()) {
+    return node.error("missing key 'technique'; allowed techniques: " + allowed_techniques());
+  }
+  for (Axis axis : kKeyAxes) {
+    const std::string key(axis_name(axis));
+    const bool given = is_given(axes, axis);
+    bool used = false;
+    for (Technique technique : axes.technique) {
+      used = used || uses(technique, axis);
+      if (!given && uses(technique, axis)) {
+        const std::string name(to_string(technique));
+        return node.error("technique " + name + " needs key '" + key + "'; " + name + " uses " +
+                          describe_axes(technique));
+      }
+    }
+    if (given && !used) {
+      return node.member(key).error("key '" + key + "' is used by none of this set's techniques");
+    }
+  }
+  return {};
+}
+
+Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
+  PENUMBRA_TRY(node.expect_keys(kAxisKeys));
+  VariantSet set{.json_path = node.path(), .axes = {}};
+  PENUMBRA_TRY(read_axes(node, manifest.disks, set.axes));
+  PENUMBRA_TRY(check_set_keys(node, set.axes));
+  if (set.axes.target.empty()) set.axes.target = manifest.targets;
+  return set;
+}
+
+Result<Exclusion> read_exclusion(const JsonNode& node, const Manifest& manifest) {
+  PENUMBRA_TRY(node.expect_keys(kAxisKeys));
+  Exclusion exclusion{.json_path = node.path(), .match = {}};
+  PENUMBRA_TRY(read_axes(node, manifest.disks, exclusion.match));
+  const AxisValues& match = exclusion.match;
+  const bool empty =
+      match.technique.empty() && match.target.empty() &&
+      std::ranges::none_of(kKeyAxes, [&](Axis axis) { return is_given(match, axis); });
+  if (empty) {
+    return node.error("an exclusion needs at least one key; allowed keys: " + join(kAxisKeys));
+  }
+  return exclusion;
+}
+
+}  // namespace
+
+Status read_sets(const JsonNode& root, Manifest& manifest) {
+  if (!root.has("sets")) return root.error("missing key 'sets'; a manifest needs at least one set");
+  const JsonNode sets = root.member("sets");
+  PENUMBRA_TRY(sets.expect_array());
+  if (sets.value().empty()) return sets.error("expected at least one set, got an empty list");
+  for (std::size_t i = 0; i < sets.value().size(); ++i) {
+    Result<VariantSet> set = read_set(sets.element(i), manifest);
+    if (!set) return set.error();
+    manifest.sets.push_back(std::move(*set));
+  }
+  return {};
+}
+
+Status read_exclusions(const JsonNode& root, Manifest& manifest) {
+  if (!root.has("exclude")) return {};
+  const JsonNode exclude = root.member("exclude");
+  PENUMBRA_TRY(exclude.expect_array());
+  for (std::size_t i = 0; i < exclude.value().size(); ++i) {
+    Result<Exclusion> exclusion = read_exclusion(exclude.element(i), manifest);
+    if (!exclusion) return exclusion.error();
+    manifest.exclude.push_back(std::move(*exclusion));
+  }
+  return {};
+}
+
+}  // namespace penumbra::manifest_detail

@@ -1,0 +1,70 @@
+#include "penumbra/compiler/model.hpp"
+
+#include <cstddef>
+
+namespace penumbra {
+namespace {
+
+// Indexed by the enum values, so the order must follow the enum declarations.
+constexpr std::array<std::string_view, kAllTechniques.size()> kTechniqueNames = {
+    "hard", "pcf_grid", "pcf_poisson", "pcss"};
+constexpr std::array<std::string_view, kAllTargets.size()> kTargetNames = {
+    "spirv", "glsl450", "glsl330", "essl300", "hlsl_dx10", "hlsl_dx9"};
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> parse_name(const std::array<std::string_view, N>& names,
+                               const std::array<Enum, N>& values, std::string_view name) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (names[i] == name) return values[i];
+  }
+  return std::nullopt;
+}
+
+template <std::size_t N>
+std::string join(const std::array<std::string_view, N>& names) {
+  std::string out;
+  for (std::string_view name : names) {
+    if (!out.empty()) out += ", ";
+    out += name;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string_view to_string(Technique technique) {
+  return kTechniqueNames[static_cast<std::size_t>(technique)];
+}
+
+std::string_view to_string(Target target) {
+  return kTargetNames[static_cast<std::size_t>(target)];
+}
+
+std::optional<Technique> parse_technique(std::string_view name) {
+  return parse_name(kTechniqueNames, kAllTechniques, name);
+}
+
+std::optional<Target> parse_target(std::string_view name) {
+  return parse_name(kTargetNames, kAllTargets, name);
+}
+
+std::string allowed_techniques() {
+  return join(kTechniqueNames);
+}
+
+std::string allowed_targets() {
+  return join(kTargetNames);
+}
+
+// Keys are appended in a fixed order (k, b, p, disk) and only when set, so the
+// name is total over any VariantKeys and stays stable across runs.
+std::string variant_name(Technique technique, const VariantKeys& keys) {
+  std::string name(to_string(technique));
+  if (keys.kernel) name += "_k" + std::to_string(*keys.kernel);
+  if (keys.blocker_samples) name += "_b" + std::to_string(*keys.blocker_samples);
+  if (keys.pcf_samples) name += "_p" + std::to_string(*keys.pcf_samples);
+  if (keys.disk) name += "_" + *keys.disk;
+  return name;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,45 @@
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/Public/ResourceLimits.h>
+
+#include "glsl/glslang_setup.hpp"
+#include "stages/stages.hpp"
+
+namespace penumbra {
+
+Status CompileStage::process(ShaderJob& job) const {
+  ensure_glslang_initialized();
+  const EShLanguage language = glslang_stage(job.stage);
+  glslang::TShader shader(language);
+  const char* text = job.preprocessed.c_str();
+  const char* name = job.source_path.c_str();
+  const int length = static_cast<int>(job.preprocessed.size());
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  configure_environment(shader, job.stage);
+  // Recorded in the module as OpModuleProcessed: names the variant in the binary.
+  shader.addProcesses({"penumbra " + job.describe()});
+
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
+    return make_error(Error::Kind::compile, job.describe(),
+                      std::string("glslang failed:\n") + shader.getInfoLog());
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    return make_error(Error::Kind::compile, job.describe(),
+                      std::string("glslang link failed:\n") + program.getInfoLog());
+  }
+
+  glslang::SpvOptions options;
+  options.disableOptimizer = true;  // optimization is its own stage
+  spv::SpvBuildLogger logger;
+  job.spirv.clear();
+  glslang::GlslangToSpv(*program.getIntermediate(language), job.spirv, &logger, &options);
+  if (job.spirv.empty()) {
+    return make_error(Error::Kind::compile, job.describe(),
+                      "SPIR-V generation failed:\n" + logger.getAllMessages());
+  }
+  return {};
+}
+
+}  // namespace penumbra

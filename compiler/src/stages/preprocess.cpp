@@ -1,0 +1,35 @@
+#include <glslang/Public/ResourceLimits.h>
+
+#include "glsl/glslang_setup.hpp"
+#include "glsl/variant_header.hpp"
+#include "penumbra/shaderlib/files.hpp"
+#include "stages/stages.hpp"
+
+namespace penumbra {
+
+Status PreprocessStage::process(ShaderJob& job) const {
+  auto source = shaderlib::file(job.source_path);
+  if (!source) {
+    return make_error(Error::Kind::internal, job.describe(),
+                      "shaderlib has no file '" + job.source_path + "'");
+  }
+  ensure_glslang_initialized();
+  glslang::TShader shader(glslang_stage(job.stage));
+  const char* text = source->data();
+  const int length = static_cast<int>(source->size());
+  const char* name = job.source_path.c_str();
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  configure_environment(shader, job.stage);
+
+  ShaderlibIncluder includer(variant_header(job.variant, job.target));
+  std::string output;
+  if (!shader.preprocess(GetDefaultResources(), 450, ENoProfile, false, false, EShMsgDefault,
+                         &output, includer)) {
+    return make_error(Error::Kind::compile, job.describe(),
+                      std::string("preprocessing failed:\n") + shader.getInfoLog());
+  }
+  job.preprocessed = std::move(output);
+  return {};
+}
+
+}  // namespace penumbra

@@ -1,0 +1,65 @@
+// The pipeline's stages, in order. Each lives in its own source file.
+#pragma once
+
+#include <filesystem>
+
+#include "penumbra/compiler/stage.hpp"
+
+namespace penumbra {
+
+// Resolves includes and defines (variant.glsl) with glslang's preprocessor.
+class PreprocessStage final : public Stage {
+ public:
+  std::string_view name() const override { return "preprocess"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Compiles the preprocessed GLSL to SPIR-V 1.0 with glslang, in process.
+class CompileStage final : public Stage {
+ public:
+  std::string_view name() const override { return "compile"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Checks the SPIR-V with spirv-val's rules for Vulkan 1.0.
+class ValidateStage final : public Stage {
+ public:
+  std::string_view name() const override { return "validate"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Runs spirv-opt passes that remove dead code but keep names and functions,
+// so that cross-compiled text stays readable; re-validates the result.
+class OptimizeStage final : public Stage {
+ public:
+  std::string_view name() const override { return "optimize"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Checks the target's rules, then emits GLSL or HLSL text with SPIRV-Cross.
+class CrossCompileStage final : public Stage {
+ public:
+  std::string_view name() const override { return "cross-compile"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Records what the shader binds and passes (SPIRV-Cross reflection).
+class ReflectStage final : public Stage {
+ public:
+  std::string_view name() const override { return "reflect"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Writes the target's file, headed by a comment naming variant and keys,
+// under a root directory (the build's staging directory).
+class WriteStage final : public Stage {
+ public:
+  explicit WriteStage(std::filesystem::path root) : root_(std::move(root)) {}
+  std::string_view name() const override { return "write"; }
+  Status process(ShaderJob& job) const override;
+
+ private:
+  std::filesystem::path root_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,28 @@
+// A read-only view of a shadow map holding *linear* light-view z, with the
+// contract's texel addressing (clamp-to-edge).
+#pragma once
+
+#include <algorithm>
+
+#include "penumbra/support/image.hpp"
+
+namespace penumbra::reference {
+
+class ShadowMapView {
+ public:
+  // Reads channel 0 of `depth`; the image must outlive the view.
+  explicit ShadowMapView(const FloatImage& depth) : image_(&depth) {}
+
+  int width() const { return image_->width; }
+  int height() const { return image_->height; }
+
+  // Depth of texel (i, j); indices outside the map take the nearest edge texel.
+  double depth(int i, int j) const {
+    return image_->at(std::clamp(i, 0, width() - 1), std::clamp(j, 0, height() - 1));
+  }
+
+ private:
+  const FloatImage* image_;
+};
+
+}  // namespace penumbra::reference

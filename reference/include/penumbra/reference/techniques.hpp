@@ -1,0 +1,46 @@
+// The CPU reference of every technique (contract section 2), in double
+// precision and independent of the shader sources.
+#pragma once
+
+#include "penumbra/compiler/model.hpp"
+#include "penumbra/reference/light.hpp"
+#include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/shadow_map.hpp"
+#include "penumbra/support/image.hpp"
+#include "penumbra/support/result.hpp"
+
+namespace penumbra::reference {
+
+// A receiver: its shadow-map coordinates and linear light-view z.
+struct Query {
+  double u = 0.0;
+  double v = 0.0;
+  double z = 0.0;
+};
+
+struct Sample {
+  double visibility = 1.0;  // in [0, 1]
+  bool ambiguous = false;   // a point sample lies so close to a texel boundary that a
+                            // GPU may legitimately read the other texel and differ
+};
+
+// Checks that `variant` carries what its technique needs (kernel, disks with
+// as many points as the sample-count keys).
+Status check_variant(const Variant& variant);
+
+// One receiver. `variant` must pass check_variant().
+Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
+                const Query& query, const SamplingPrecision& precision = {});
+
+struct ReferenceImage {
+  FloatImage visibility;  // 1 channel, the receivers' size
+  FloatImage ambiguous;   // 1 channel: 1 where the pixel is ambiguous, else 0
+};
+
+// Every pixel of `receivers` (3 or 4 channels: u, v, z_r) against
+// `shadow_map` (1 channel, linear z). Errors name what is wrong with the inputs.
+Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& shadow_map,
+                                      const LightParams& light, const FloatImage& receivers,
+                                      const SamplingPrecision& precision = {});
+
+}  // namespace penumbra::reference

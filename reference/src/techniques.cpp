@@ -1,0 +1,98 @@
+// The techniques of contract section 2, each a direct reading of its row.
+// Every comparison uses z_r - bias; geometry (search width, penumbra, filter
+// radius) uses the unbiased z_r, as in the whitepaper.
+#include "penumbra/reference/techniques.hpp"
+
+#include <optional>
+#include <vector>
+
+#include "penumbra/reference/sampling.hpp"
+
+namespace penumbra::reference {
+namespace {
+
+// The mean of bilinear comparisons at uv + d * radius over the disk's points.
+double poisson_pcf(const ShadowMapView& map, const Query& q, double z_ref,
+                   const std::vector<Point2>& disk, double radius) {
+  double sum = 0.0;
+  for (const Point2& d : disk)
+    sum += bilinear_compare(map, q.u + d[0] * radius, q.v + d[1] * radius, z_ref);
+  return sum / double(disk.size());
+}
+
+Sample hard(const ShadowMapView& map, const Query& q, double z_ref,
+            const SamplingPrecision& precision) {
+  const TexelCandidates texels = candidate_texels(map, q.u, q.v, precision.point_window());
+  auto lit_at = [&](Texel t) { return lit(z_ref, map.depth(t.i, t.j)); };
+  return {lit_at(texels.texels[0]) ? 1.0 : 0.0, varies(texels, lit_at)};
+}
+
+double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kernel) {
+  const int half = (kernel - 1) / 2;
+  double sum = 0.0;
+  for (int j = -half; j <= half; ++j) {
+    for (int i = -half; i <= half; ++i) {
+      sum += bilinear_compare(map, q.u + double(i) / map.width(), q.v + double(j) / map.height(),
+                              z_ref);
+    }
+  }
+  return sum / (double(kernel) * kernel);
+}
+
+Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, double z_ref,
+            const Disk& blocker_disk, const Disk& pcf_disk, const SamplingPrecision& precision) {
+  // Step 1, blocker search: point samples over the light's footprint on the
+  // near plane, seen from the receiver (similar triangles).
+  const double light_size_uv = light.light_size_uv();
+  const double search_width = light_size_uv * (q.z - light.near_plane) / q.z;
+  // What one blocker sample contributes: its depth when it occludes.
+  auto blocker_at = [&](Texel t) -> std::optional<double> {
+    const double depth = map.depth(t.i, t.j);
+    if (lit(z_ref, depth)) return std::nullopt;
+    return depth;
+  };
+  double blocker_sum = 0.0;
+  int blockers = 0;
+  bool ambiguous = false;
+  for (const Point2& d : blocker_disk.points) {
+    const TexelCandidates texels = candidate_texels(
+        map, q.u + d[0] * search_width, q.v + d[1] * search_width, precision.point_window());
+    ambiguous = ambiguous || varies(texels, blocker_at);
+    if (const auto depth = blocker_at(texels.texels[0])) {
+      blocker_sum += *depth;
+      ++blockers;
+    }
+  }
+  if (blockers == 0) return {1.0, ambiguous};
+
+  // Step 2, penumbra size by the parallel-plane estimate.
+  const double avg_blocker_depth = blocker_sum / blockers;
+  const double penumbra = (q.z - avg_blocker_depth) / avg_blocker_depth;
+  const double filter_radius_uv = penumbra * light_size_uv * light.near_plane / q.z;
+
+  // Step 3, filtering.
+  return {poisson_pcf(map, q, z_ref, pcf_disk.points, filter_radius_uv), ambiguous};
+}
+
+}  // namespace
+
+Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
+                const Query& query, const SamplingPrecision& precision) {
+  const double z_ref = query.z - light.bias;
+  switch (variant.technique) {
+    case Technique::hard:
+      return hard(map, query, z_ref, precision);
+    case Technique::pcf_grid:
+      return {pcf_grid(map, query, z_ref, variant.keys.kernel.value()), false};
+    case Technique::pcf_poisson:
+      return {poisson_pcf(map, query, z_ref, variant.pcf_disk.value().points,
+                          light.filter_radius(map.width())),
+              false};
+    case Technique::pcss:
+      return pcss(map, light, query, z_ref, variant.blocker_disk.value(), variant.pcf_disk.value(),
+                  precision);
+  }
+  return {};
+}
+
+}  // namespace penumbra::reference

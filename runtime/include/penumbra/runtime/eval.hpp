@@ -1,0 +1,27 @@
+// `penumbra eval`: one variant's pass for one target over given inputs, on
+// the device or with the CPU reference.
+#pragma once
+
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/reference/light.hpp"
+#include "penumbra/runtime/engine.hpp"
+
+namespace penumbra {
+
+struct EvalInputs {
+  FloatImage shadow_map;           // Pf: linear light-view z, W x H
+  FloatImage receivers;            // PF: (u, v, z_r) per pixel
+  reference::LightParams light;    // light size, frustum width, near plane, bias, filter radius
+};
+
+// Checks the images (channels, sizes, finite values); errors name the input.
+Status check_eval_inputs(const EvalInputs& inputs);
+
+// The visibility image (Pf, the receivers' size) from the device...
+Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& variant,
+                                  Target target, const EvalInputs& inputs, Engine& engine);
+
+// ...or from the CPU reference.
+Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs);
+
+}  // namespace penumbra

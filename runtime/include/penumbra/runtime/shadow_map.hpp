@@ -1,0 +1,33 @@
+// ShadowMap: a shadow map on the device, made by an Engine.
+#pragma once
+
+#include <memory>
+
+namespace penumbra {
+
+namespace detail {
+struct ShadowMapImages;
+}
+
+// Two images of the same normalized depth d = z * depth_scale: a D32_SFLOAT
+// depth image (sampled as `shadow_depth` and `shadow_cmp`) and an R32_SFLOAT
+// colour image (sampled as `shadow_depth` by programs without `shadow_cmp`,
+// the Direct3D 9 style). Only the Engine that made it can use it; it keeps
+// that Engine's Vulkan device alive, so it may outlive the Engine.
+class ShadowMap {
+ public:
+  ShadowMap(const ShadowMap&) = delete;
+  ShadowMap& operator=(const ShadowMap&) = delete;
+  ~ShadowMap();
+
+  int width() const;
+  int height() const;
+
+ private:
+  friend class Engine;
+  explicit ShadowMap(std::unique_ptr<detail::ShadowMapImages> images);
+
+  std::unique_ptr<detail::ShadowMapImages> images_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,95 @@
+#include "formats.hpp"
+
+#include <string>
+
+#include "vk/check.hpp"
+
+namespace penumbra::detail {
+namespace {
+
+struct Requirement {
+  VkFormat format;
+  bool vertex_buffer;  // a buffer feature rather than an optimal-tiling image feature
+  VkFormatFeatureFlags2 feature;
+  const char* feature_name;
+  const char* needed_for;
+};
+
+// Linear filtering of comparisons needs no SAMPLED_IMAGE_FILTER_LINEAR: that
+// bit is about unfiltered reads, and lavapipe, for one, does not report it
+// for D32_SFLOAT. Comparisons need SAMPLED_IMAGE_DEPTH_COMPARISON instead.
+constexpr Requirement kRequirements[] = {
+    {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT,
+     "DEPTH_STENCIL_ATTACHMENT", "the depth pass"},
+    {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",
+     "shadow_depth and shadow_cmp"},
+    {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT,
+     "SAMPLED_IMAGE_DEPTH_COMPARISON", "the comparison sampler of shadow_cmp"},
+    {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
+     "shadow map uploads"},
+    {kMapColourFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
+     "the depth and query passes"},
+    {kMapColourFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",
+     "shadow_depth without shadow_cmp"},
+    {kMapColourFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
+     "shadow map and visibility readbacks"},
+    {kMapColourFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
+     "shadow map uploads"},
+    {kReceiversFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",
+     "receivers"},
+    {kReceiversFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
+     "receiver uploads"},
+    {kDepthPositionFormat, true, VK_FORMAT_FEATURE_2_VERTEX_BUFFER_BIT, "VERTEX_BUFFER",
+     "depth pass positions"},
+    {kQueryPositionFormat, true, VK_FORMAT_FEATURE_2_VERTEX_BUFFER_BIT, "VERTEX_BUFFER",
+     "query pass positions"},
+};
+
+struct FormatFeatures {
+  VkFormatFeatureFlags2 optimal_tiling = 0;
+  VkFormatFeatureFlags2 buffer = 0;
+};
+
+// Vulkan 1.3 reports 64-bit features. Before it, SAMPLED_IMAGE_DEPTH_COMPARISON
+// did not exist and every sampled depth format allowed comparisons, so it is
+// implied by SAMPLED_IMAGE there.
+FormatFeatures features_of(const vk::Device& device, VkFormat format) {
+  if (device.api_version() >= VK_API_VERSION_1_3) {
+    VkFormatProperties3 properties3{};
+    properties3.sType = VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_3;
+    VkFormatProperties2 properties2{};
+    properties2.sType = VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_2;
+    properties2.pNext = &properties3;
+    vkGetPhysicalDeviceFormatProperties2(device.physical(), format, &properties2);
+    return {properties3.optimalTilingFeatures, properties3.bufferFeatures};
+  }
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(device.physical(), format, &properties);
+  FormatFeatures features{properties.optimalTilingFeatures, properties.bufferFeatures};
+  if (features.optimal_tiling & VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT) {
+    features.optimal_tiling |= VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT;
+  }
+  return features;
+}
+
+}  // namespace
+
+Status check_format_support(const vk::Device& device) {
+  static_assert(kVisibilityFormat == kMapColourFormat, "one R32F requirement list serves both");
+  for (const Requirement& requirement : kRequirements) {
+    const FormatFeatures features = features_of(device, requirement.format);
+    const VkFormatFeatureFlags2 supported =
+        requirement.vertex_buffer ? features.buffer : features.optimal_tiling;
+    if ((supported & requirement.feature) == 0) {
+      return make_error(Error::Kind::device, "vkGetPhysicalDeviceFormatProperties",
+                        std::string(device.properties().deviceName) + " does not support " +
+                            vk::format_name(requirement.format) + " with " +
+                            requirement.feature_name + " (" +
+                            (requirement.vertex_buffer ? "buffer" : "optimal tiling") +
+                            "), which " + requirement.needed_for + " need(s)");
+    }
+  }
+  return {};
+}
+
+}  // namespace penumbra::detail

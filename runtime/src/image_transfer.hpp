@@ -1,0 +1,30 @@
+// Moving float texels between the host and an image through staging buffers.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "penumbra/support/result.hpp"
+#include "vk/command_context.hpp"
+#include "vk/device.hpp"
+#include "vk/image.hpp"
+
+namespace penumbra::detail {
+
+// Copies `texels` (tightly packed 32-bit floats, row 0 first, exactly the
+// image's size) into `image`, whose old contents are discarded, and leaves it
+// in `final_layout`. `what` names the image in errors.
+Status upload_image(const vk::Device& device, vk::CommandContext& commands, const vk::Image& image,
+                    std::span<const float> texels, VkImageLayout final_layout,
+                    std::string_view what);
+
+// Reads `image`, which is in `layout` and is left in it, as `components`
+// floats per texel, row 0 first.
+Result<std::vector<float>> read_image(const vk::Device& device, vk::CommandContext& commands,
+                                      const vk::Image& image, VkImageLayout layout,
+                                      std::uint32_t components, std::string_view what);
+
+}  // namespace penumbra::detail

@@ -1,0 +1,107 @@
+#include "pass.hpp"
+
+#include <cstring>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vk/buffer.hpp"
+#include "vk/framebuffer.hpp"
+#include "vk/render_pass.hpp"
+
+namespace penumbra::detail {
+namespace {
+
+vk::RenderPassDesc render_pass_desc(const PassTarget& target) {
+  vk::RenderPassDesc desc;
+  desc.colour = {target.colour->desc().format, target.colour_final};
+  if (target.depth) desc.depth = vk::AttachmentDesc{target.depth->desc().format, target.depth_final};
+  desc.next_stages = target.next_stages;
+  desc.next_access = target.next_access;
+  return desc;
+}
+
+Result<std::optional<vk::Buffer>> create_vertices(const vk::Device& device,
+                                                  std::span<const float> positions) {
+  // A buffer cannot be empty; a pass without vertices only clears its target.
+  if (positions.empty()) return std::optional<vk::Buffer>();
+  auto buffer = vk::Buffer::create(device, positions.size_bytes(), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                   "the vertex buffer");
+  if (!buffer) return buffer.error();
+  std::memcpy(buffer->bytes().data(), positions.data(), positions.size_bytes());
+  return std::optional<vk::Buffer>(std::move(*buffer));
+}
+
+void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_pass,
+                 VkFramebuffer framebuffer, const PassPipeline& pipeline,
+                 const PassDescriptors& descriptors, const std::optional<vk::Buffer>& vertices) {
+  const VkExtent2D extent = draw.target.colour->extent();
+  VkClearValue clears[2]{};
+  clears[0].color.float32[0] = 1.0f;  // the far plane, in normalized depth
+  clears[1].depthStencil.depth = 1.0f;
+  VkRenderPassBeginInfo begin{};
+  begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  begin.renderPass = render_pass;
+  begin.framebuffer = framebuffer;
+  begin.renderArea = {{0, 0}, extent};
+  begin.clearValueCount = draw.target.depth ? 2 : 1;
+  begin.pClearValues = clears;
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
+  const auto& sets = descriptors.sets();
+  if (!sets.empty()) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0,
+                            static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
+  }
+  // No y flip: Vulkan's framebuffer y grows with the row index, so row 0 is v in [0, 1/H).
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width),
+                            static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, extent};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  if (vertices) {
+    const VkBuffer buffer = vertices->get();
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
+    const auto count =
+        static_cast<std::uint32_t>(draw.positions.size() / draw.shape.position_components);
+    vkCmdDraw(cmd, count, 1, 0, 0);
+  }
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace
+
+Status draw_pass(Context& context, const PassDraw& draw) {
+  const VkDevice device = context.device->get();
+  const std::vector<std::string_view> available = draw.resources.available();
+  auto plan = plan_bindings(*draw.program, draw.shape.name, available);
+  if (!plan) return plan.error();
+
+  auto render_pass = vk::create_render_pass(device, render_pass_desc(draw.target));
+  if (!render_pass) return render_pass.error();
+  std::vector<VkImageView> views{draw.target.colour->view()};
+  if (draw.target.depth) views.push_back(draw.target.depth->view());
+  auto framebuffer =
+      vk::create_framebuffer(device, render_pass->get(), views, draw.target.colour->extent());
+  if (!framebuffer) return framebuffer.error();
+
+  auto pipeline =
+      PassPipeline::create(device, *draw.program, *plan, draw.shape, render_pass->get());
+  if (!pipeline) return pipeline.error();
+  auto descriptors =
+      PassDescriptors::create(context, *plan, *pipeline, draw.resources, draw.shape.name);
+  if (!descriptors) return descriptors.error();
+  auto vertices = create_vertices(*context.device, draw.positions);
+  if (!vertices) return vertices.error();
+
+  return context.commands->submit(
+      [&](VkCommandBuffer cmd) {
+        record_draw(cmd, draw, render_pass->get(), framebuffer->get(), *pipeline, *descriptors,
+                    *vertices);
+      },
+      "the " + std::string(draw.shape.name));
+}
+
+}  // namespace penumbra::detail

@@ -1,0 +1,39 @@
+// One draw of a pass program into a render target: what the depth pass and
+// the query pass share, from reflection to the finished submission.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <span>
+
+#include "context.hpp"
+#include "pass_descriptors.hpp"
+#include "pass_pipeline.hpp"
+#include "vk/image.hpp"
+
+namespace penumbra::detail {
+
+// The images a pass draws into (all attachments are cleared to 1.0 first),
+// the layouts it leaves them in, and where they are used next.
+struct PassTarget {
+  const vk::Image* colour = nullptr;  // R32_SFLOAT, output location 0
+  VkImageLayout colour_final = VK_IMAGE_LAYOUT_UNDEFINED;
+  const vk::Image* depth = nullptr;  // D32_SFLOAT or none
+  VkImageLayout depth_final = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkPipelineStageFlags next_stages = 0;
+  VkAccessFlags next_access = 0;
+};
+
+struct PassDraw {
+  const PassProgram* program = nullptr;
+  PassShape shape;
+  PassResources resources;
+  std::span<const float> positions;  // shape.position_components floats per vertex
+  PassTarget target;
+};
+
+// Binds the program's resources by reflection, draws the positions as a
+// triangle list over the whole target, and waits for the result.
+Status draw_pass(Context& context, const PassDraw& draw);
+
+}  // namespace penumbra::detail

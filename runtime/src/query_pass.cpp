@@ -1,0 +1,85 @@
+#include "query_pass.hpp"
+
+#include <string>
+#include <vector>
+
+#include "formats.hpp"
+#include "image_transfer.hpp"
+#include "pass.hpp"
+
+namespace penumbra::detail {
+namespace {
+
+// One triangle covering the whole clip-space square [-1, 1]^2.
+constexpr float kFullScreenTriangle[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
+
+Status check_receivers(const FloatImage& receivers) {
+  const bool channels_ok = receivers.channels == 3 || receivers.channels == 4;
+  if (channels_ok && receivers.data.size() == receivers.pixel_count() * receivers.channels) {
+    return {};
+  }
+  return make_error(Error::Kind::bad_input, "receivers",
+                    "expected 3 or 4 channels (u, v, z_r) and width * height * channels values; "
+                    "got " + std::to_string(receivers.channels) + " channels and " +
+                        std::to_string(receivers.data.size()) + " values for " +
+                        std::to_string(receivers.width) + "x" + std::to_string(receivers.height));
+}
+
+// RGBA32F is the widest format every device samples; a fourth channel pads.
+std::vector<float> to_rgba(const FloatImage& receivers) {
+  std::vector<float> rgba(receivers.pixel_count() * 4, 0.0f);
+  for (std::size_t p = 0; p < receivers.pixel_count(); ++p) {
+    for (int c = 0; c < receivers.channels; ++c) {
+      rgba[p * 4 + c] = receivers.data[p * receivers.channels + c];
+    }
+  }
+  return rgba;
+}
+
+}  // namespace
+
+Result<FloatImage> run_query(Context& context, const PassProgram& program,
+                             const ShadowMapImages& map, const FloatImage& receivers,
+                             const ParamBlock& params) {
+  PENUMBRA_TRY(check_receivers(receivers));
+  PENUMBRA_TRY(context.check_extent(receivers.width, receivers.height, "receivers"));
+  const auto width = static_cast<std::uint32_t>(receivers.width);
+  const auto height = static_cast<std::uint32_t>(receivers.height);
+
+  auto receivers_image = vk::Image::create(
+      *context.device,
+      {width, height, kReceiversFormat, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+       VK_IMAGE_ASPECT_COLOR_BIT},
+      "the receivers image");
+  if (!receivers_image) return receivers_image.error();
+  PENUMBRA_TRY(upload_image(*context.device, *context.commands, *receivers_image,
+                            to_rgba(receivers), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                            "the receivers image"));
+  auto visibility = vk::Image::create(
+      *context.device,
+      {width, height, kVisibilityFormat,
+       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+       VK_IMAGE_ASPECT_COLOR_BIT},
+      "the visibility image");
+  if (!visibility) return visibility.error();
+
+  PassDraw draw;
+  draw.program = &program;
+  draw.shape = {"query pass", kQueryPositionFormat, 2, false};
+  draw.resources = {&params, &map, &*receivers_image};
+  draw.positions = kFullScreenTriangle;
+  draw.target.colour = &*visibility;
+  draw.target.colour_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  draw.target.next_stages = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  draw.target.next_access = VK_ACCESS_TRANSFER_READ_BIT;
+  PENUMBRA_TRY(draw_pass(context, draw));
+
+  auto texels = read_image(*context.device, *context.commands, *visibility,
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 1, "the visibility image");
+  if (!texels) return texels.error();
+  FloatImage result(receivers.width, receivers.height, 1);
+  result.data = std::move(*texels);
+  return result;
+}
+
+}  // namespace penumbra::detail

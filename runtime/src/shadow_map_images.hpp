@@ -1,0 +1,31 @@
+// The device side of a ShadowMap.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <memory>
+
+#include "context.hpp"
+#include "vk/image.hpp"
+
+namespace penumbra::detail {
+
+// Between engine calls the images rest in these layouts, ready for sampling;
+// every operation on them starts and ends there.
+inline constexpr VkImageLayout kMapDepthLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+inline constexpr VkImageLayout kMapColourLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
+struct ShadowMapImages {
+  // First, so it is released after both images. Also identifies the only
+  // Context that may use them: the one with the same device.
+  std::shared_ptr<const vk::Device> device;
+  vk::Image depth;   // D32_SFLOAT
+  vk::Image colour;  // R32_SFLOAT, the same values
+};
+
+// Both images, uninitialized (layout UNDEFINED), usable as attachments,
+// sampled images and transfer source/destination.
+Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context& context, int width,
+                                                                  int height);
+
+}  // namespace penumbra::detail

@@ -1,0 +1,43 @@
+// Device: the logical VkDevice on one physical device, with its graphics queue.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+
+#include "penumbra/support/result.hpp"
+#include "vk/instance.hpp"
+
+namespace penumbra::vk {
+
+class Device {
+ public:
+  // Opens `physical` with one queue of its first graphics-capable family.
+  // Holds `instance`, so the instance outlives every device made from it.
+  static Result<std::shared_ptr<const Device>> create(std::shared_ptr<const Instance> instance,
+                                                      VkPhysicalDevice physical);
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+  ~Device();
+
+  VkDevice get() const { return device_; }
+  VkPhysicalDevice physical() const { return physical_; }
+  VkQueue queue() const { return queue_; }
+  std::uint32_t queue_family() const { return queue_family_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
+
+ private:
+  Device() = default;
+
+  std::shared_ptr<const Instance> instance_;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  std::uint32_t queue_family_ = 0;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+};
+
+}  // namespace penumbra::vk

@@ -1,0 +1,46 @@
+// Image: a single-mip 2D VkImage in device-local memory, with a view of its
+// whole extent. Layouts are managed by whoever records commands on it.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string_view>
+
+#include "penumbra/support/result.hpp"
+#include "vk/device.hpp"
+#include "vk/device_object.hpp"
+#include "vk/memory.hpp"
+
+namespace penumbra::vk {
+
+struct ImageDesc {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkImageUsageFlags usage = 0;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;  // of the view and of transfers
+};
+
+class Image {
+ public:
+  // `what` names the image in error messages ("the shadow depth image").
+  static Result<Image> create(const Device& device, const ImageDesc& desc, std::string_view what);
+
+  VkImage get() const { return image_.get(); }
+  VkImageView view() const { return view_.get(); }
+  const ImageDesc& desc() const { return desc_; }
+  VkExtent2D extent() const { return {desc_.width, desc_.height}; }
+
+ private:
+  Image(const ImageDesc& desc, DeviceMemory memory, DeviceObject<VkImage, vkDestroyImage> image,
+        DeviceObject<VkImageView, vkDestroyImageView> view);
+
+  ImageDesc desc_;
+  // Destroyed in reverse order: the view, then the image, then its memory.
+  DeviceMemory memory_;
+  DeviceObject<VkImage, vkDestroyImage> image_;
+  DeviceObject<VkImageView, vkDestroyImageView> view_;
+};
+
+}  // namespace penumbra::vk

@@ -1,0 +1,32 @@
+# Sourced by scripts/run.sh and scripts/test.sh: installs the Debian 12
+# packages that are missing, then configures and builds with CMake + Ninja.
+
+PENUMBRA_PACKAGES=(
+  cmake ninja-build g++
+  glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev spirv-headers
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  nlohmann-json3-dev libcli11-dev googletest libgtest-dev
+)
+
+install_missing_packages() {
+  local missing=()
+  for pkg in "${PENUMBRA_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  echo "penumbra: installing missing packages: ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# configure_and_build BUILD_DIR [extra cmake args...]
+configure_and_build() {
+  local build_dir="$1"
+  shift
+  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@"
+  cmake --build "$build_dir" --parallel "$(nproc)"
+}

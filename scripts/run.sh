@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, generates the default shader library
+# into out/ and verifies every variant on lavapipe.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/lib/setup.sh
+
+install_missing_packages
+configure_and_build build -DPENUMBRA_BUILD_TESTS=OFF
+./build/penumbra build permutations/default.json -o out -j "$(nproc)"
+status=0
+./build/penumbra verify out || status=$?
+echo
+echo "Shader library: out/ (index.json lists every variant; one folder per target)"
+echo "Verification:   out/verify.json"
+exit "$status"

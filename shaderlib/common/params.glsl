@@ -1,0 +1,24 @@
+// ShadowParams: every parameter a pass reads (docs/shader-interface.md).
+// All members are vec4 so that Direct3D 9 constant registers map one to one.
+#ifndef PENUMBRA_PARAMS_GLSL
+#define PENUMBRA_PARAMS_GLSL
+
+layout(set = 0, binding = 0, std140) uniform ShadowParams {
+  vec4 shadow_map_size;  // W, H, 1/W, 1/H
+  vec4 light;            // light_world_size, light_frustum_width, near_plane, light size in uv
+  vec4 sampling;         // filter_radius_uv, bias, depth_scale, 1/depth_scale
+  vec4 screen_size;      // output width, height, 1/width, 1/height
+} params;
+
+// The whitepaper's names for the same quantities.
+#define LIGHT_WORLD_SIZE (params.light.x)
+#define LIGHT_FRUSTUM_WIDTH (params.light.y)
+#define NEAR_PLANE (params.light.z)
+#define LIGHT_SIZE_UV (params.light.w)
+#define FILTER_RADIUS_UV (params.sampling.x)
+#define DEPTH_BIAS (params.sampling.y)
+#define DEPTH_SCALE (params.sampling.z)
+#define INV_DEPTH_SCALE (params.sampling.w)
+#define TEXEL_SIZE (params.shadow_map_size.zw)
+
+#endif

@@ -1,0 +1,51 @@
+// Shadow-map reads and comparisons. This is the one place where targets
+// differ: PENUMBRA_HAS_COMPARISON_SAMPLER (set by the compiler per target)
+// chooses the hardware comparison sampler or in-shader compares (Direct3D 9).
+// The map holds normalized depth d = z * DEPTH_SCALE (a power of two, exact).
+#ifndef PENUMBRA_SHADOW_MAP_GLSL
+#define PENUMBRA_SHADOW_MAP_GLSL
+
+#include "common/params.glsl"
+
+layout(set = 0, binding = 1) uniform sampler2D shadow_depth;
+#if PENUMBRA_HAS_COMPARISON_SAMPLER
+layout(set = 0, binding = 2) uniform sampler2DShadow shadow_cmp;
+#endif
+
+// Linear light-view z of the texel nearest to uv (point sampling).
+float shadow_depth_point(vec2 uv) {
+  return textureLod(shadow_depth, uv, 0.0).r * INV_DEPTH_SCALE;
+}
+
+// The comparison reference for a receiver: biased and normalized like the map.
+float shadow_reference(float z_receiver) {
+  return (z_receiver - DEPTH_BIAS) * DEPTH_SCALE;
+}
+
+// 1 when the nearest texel lets the receiver see the light (z_r <= depth).
+float shadow_compare_point(vec2 uv, float z_receiver) {
+  return shadow_reference(z_receiver) <= textureLod(shadow_depth, uv, 0.0).r ? 1.0 : 0.0;
+}
+
+// Bilinear comparison: the four texels around uv, each compared, blended
+// with bilinear weights (SampleCmpLevelZero with a linear comparison filter).
+float shadow_compare_bilinear(vec2 uv, float z_receiver) {
+  float reference = shadow_reference(z_receiver);
+#if PENUMBRA_HAS_COMPARISON_SAMPLER
+  return textureLod(shadow_cmp, vec3(uv, reference), 0.0);
+#else
+  vec2 texel = uv * params.shadow_map_size.xy - 0.5;
+  vec2 corner = floor(texel);
+  vec2 weight = texel - corner;
+  // Centres of the four texels; clamp addressing handles the map's edges.
+  vec2 uv00 = (corner + 0.5) * TEXEL_SIZE;
+  vec2 uv11 = uv00 + TEXEL_SIZE;
+  float lit00 = reference <= textureLod(shadow_depth, uv00, 0.0).r ? 1.0 : 0.0;
+  float lit10 = reference <= textureLod(shadow_depth, vec2(uv11.x, uv00.y), 0.0).r ? 1.0 : 0.0;
+  float lit01 = reference <= textureLod(shadow_depth, vec2(uv00.x, uv11.y), 0.0).r ? 1.0 : 0.0;
+  float lit11 = reference <= textureLod(shadow_depth, uv11, 0.0).r ? 1.0 : 0.0;
+  return mix(mix(lit00, lit10, weight.x), mix(lit01, lit11, weight.x), weight.y);
+#endif
+}
+
+#endif

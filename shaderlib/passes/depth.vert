@@ -1,0 +1,18 @@
+#version 450
+// The whitepaper's step 1: render shadow casters from the light. Positions
+// are in light-view space; the projection is the contract's
+// u = 0.5 + (x n / z) / Fw, with clip z spanning [near_plane, 1/depth_scale].
+#extension GL_GOOGLE_include_directive : require
+#include "variant.glsl"
+#include "common/params.glsl"
+
+layout(location = 0) in vec3 position;
+layout(location = 0) out float light_z;
+
+void main() {
+  float far_plane = INV_DEPTH_SCALE;
+  float xy_scale = 2.0 * NEAR_PLANE / LIGHT_FRUSTUM_WIDTH;
+  float clip_z = (position.z - NEAR_PLANE) * far_plane / (far_plane - NEAR_PLANE);
+  gl_Position = vec4(position.xy * xy_scale, clip_z, position.z);
+  light_z = position.z;
+}

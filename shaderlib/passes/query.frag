@@ -1,0 +1,15 @@
+#version 450
+// Query pass: reads the receiver (u, v, z_r) at this pixel and writes the
+// variant's visibility in [0, 1].
+#extension GL_GOOGLE_include_directive : require
+#include "variant.glsl"
+#include "techniques/technique.glsl"
+
+layout(set = 0, binding = 3) uniform sampler2D receivers;
+
+layout(location = 0) out vec4 visibility;
+
+void main() {
+  vec3 query = textureLod(receivers, gl_FragCoord.xy * params.screen_size.zw, 0.0).xyz;
+  visibility = vec4(shadow_visibility(query));
+}

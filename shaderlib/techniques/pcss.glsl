@@ -1,0 +1,59 @@
+// pcss: Percentage-Closer Soft Shadows, step for step as the NVIDIA
+// whitepaper "Integrating Realistic Soft Shadows into Your Game Engine"
+// (function names kept). The blocker search uses BLOCKER_DISK, the
+// filtering PCF_DISK.
+
+// Parallel plane estimation.
+float PenumbraSize(float zReceiver, float zBlocker) {
+  return (zReceiver - zBlocker) / zBlocker;
+}
+
+void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, float zReceiver) {
+  // Similar triangles give the region of the map to search.
+  float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE) / zReceiver;
+  float blockerSum = 0.0;
+  numBlockers = 0.0;
+  for (int i = 0; i < BLOCKER_SEARCH_NUM_SAMPLES; ++i) {
+    float shadowMapDepth = shadow_depth_point(uv + BLOCKER_DISK[i] * searchWidth);
+    if (shadowMapDepth < zReceiver - DEPTH_BIAS) {
+      blockerSum += shadowMapDepth;
+      numBlockers += 1.0;
+    }
+  }
+  // The whitepaper divides unconditionally; PCSS() returns before using the
+  // average when there is no blocker, so avoid the 0/0 here.
+  avgBlockerDepth = numBlockers > 0.0 ? blockerSum / numBlockers : zReceiver;
+}
+
+float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV) {
+  float sum = 0.0;
+  for (int i = 0; i < PCF_NUM_SAMPLES; ++i) {
+    vec2 offset = PCF_DISK[i] * filterRadiusUV;
+    sum += shadow_compare_bilinear(uv + offset, zReceiver);
+  }
+  return sum / float(PCF_NUM_SAMPLES);
+}
+
+float PCSS(vec3 coords) {
+  vec2 uv = coords.xy;
+  float zReceiver = coords.z;  // linear light-view z
+
+  // Step 1: blocker search.
+  float avgBlockerDepth = 0.0;
+  float numBlockers = 0.0;
+  FindBlocker(avgBlockerDepth, numBlockers, uv, zReceiver);
+  if (numBlockers < 1.0) {
+    return 1.0;  // no occluder: fully lit, and filtering is skipped
+  }
+
+  // Step 2: penumbra size.
+  float penumbraRatio = PenumbraSize(zReceiver, avgBlockerDepth);
+  float filterRadiusUV = penumbraRatio * LIGHT_SIZE_UV * NEAR_PLANE / coords.z;
+
+  // Step 3: filtering.
+  return PCF_Filter(uv, zReceiver, filterRadiusUV);
+}
+
+float shadow_visibility(vec3 query) {
+  return PCSS(query);
+}

@@ -1,0 +1,14 @@
+// Selects the technique named by the variant's PENUMBRA_TECHNIQUE_* define.
+#include "common/shadow_map.glsl"
+
+#if defined(PENUMBRA_TECHNIQUE_HARD)
+#include "techniques/hard.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_PCF_GRID)
+#include "techniques/pcf_grid.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_PCF_POISSON)
+#include "techniques/pcf_poisson.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_PCSS)
+#include "techniques/pcss.glsl"
+#else
+#error "no PENUMBRA_TECHNIQUE_* defined"
+#endif

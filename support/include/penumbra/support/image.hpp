@@ -1,0 +1,29 @@
+// FloatImage: a row-major float image, row j = 0 first (as in PFM files).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace penumbra {
+
+struct FloatImage {
+  int width = 0;
+  int height = 0;
+  int channels = 1;          // 1 (Pf) or 3 (PF); 4 only in memory (GPU upload)
+  std::vector<float> data;   // width * height * channels, row j = 0 first
+
+  FloatImage() = default;
+  FloatImage(int w, int h, int c, float fill = 0.0f)
+      : width(w), height(h), channels(c), data(static_cast<std::size_t>(w) * h * c, fill) {}
+
+  float& at(int i, int j, int c = 0) { return data[index(i, j, c)]; }
+  float at(int i, int j, int c = 0) const { return data[index(i, j, c)]; }
+  std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
+
+ private:
+  std::size_t index(int i, int j, int c) const {
+    return (static_cast<std::size_t>(j) * width + i) * channels + c;
+  }
+};
+
+}  // namespace penumbra

@@ -1,0 +1,159 @@
+// `penumbra eval` and `penumbra verify` end to end through the binary, on a
+// small library built by `penumbra build`.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cli_harness.hpp"
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/scene.hpp"
+#include "penumbra/reference/techniques.hpp"
+#include "penumbra/reference/whitepaper_pcss.hpp"
+#include "penumbra/support/pfm.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr const char* kManifest = R"({
+  "schema": 1,
+  "targets": ["spirv", "glsl450"],
+  "sets": [
+    {"technique": ["pcss"], "blocker_samples": [16], "pcf_samples": [16], "disk": ["whitepaper16"]},
+    {"technique": ["hard"]}
+  ]})";
+
+class EvalCommand : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new ScratchDir("eval");
+    const auto manifest = dir_->write("manifest.json", kManifest);
+    const CliRun run = run_penumbra("build '" + manifest.string() + "' -o '" + lib().string() + "'");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    // The whitepaper's own setting: its constants are the scenes' defaults.
+    const reference::Scene scene = reference::builtin_scenes().front();
+    map_ = reference::ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);
+    receivers_ = reference::receivers(scene, scene.receivers_width, scene.receivers_height);
+    ASSERT_TRUE(write_pfm(dir_->path() / "depth.pfm", map_).ok());
+    ASSERT_TRUE(write_pfm(dir_->path() / "recv.pfm", receivers_).ok());
+  }
+  static void TearDownTestSuite() { delete dir_; }
+
+  static std::filesystem::path lib() { return dir_->path() / "lib"; }
+  static std::string path(const std::string& name) { return "'" + (dir_->path() / name).string() + "'"; }
+  static std::string eval_args(const std::string& variant, const std::string& extra) {
+    return "eval '" + lib().string() + "' " + variant + " --shadow-map " + path("depth.pfm") +
+           " --receivers " + path("recv.pfm") + " " + extra;
+  }
+
+  static inline ScratchDir* dir_ = nullptr;
+  static inline FloatImage map_;
+  static inline FloatImage receivers_;
+};
+
+TEST_F(EvalCommand, PcssWhitepaper16AgreesWithTheWhitepapersCode) {
+  const CliRun run = run_penumbra(eval_args("pcss_b16_p16_whitepaper16", "-o " + path("vis.pfm")));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto vis = read_pfm(dir_->path() / "vis.pfm");
+  ASSERT_TRUE(vis.ok()) << vis.error().to_string();
+  ASSERT_EQ(vis->width, receivers_.width);
+  ASSERT_EQ(vis->channels, 1);
+
+  // Pixels whose point samples sit on a texel boundary may differ legitimately.
+  auto library = load_library(lib());
+  ASSERT_TRUE(library.ok());
+  const reference::SamplingPrecision precision;
+  auto ref = reference::evaluate_image(library->find("pcss_b16_p16_whitepaper16")->variant, map_,
+                                       reference::LightParams{}, receivers_, precision);
+  ASSERT_TRUE(ref.ok());
+  const reference::ShadowMapView view(map_);
+  const double tolerance = reference::tolerance(Technique::pcss, precision);
+  std::size_t compared = 0, partial = 0;
+  for (int j = 0; j < vis->height; ++j) {
+    for (int i = 0; i < vis->width; ++i) {
+      if (ref->ambiguous.at(i, j) != 0.0f) continue;
+      const double expected = reference::whitepaper_pcss(view, receivers_.at(i, j, 0),
+                                                         receivers_.at(i, j, 1),
+                                                         receivers_.at(i, j, 2));
+      ASSERT_NEAR(vis->at(i, j), expected, tolerance) << "pixel " << i << ", " << j;
+      ++compared;
+      if (expected > 0.01 && expected < 0.99) ++partial;
+    }
+  }
+  EXPECT_GT(compared, vis->pixel_count() * 9 / 10);
+  EXPECT_GT(partial, 500u) << "the scene must have real penumbrae";
+}
+
+TEST_F(EvalCommand, ReferenceFlagRunsTheCpuReference) {
+  const CliRun run =
+      run_penumbra(eval_args("hard", "--reference -o " + path("hard_ref.pfm")));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto vis = read_pfm(dir_->path() / "hard_ref.pfm");
+  ASSERT_TRUE(vis.ok());
+  double lit = 0;
+  for (float v : vis->data) lit += v;
+  EXPECT_GT(lit, 0.0);
+  EXPECT_LT(lit, static_cast<double>(vis->pixel_count()));
+}
+
+TEST_F(EvalCommand, MissingShadowMapIsExit2AndWritesNothing) {
+  const CliRun run = run_penumbra("eval '" + lib().string() + "' hard --shadow-map " +
+                                  path("absent.pfm") + " --receivers " + path("recv.pfm") +
+                                  " -o " + path("never.pfm"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("absent.pfm"));
+  EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
+}
+
+TEST_F(EvalCommand, WrongReceiversImageIsExit2) {
+  const CliRun run = run_penumbra("eval '" + lib().string() + "' hard --shadow-map " +
+                                  path("depth.pfm") + " --receivers " + path("depth.pfm") +
+                                  " -o " + path("never.pfm"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--receivers"));
+  EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
+}
+
+TEST_F(EvalCommand, UnknownVariantAndTargetAreExit2) {
+  CliRun run = run_penumbra(eval_args("pcss_b99", "-o " + path("never.pfm")));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("pcss_b99"));
+  run = run_penumbra(eval_args("hard", "--target metal -o " + path("never.pfm")));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("metal"));
+  EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
+}
+
+TEST_F(EvalCommand, VerifyWritesVerifyJsonAndPasses) {
+  const CliRun run = run_penumbra("verify '" + lib().string() + "'");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_THAT(run.out, HasSubstr("PASS pcss_b16_p16_whitepaper16 [spirv]"));
+  std::ifstream in(lib() / "verify.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_THAT(text.str(), HasSubstr("\"pass\": true"));
+  std::filesystem::remove(lib() / "verify.json");
+}
+
+TEST_F(EvalCommand, NoVulkanDeviceIsExit2) {
+  const CliRun run = run_penumbra("verify '" + lib().string() + "' --device no-such-gpu");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("no-such-gpu"));
+  EXPECT_FALSE(std::filesystem::exists(lib() / "verify.json"));
+  const CliRun none = run_penumbra("verify '" + lib().string() + "'", "VK_ICD_FILENAMES=/nonexistent.json");
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.err, HasSubstr("Vulkan"));
+  EXPECT_FALSE(std::filesystem::exists(lib() / "verify.json"));
+}
+
+TEST_F(EvalCommand, MissingLibraryIsExit2) {
+  const CliRun run = run_penumbra("verify " + path("nolib"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("index.json"));
+}
+
+}  // namespace
+}  // namespace penumbra::testing

@@ -1,0 +1,185 @@
+// Every manifest error names the file and the JSON path, and says what is allowed.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "penumbra/compiler/manifest.hpp"
+
+namespace penumbra {
+namespace {
+
+// The error of parsing and expanding `json` as "perms.json".
+Error manifest_error(std::string_view json) {
+  Result<Manifest> manifest = parse_manifest(json, "perms.json");
+  if (!manifest) return manifest.error();
+  Result<std::vector<Variant>> variants = expand(*manifest);
+  if (!variants) return variants.error();
+  ADD_FAILURE() << "expected an error for " << json;
+  return {};
+}
+
+// A manifest whose only set is `set`.
+std::string with_set(std::string_view set) {
+  return R"({"schema": 1, "disks": {"poisson": {}}, "sets": [{"technique": "hard"}, )" +
+         std::string(set) + "]}";
+}
+
+void expect_bad_input(const Error& error, std::string_view text) {
+  EXPECT_EQ(error.kind, Error::Kind::bad_input);
+  EXPECT_EQ(error.to_string(), text);
+}
+
+TEST(ManifestErrors, MalformedJsonGivesLineAndColumn) {
+  expect_bad_input(manifest_error("{\"schema\": 1,\n  \"sets\": [}"),
+                   "perms.json: malformed JSON: parse error at line 2, column 12: syntax error "
+                   "while parsing value - unexpected '}'; expected '[', '{', or a literal");
+}
+
+TEST(ManifestErrors, DocumentMustBeAnObject) {
+  expect_bad_input(manifest_error("[1]"), "perms.json: expected an object, got an array");
+}
+
+TEST(ManifestErrors, SchemaIsRequiredAndMustBeOne) {
+  expect_bad_input(manifest_error(R"({"sets": []})"),
+                   "perms.json: missing key 'schema'; allowed value 1");
+  expect_bad_input(manifest_error(R"({"schema": 2, "sets": []})"),
+                   "perms.json: /schema: schema 2 is not supported; allowed value 1");
+}
+
+TEST(ManifestErrors, UnknownTopLevelKey) {
+  expect_bad_input(manifest_error(R"({"schema": 1, "set": []})"),
+                   "perms.json: /set: unknown key 'set'; allowed keys: schema, disks, targets, "
+                   "sets, exclude");
+}
+
+TEST(ManifestErrors, UnknownKeyInASet) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
+                   "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
+                   "blocker_samples, pcf_samples, kernel, disk, target");
+}
+
+TEST(ManifestErrors, UnknownTechnique) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": ["pcss", "vsm"]})")),
+                   "perms.json: /sets/1/technique/1: unknown technique 'vsm'; allowed "
+                   "techniques: hard, pcf_grid, pcf_poisson, pcss");
+}
+
+TEST(ManifestErrors, UnknownTarget) {
+  expect_bad_input(
+      manifest_error(
+          R"({"schema": 1, "targets": ["spirv", "dx12"], "sets": [{"technique": "hard"}]})"),
+      "perms.json: /targets/1: unknown target 'dx12'; allowed targets: spirv, glsl450, glsl330, "
+      "essl300, hlsl_dx10, hlsl_dx9");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "hard", "target": "metal"})")),
+                   "perms.json: /sets/1/target: unknown target 'metal'; allowed targets: spirv, "
+                   "glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9");
+}
+
+TEST(ManifestErrors, SampleCountOutOfRange) {
+  expect_bad_input(
+      manifest_error(
+          with_set(R"({"technique": "pcf_poisson", "pcf_samples": [16, 0], "disk": "poisson"})")),
+      "perms.json: /sets/1/pcf_samples/1: sample count 0 is out of range; allowed "
+      "1..128");
+  expect_bad_input(
+      manifest_error(with_set(
+          R"({"technique": "pcss", "blocker_samples": 129, "pcf_samples": 16, "disk": "poisson"})")),
+      "perms.json: /sets/1/blocker_samples: sample count 129 is out of range; allowed 1..128");
+}
+
+TEST(ManifestErrors, SampleCountMustBeAnInteger) {
+  expect_bad_input(manifest_error(with_set(
+                       R"({"technique": "pcf_poisson", "pcf_samples": 16.5, "disk": "poisson"})")),
+                   "perms.json: /sets/1/pcf_samples: expected an integer, got 16.5");
+}
+
+TEST(ManifestErrors, EvenKernel) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": [3, 4]})")),
+                   "perms.json: /sets/1/kernel/1: kernel 4 is not allowed; allowed odd sizes "
+                   "1..127");
+}
+
+TEST(ManifestErrors, Whitepaper16HasOnly16Points) {
+  expect_bad_input(
+      manifest_error(with_set(
+          R"({"technique": "pcss", "blocker_samples": 16, "pcf_samples": [16, 25], "disk": "whitepaper16"})")),
+      "perms.json: /sets/1: variant pcss_b16_p25_whitepaper16: pcf_samples 25 is out of range "
+      "for whitepaper16; allowed 1..16 (declare a generated disk under /disks for more samples)");
+}
+
+TEST(ManifestErrors, UndeclaredDisk) {
+  expect_bad_input(manifest_error(with_set(
+                       R"({"technique": "pcf_poisson", "pcf_samples": 16, "disk": "vogel"})")),
+                   "perms.json: /sets/1/disk: unknown disk 'vogel'; allowed disks: poisson, "
+                   "whitepaper16 (declare generated disks under /disks)");
+}
+
+TEST(ManifestErrors, DiskDeclarations) {
+  expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"p": {"method": "lloyd"}}})"),
+                   "perms.json: /disks/p/method: unknown disk method 'lloyd'; allowed methods: "
+                   "best_candidate, sample_elimination");
+  expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"p": {"seed": -1}}})"),
+                   "perms.json: /disks/p/seed: expected an integer in 0..18446744073709551615, "
+                   "got -1");
+  expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"p": {"count": 16}}})"),
+                   "perms.json: /disks/p/count: unknown key 'count'; allowed keys: method, seed");
+  expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"whitepaper16": {}}})"),
+                   "perms.json: /disks/whitepaper16: 'whitepaper16' is built in; give generated "
+                   "disks another name");
+  expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"My/Disk": {}}})"),
+                   "perms.json: /disks/My~1Disk: disk name 'My/Disk' is not allowed; use "
+                   "lowercase letters, digits and '_', starting with a letter");
+}
+
+TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "pcss", "pcf_samples": 16, "disk": "poisson"})")),
+      "perms.json: /sets/1: technique pcss needs key 'blocker_samples'; pcss uses "
+      "blocker_samples, pcf_samples, disk");
+  expect_bad_input(manifest_error(with_set(R"({"kernel": 3})")),
+                   "perms.json: /sets/1: missing key 'technique'; allowed techniques: hard, "
+                   "pcf_grid, pcf_poisson, pcss");
+}
+
+TEST(ManifestErrors, KeyNoTechniqueUses) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": ["hard", "pcf_grid"], "kernel": 3,
+                                              "pcf_samples": 16})")),
+                   "perms.json: /sets/1/pcf_samples: key 'pcf_samples' is used by none of this "
+                   "set's techniques");
+}
+
+TEST(ManifestErrors, SetsAndExclusions) {
+  expect_bad_input(manifest_error(R"({"schema": 1})"),
+                   "perms.json: missing key 'sets'; a manifest needs at least one set");
+  expect_bad_input(manifest_error(R"({"schema": 1, "sets": []})"),
+                   "perms.json: /sets: expected at least one set, got an empty list");
+  expect_bad_input(manifest_error(with_set(R"({"technique": []})")),
+                   "perms.json: /sets/1/technique: expected at least one value, got an empty list");
+  expect_bad_input(
+      manifest_error(R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{}]})"),
+      "perms.json: /exclude/0: an exclusion needs at least one key; allowed keys: technique, "
+      "blocker_samples, pcf_samples, kernel, disk, target");
+  expect_bad_input(
+      manifest_error(
+          R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 2}]})"),
+      "perms.json: /exclude/0/kernel: kernel 2 is not allowed; allowed odd sizes 1..127");
+}
+
+TEST(ManifestErrors, MissingFile) {
+  const std::string path = PENUMBRA_BINARY_DIR "/no-such-dir/manifest.json";
+  Result<Manifest> manifest = load_manifest(path);
+  ASSERT_FALSE(manifest.ok());
+  EXPECT_EQ(manifest.error().kind, Error::Kind::io);
+  EXPECT_EQ(manifest.error().to_string(), path + ": cannot read the manifest: no such file");
+}
+
+TEST(ManifestErrors, DirectoryIsNotAManifest) {
+  Result<Manifest> manifest = load_manifest(PENUMBRA_SOURCE_DIR "/permutations");
+  ASSERT_FALSE(manifest.ok());
+  EXPECT_EQ(manifest.error().kind, Error::Kind::io);
+  EXPECT_EQ(manifest.error().to_string(),
+            PENUMBRA_SOURCE_DIR "/permutations: cannot read the manifest: it is a directory");
+}
+
+}  // namespace
+}  // namespace penumbra

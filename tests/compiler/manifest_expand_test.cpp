@@ -1,0 +1,209 @@
+// Manifest expansion: the default library, disks, exclusions, merging, order.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "penumbra/compiler/disk.hpp"
+#include "penumbra/compiler/manifest.hpp"
+
+namespace penumbra {
+namespace {
+
+const std::vector<Target> kEveryTarget(kAllTargets.begin(), kAllTargets.end());
+
+std::vector<Variant> expand_text(std::string_view json) {
+  Result<Manifest> manifest = parse_manifest(json, "test.json");
+  EXPECT_TRUE(manifest.ok()) << manifest.error().to_string();
+  if (!manifest) return {};
+  Result<std::vector<Variant>> variants = expand(*manifest);
+  EXPECT_TRUE(variants.ok()) << variants.error().to_string();
+  return variants ? *variants : std::vector<Variant>{};
+}
+
+std::vector<std::string> names(const std::vector<Variant>& variants) {
+  std::vector<std::string> out;
+  for (const Variant& variant : variants) out.push_back(variant.name);
+  return out;
+}
+
+const Variant* find(const std::vector<Variant>& variants, std::string_view name) {
+  for (const Variant& variant : variants) {
+    if (variant.name == name) return &variant;
+  }
+  return nullptr;
+}
+
+std::vector<Point2> prefix(const Disk& disk, std::size_t count) {
+  return {disk.points.begin(), disk.points.begin() + static_cast<std::ptrdiff_t>(count)};
+}
+
+TEST(ManifestExpand, DefaultLibrary) {
+  Result<Manifest> manifest = load_manifest(PENUMBRA_SOURCE_DIR "/permutations/default.json");
+  ASSERT_TRUE(manifest.ok()) << manifest.error().to_string();
+  Result<std::vector<Variant>> variants = expand(*manifest);
+  ASSERT_TRUE(variants.ok()) << variants.error().to_string();
+  EXPECT_EQ(names(*variants), (std::vector<std::string>{
+                                  "hard",
+                                  "pcf_grid_k3",
+                                  "pcf_grid_k5",
+                                  "pcf_grid_k7",
+                                  "pcf_poisson_p16_poisson",
+                                  "pcf_poisson_p16_whitepaper16",
+                                  "pcf_poisson_p25_poisson",
+                                  "pcf_poisson_p32_poisson",
+                                  "pcf_poisson_p64_poisson",
+                                  "pcss_b16_p16_poisson",
+                                  "pcss_b16_p16_whitepaper16",
+                                  "pcss_b16_p25_poisson",
+                                  "pcss_b16_p32_poisson",
+                                  "pcss_b16_p64_poisson",
+                                  "pcss_b25_p16_poisson",
+                                  "pcss_b25_p25_poisson",
+                                  "pcss_b25_p32_poisson",
+                                  "pcss_b25_p64_poisson",
+                                  "pcss_b32_p16_poisson",
+                                  "pcss_b32_p25_poisson",
+                                  "pcss_b32_p32_poisson",
+                                  "pcss_b32_p64_poisson",
+                              }));
+  for (const Variant& variant : *variants) EXPECT_EQ(variant.targets, kEveryTarget) << variant.name;
+
+  const Variant* whitepaper = find(*variants, "pcss_b16_p16_whitepaper16");
+  ASSERT_TRUE(whitepaper && whitepaper->blocker_disk && whitepaper->pcf_disk);
+  EXPECT_EQ(whitepaper->blocker_disk->points, whitepaper16().points);
+  EXPECT_EQ(whitepaper->pcf_disk->points, whitepaper16().points);
+
+  const Variant* generated = find(*variants, "pcss_b32_p64_poisson");
+  ASSERT_TRUE(generated && generated->blocker_disk && generated->pcf_disk);
+  EXPECT_EQ(generated->pcf_disk->name, "poisson");
+  EXPECT_EQ(generated->blocker_disk->points,
+            generate_disk({.count = 32, .seed = 1, .method = "sample_elimination"})->points);
+  EXPECT_EQ(generated->pcf_disk->points,
+            generate_disk({.count = 64, .seed = 1, .method = "sample_elimination"})->points);
+}
+
+TEST(ManifestExpand, VariantsCarryTheirKeysAndDisks) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "disks": {"poisson": {"method": "best_candidate", "seed": 9}},
+    "sets": [{"technique": ["hard", "pcf_grid", "pcss"], "kernel": 5, "blocker_samples": 12,
+              "pcf_samples": 8, "disk": ["poisson", "whitepaper16"]}]})");
+  ASSERT_EQ(names(variants), (std::vector<std::string>{"hard", "pcf_grid_k5", "pcss_b12_p8_poisson",
+                                                       "pcss_b12_p8_whitepaper16"}));
+  EXPECT_FALSE(variants[0].keys.kernel.has_value());
+  EXPECT_FALSE(variants[0].pcf_disk.has_value());
+  EXPECT_EQ(variants[1].keys.kernel, 5);
+  EXPECT_FALSE(variants[1].keys.disk.has_value());
+
+  const Variant& generated = variants[2];
+  EXPECT_EQ(generated.keys.blocker_samples, 12);
+  EXPECT_EQ(generated.keys.pcf_samples, 8);
+  EXPECT_EQ(generated.keys.disk, "poisson");
+  ASSERT_TRUE(generated.blocker_disk && generated.pcf_disk);
+  EXPECT_EQ(generated.blocker_disk->name, "poisson");
+  EXPECT_EQ(generated.blocker_disk->method, "best_candidate");
+  EXPECT_EQ(generated.blocker_disk->seed, 9u);
+  EXPECT_EQ(generated.blocker_disk->points,
+            generate_disk({.count = 12, .seed = 9, .method = "best_candidate"})->points);
+  EXPECT_EQ(generated.pcf_disk->points,
+            generate_disk({.count = 8, .seed = 9, .method = "best_candidate"})->points);
+
+  // whitepaper16 serves smaller counts as a prefix.
+  const Variant& whitepaper = variants[3];
+  ASSERT_TRUE(whitepaper.blocker_disk && whitepaper.pcf_disk);
+  EXPECT_EQ(whitepaper.pcf_disk->name, "whitepaper16");
+  EXPECT_EQ(whitepaper.blocker_disk->points, prefix(whitepaper16(), 12));
+  EXPECT_EQ(whitepaper.pcf_disk->points, prefix(whitepaper16(), 8));
+}
+
+TEST(ManifestExpand, Whitepaper16PrefixesForBothDisks) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1, "sets": [
+    {"technique": "pcss", "blocker_samples": 16, "pcf_samples": 9, "disk": "whitepaper16"}]})");
+  ASSERT_EQ(names(variants), std::vector<std::string>{"pcss_b16_p9_whitepaper16"});
+  EXPECT_EQ(variants[0].blocker_disk->points, whitepaper16().points);
+  EXPECT_EQ(variants[0].pcf_disk->points, prefix(whitepaper16(), 9));
+  EXPECT_EQ(variants[0].pcf_disk->normalized_min_distance,
+            normalized_min_distance(prefix(whitepaper16(), 9)));
+}
+
+TEST(ManifestExpand, ExclusionWithTargetRemovesOnlyThatTarget) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "disks": {"poisson": {}},
+    "sets": [{"technique": "pcss", "blocker_samples": 16, "pcf_samples": [16, 64],
+              "disk": "poisson"}],
+    "exclude": [{"technique": "pcss", "pcf_samples": 64, "target": "hlsl_dx9"}]})");
+  ASSERT_EQ(names(variants),
+            (std::vector<std::string>{"pcss_b16_p16_poisson", "pcss_b16_p64_poisson"}));
+  EXPECT_EQ(variants[0].targets, kEveryTarget);
+  EXPECT_EQ(variants[1].targets,
+            (std::vector<Target>{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
+                                 Target::hlsl_dx10}));
+}
+
+TEST(ManifestExpand, ExclusionWithoutTargetDropsTheVariant) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": "pcf_grid", "kernel": [3, 5, 7, 9]}],
+    "exclude": [{"kernel": [5, 9]}]})");
+  EXPECT_EQ(names(variants), (std::vector<std::string>{"pcf_grid_k3", "pcf_grid_k7"}));
+}
+
+TEST(ManifestExpand, TargetOnlyExclusionAppliesToEveryVariant) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "targets": ["spirv", "hlsl_dx9"],
+    "sets": [{"technique": ["hard", "pcf_grid"], "kernel": 3}],
+    "exclude": [{"target": "hlsl_dx9"}]})");
+  ASSERT_EQ(names(variants), (std::vector<std::string>{"hard", "pcf_grid_k3"}));
+  for (const Variant& variant : variants) {
+    EXPECT_EQ(variant.targets, std::vector<Target>{Target::spirv}) << variant.name;
+  }
+}
+
+TEST(ManifestExpand, VariantLeftWithoutTargetsIsDropped) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "targets": ["glsl330", "essl300"],
+    "sets": [{"technique": ["hard", "pcf_grid"], "kernel": 3}],
+    "exclude": [{"technique": "pcf_grid", "target": "glsl330"},
+                {"technique": "pcf_grid", "target": ["essl300"]}]})");
+  EXPECT_EQ(names(variants), std::vector<std::string>{"hard"});
+}
+
+TEST(ManifestExpand, ExclusionKeyTheVariantLacksDoesNotMatch) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": ["hard", "pcf_grid"], "kernel": 3}],
+    "exclude": [{"kernel": 3}]})");
+  EXPECT_EQ(names(variants), std::vector<std::string>{"hard"});
+}
+
+TEST(ManifestExpand, DuplicatesMergeWithTheUnionOfTargets) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": "pcf_grid", "kernel": [3, 5], "target": ["hlsl_dx9", "spirv"]},
+             {"technique": "pcf_grid", "kernel": 3, "target": ["glsl330", "spirv"]}]})");
+  ASSERT_EQ(names(variants), (std::vector<std::string>{"pcf_grid_k3", "pcf_grid_k5"}));
+  EXPECT_EQ(variants[0].targets,
+            (std::vector<Target>{Target::spirv, Target::glsl330, Target::hlsl_dx9}));
+  EXPECT_EQ(variants[1].targets, (std::vector<Target>{Target::spirv, Target::hlsl_dx9}));
+}
+
+TEST(ManifestExpand, SortsByTechniqueThenNumericKeys) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "disks": {"b": {"seed": 2}, "a": {"seed": 3}},
+    "sets": [{"technique": "pcss", "blocker_samples": [25, 9], "pcf_samples": [100, 16],
+              "disk": ["b", "a"]},
+             {"technique": "pcf_grid", "kernel": [11, 3, 7]},
+             {"technique": "hard"}]})");
+  EXPECT_EQ(names(variants),
+            (std::vector<std::string>{"hard", "pcf_grid_k3", "pcf_grid_k7", "pcf_grid_k11",
+                                      "pcss_b9_p16_a", "pcss_b9_p16_b", "pcss_b9_p100_a",
+                                      "pcss_b9_p100_b", "pcss_b25_p16_a", "pcss_b25_p16_b",
+                                      "pcss_b25_p100_a", "pcss_b25_p100_b"}));
+}
+
+TEST(ManifestExpand, LoadedManifestNamesItsFile) {
+  Result<Manifest> manifest = load_manifest(PENUMBRA_SOURCE_DIR "/permutations/default.json");
+  ASSERT_TRUE(manifest.ok()) << manifest.error().to_string();
+  EXPECT_EQ(manifest->source, PENUMBRA_SOURCE_DIR "/permutations/default.json");
+  EXPECT_EQ(manifest->sets.at(1).json_path, "/sets/1");
+}
+
+}  // namespace
+}  // namespace penumbra

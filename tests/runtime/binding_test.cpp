@@ -1,0 +1,110 @@
+// Binding by reflection: what a program may declare, and the errors naming
+// what is wrong when it declares something else.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "test_programs.hpp"
+
+namespace penumbra {
+namespace {
+
+const test::TestLight kLight;
+
+class BindingTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    engine_ = test::make_engine();
+    ASSERT_NE(engine_, nullptr);
+    auto map = engine_->upload_shadow_map(FloatImage(2, 2, 1, 0.5f));
+    ASSERT_TRUE(map) << map.error().to_string();
+    map_ = *map;
+  }
+
+  Error query_error(const PassProgram& program, const ParamBlock& params) {
+    auto result = engine_->run_query(program, *map_, FloatImage(2, 2, 3), params);
+    EXPECT_FALSE(result);
+    return result ? Error{} : result.error();
+  }
+
+  std::unique_ptr<Engine> engine_;
+  std::shared_ptr<ShadowMap> map_;
+};
+
+TEST_F(BindingTest, MissingParamBlockMemberIsNamed) {
+  ParamBlock params = test::make_params(kLight, 2, 2, 2, 2);
+  params.erase("sampling");
+  const Error error = query_error(test::compare_program(), params);
+  EXPECT_EQ(error.kind, Error::Kind::bad_input);
+  EXPECT_EQ(error.where, "query pass");
+  EXPECT_EQ(error.message,
+            "ShadowParams member 'sampling' has no value in the ParamBlock (given: light, "
+            "screen_size, shadow_map_size)");
+}
+
+TEST_F(BindingTest, ExtraParamBlockEntriesAreIgnored) {
+  ParamBlock params = test::make_params(kLight, 2, 2, 2, 2);
+  params["not_a_member"] = {1, 2, 3, 4};
+  EXPECT_TRUE(engine_->run_query(test::compare_program(), *map_, FloatImage(2, 2, 3), params));
+}
+
+TEST_F(BindingTest, UnknownSamplerIsNamedWithTheAllowedNames) {
+  const Error error =
+      query_error(test::unknown_sampler_program(), test::make_params(kLight, 2, 2, 2, 2));
+  EXPECT_EQ(error.kind, Error::Kind::bad_input);
+  EXPECT_EQ(error.where, "query pass");
+  EXPECT_EQ(error.message,
+            "sampler 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
+            "names: shadow_depth, shadow_cmp, receivers");
+}
+
+TEST_F(BindingTest, UnknownUniformBlockIsNamed) {
+  PassProgram program = test::compare_program();
+  program.frag.iface.uniform_blocks[0].type_name = "Globals";
+  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  EXPECT_NE(error.message.find("uniform block 'Globals'"), std::string::npos) << error.message;
+}
+
+TEST_F(BindingTest, SamplerOfTheWrongKindIsNamed) {
+  PassProgram program = test::compare_program();
+  program.frag.iface.sampled_images[1].comparison = false;  // shadow_cmp as a plain sampler2D
+  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  EXPECT_EQ(error.message, "sampler 'shadow_cmp' must be a sampler2DShadow (comparison sampler)");
+}
+
+TEST_F(BindingTest, TwoResourcesOnOneBindingAreNamed) {
+  PassProgram program = test::compare_program();
+  program.frag.iface.sampled_images[1].binding = 1;  // shadow_cmp onto shadow_depth's binding
+  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  EXPECT_EQ(error.message, "'shadow_depth' and 'shadow_cmp' share set 0 binding 1");
+}
+
+TEST_F(BindingTest, TheDepthPassBindsOnlyShadowParams) {
+  PassProgram program = test::depth_program();
+  program.frag.iface.sampled_images.push_back({"receivers", 0, 3, false});
+  auto map = engine_->render_depth(program, {}, 2, 2, test::make_params(kLight, 2, 2, 2, 2));
+  ASSERT_FALSE(map);
+  EXPECT_EQ(map.error().where, "depth pass");
+  EXPECT_EQ(map.error().message,
+            "'receivers' has nothing to bind to in the depth pass, which binds: ShadowParams");
+}
+
+TEST_F(BindingTest, VertexInputMustMatchThePass) {
+  PassProgram program = test::compare_program();
+  program.vert.iface.inputs[0].components = 3;
+  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  EXPECT_EQ(error.message,
+            "vertex input 'position' has 3 components; the query pass supplies position (2 "
+            "floats) at location 0");
+}
+
+TEST_F(BindingTest, NonSpirvIsRefused) {
+  PassProgram program = test::compare_program();
+  program.frag.spirv = {1, 2, 3, 4, 5, 6};
+  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  EXPECT_EQ(error.where, "query pass fragment shader");
+  EXPECT_NE(error.message.find("is not a SPIR-V module"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace penumbra

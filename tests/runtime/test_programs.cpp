@@ -1,0 +1,118 @@
+#include "test_programs.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+namespace penumbra::test {
+namespace {
+
+std::vector<std::uint32_t> read_spirv(const std::string& name) {
+  const std::string path = std::string(PENUMBRA_RUNTIME_TEST_SPIRV_DIR) + "/" + name + ".spv";
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file) {
+    ADD_FAILURE() << "cannot read " << path;
+    return {};
+  }
+  std::vector<std::uint32_t> words(static_cast<std::size_t>(file.tellg()) / sizeof(std::uint32_t));
+  file.seekg(0);
+  file.read(reinterpret_cast<char*>(words.data()),
+            static_cast<std::streamsize>(words.size() * sizeof(std::uint32_t)));
+  return words;
+}
+
+// shaders/params.glsl: four std140 vec4 members.
+UniformBlock shadow_params() {
+  return {"ShadowParams", "params", 0, 0, 64,
+          {{"shadow_map_size", 0, 16}, {"light", 16, 16}, {"sampling", 32, 16},
+           {"screen_size", 48, 16}}};
+}
+
+StageCode fullscreen_vert() {
+  ShaderInterface iface;
+  iface.stage = ShaderStage::vertex;
+  iface.inputs = {{"position", 0, 2}};
+  return {read_spirv("fullscreen.vert"), iface};
+}
+
+StageCode query_frag(const std::string& name, std::vector<SampledImage> images) {
+  ShaderInterface iface;
+  iface.stage = ShaderStage::fragment;
+  iface.uniform_blocks = {shadow_params()};
+  iface.sampled_images = std::move(images);
+  iface.outputs = {{"visibility", 0, 4}};
+  return {read_spirv(name), iface};
+}
+
+}  // namespace
+
+ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_w, int screen_h) {
+  const auto mw = static_cast<float>(map_w);
+  const auto mh = static_cast<float>(map_h);
+  const auto sw = static_cast<float>(screen_w);
+  const auto sh = static_cast<float>(screen_h);
+  return {{"shadow_map_size", {mw, mh, 1.0f / mw, 1.0f / mh}},
+          {"light",
+           {light.light_size, light.frustum_width, light.near_plane,
+            light.light_size / light.frustum_width}},
+          {"sampling", {2.0f / mw, light.bias, light.depth_scale, 1.0f / light.depth_scale}},
+          {"screen_size", {sw, sh, 1.0f / sw, 1.0f / sh}}};
+}
+
+PassProgram depth_program() {
+  ShaderInterface vert;
+  vert.stage = ShaderStage::vertex;
+  vert.uniform_blocks = {shadow_params()};
+  vert.inputs = {{"position", 0, 3}};
+  vert.outputs = {{"light_z", 0, 1}};
+  ShaderInterface frag;
+  frag.stage = ShaderStage::fragment;
+  frag.uniform_blocks = {shadow_params()};
+  frag.inputs = {{"light_z", 0, 1}};
+  frag.outputs = {{"depth_out", 0, 1}};
+  return {{read_spirv("depth.vert"), vert}, {read_spirv("depth.frag"), frag}};
+}
+
+PassProgram compare_program() {
+  return {fullscreen_vert(), query_frag("compare.frag", {{"shadow_depth", 0, 1, false},
+                                                         {"shadow_cmp", 0, 2, true},
+                                                         {"receivers", 0, 3, false}})};
+}
+
+PassProgram point_program() {
+  return {fullscreen_vert(),
+          query_frag("point.frag", {{"shadow_depth", 0, 1, false}, {"receivers", 0, 3, false}})};
+}
+
+PassProgram point_with_cmp_program() {
+  return {fullscreen_vert(), query_frag("point_with_cmp.frag", {{"shadow_depth", 0, 1, false},
+                                                                {"shadow_cmp", 0, 2, true},
+                                                                {"receivers", 0, 3, false}})};
+}
+
+PassProgram unknown_sampler_program() {
+  PassProgram program{fullscreen_vert(),
+                      query_frag("unknown_sampler.frag", {{"shadow_mapp", 0, 1, false}})};
+  program.frag.iface.uniform_blocks.clear();
+  return program;
+}
+
+std::unique_ptr<Engine> make_engine(bool validation) {
+  auto engine = Engine::create({"", validation}, ignore_diagnostics());
+  if (!engine) {
+    ADD_FAILURE() << engine.error().to_string();
+    return nullptr;
+  }
+  return std::move(*engine);
+}
+
+FloatImage receivers_row(const std::vector<std::array<float, 3>>& points) {
+  FloatImage image(static_cast<int>(points.size()), 1, 3);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int c = 0; c < 3; ++c) image.at(static_cast<int>(i), 0, c) = points[i][c];
+  }
+  return image;
+}
+
+}  // namespace penumbra::test

@@ -1,0 +1,112 @@
+#include "penumbra/support/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "temp_dir.hpp"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+// The names in `dir`, so a test can see that nothing else was left behind.
+std::vector<std::string> entries(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(WriteFileAtomic, ReplacesTheFileAndLeavesNoTemporary) {
+  testing::TempDir dir;
+  write_text(dir.path() / "f.txt", "old");
+  ASSERT_TRUE(write_file_atomic(dir.path() / "f.txt", "new contents"));
+  EXPECT_EQ(read_text(dir.path() / "f.txt"), "new contents");
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"f.txt"});
+}
+
+TEST(WriteFileAtomic, MissingDirectoryIsAnIoError) {
+  testing::TempDir dir;
+  const auto status = write_file_atomic(dir.path() / "no" / "f.txt", "x");
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().kind, Error::Kind::io);
+  EXPECT_NE(status.error().where.find("f.txt"), std::string::npos);
+}
+
+TEST(StagedDirectory, StagingIsAHiddenSibling) {
+  testing::TempDir dir;
+  auto staged = StagedDirectory::create(dir.path() / "out");
+  ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+  EXPECT_EQ(staged->staging().parent_path(), dir.path());
+  EXPECT_EQ(staged->staging().filename().string().rfind(".out.staging-", 0), 0u);
+  EXPECT_TRUE(fs::is_directory(staged->staging()));
+}
+
+TEST(StagedDirectory, WithoutCommitLeavesNothing) {
+  testing::TempDir dir;
+  fs::create_directory(dir.path() / "out");
+  write_text(dir.path() / "out" / "keep.txt", "previous");
+  {
+    auto staged = StagedDirectory::create(dir.path() / "out");
+    ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+    write_text(staged->staging() / "partial.txt", "half");
+  }
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"out"});
+  EXPECT_EQ(entries(dir.path() / "out"), std::vector<std::string>{"keep.txt"});
+  EXPECT_EQ(read_text(dir.path() / "out" / "keep.txt"), "previous");
+}
+
+TEST(StagedDirectory, CommitReplacesTheFinalDirectory) {
+  testing::TempDir dir;
+  fs::create_directory(dir.path() / "out");
+  write_text(dir.path() / "out" / "stale.txt", "old");
+  {
+    auto staged = StagedDirectory::create(dir.path() / "out");
+    ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+    write_text(staged->staging() / "index.json", "{}");
+    ASSERT_TRUE(staged->commit());
+  }
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"out"});
+  EXPECT_EQ(entries(dir.path() / "out"), std::vector<std::string>{"index.json"});
+}
+
+TEST(StagedDirectory, CommitCreatesAMissingFinalDirectory) {
+  testing::TempDir dir;
+  auto staged = StagedDirectory::create(dir.path() / "a" / "b" / "out/");
+  ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+  write_text(staged->staging() / "x.txt", "x");
+  ASSERT_TRUE(staged->commit());
+  EXPECT_EQ(read_text(dir.path() / "a" / "b" / "out" / "x.txt"), "x");
+  EXPECT_EQ(entries(dir.path() / "a" / "b"), std::vector<std::string>{"out"});
+}
+
+TEST(StagedDirectory, MoveTransfersTheStaging) {
+  testing::TempDir dir;
+  std::optional<Result<StagedDirectory>> staged(StagedDirectory::create(dir.path() / "out"));
+  ASSERT_TRUE(staged->ok());
+  const fs::path staging = (*staged)->staging();
+  StagedDirectory owner(std::move(**staged));
+  staged.reset();  // the moved-from object must not remove what it gave away
+  EXPECT_TRUE(fs::is_directory(staging));
+  ASSERT_TRUE(owner.commit());
+  EXPECT_TRUE(fs::is_directory(dir.path() / "out"));
+}
+
+}  // namespace
+}  // namespace penumbra
