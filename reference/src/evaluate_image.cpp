@@ -1,5 +1,7 @@
 // Whole-image evaluation, with the input checks a CLI user's files need.
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "penumbra/reference/techniques.hpp"
 
@@ -12,8 +14,9 @@ Error bad_variant(const Variant& variant, std::string message) {
 
 Status check_disk(const Variant& variant, const std::optional<Disk>& disk, const char* role,
                   const std::optional<int>& samples, const char* samples_key) {
-  if (!disk || disk->points.empty())
+  if (!disk || disk->points.empty()) {
     return bad_variant(variant, std::string("needs a ") + role + " disk");
+  }
   if (samples && std::size_t(*samples) != disk->points.size()) {
     return bad_variant(variant, std::string(samples_key) + " is " + std::to_string(*samples) +
                                     " but the " + role + " disk has " +

@@ -15,8 +15,9 @@ namespace {
 double poisson_pcf(const ShadowMapView& map, const Query& q, double z_ref,
                    const std::vector<Point2>& disk, double radius) {
   double sum = 0.0;
-  for (const Point2& d : disk)
+  for (const Point2& d : disk) {
     sum += bilinear_compare(map, q.u + d[0] * radius, q.v + d[1] * radius, z_ref);
+  }
   return sum / double(disk.size());
 }
 

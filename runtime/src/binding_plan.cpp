@@ -83,7 +83,8 @@ class Planner {
                   ", which binds: " + joined(available_));
     }
     const std::pair slot{binding.set, binding.binding};
-    if (auto named = slot_of_.find(binding.name); named != slot_of_.end() && named->second != slot) {
+    if (auto named = slot_of_.find(binding.name);
+        named != slot_of_.end() && named->second != slot) {
       return fail("'" + binding.name + "' is at " + slot_name(slot.first, slot.second) +
                   " in one stage and at " + slot_name(named->second.first, named->second.second) +
                   " in the other");

@@ -16,7 +16,7 @@ DeviceInfo describe(const vk::Device& device) {
   info.api_version = properties.apiVersion;
   info.sub_texel_precision_bits = properties.limits.subTexelPrecisionBits;
   // Driver properties are core from Vulkan 1.2; older devices report none.
-  if (properties.apiVersion >= VK_API_VERSION_1_2) {
+  if (device.api_version() >= VK_API_VERSION_1_2) {
     VkPhysicalDeviceDriverProperties driver{};
     driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
     VkPhysicalDeviceProperties2 properties2{};
@@ -37,8 +37,8 @@ Status Context::check_extent(int width, int height, std::string_view what) const
   if (width >= 1 && height >= 1 && width <= limit && height <= limit) return {};
   return make_error(Error::Kind::bad_input, std::string(what),
                     "size " + std::to_string(width) + "x" + std::to_string(height) +
-                        " is out of range; each side must be 1.." + std::to_string(limit) +
-                        " on " + info.name);
+                        " is out of range; each side must be 1.." + std::to_string(limit) + " on " +
+                        info.name);
 }
 
 Result<std::unique_ptr<Context>> create_context(const EngineOptions& options,

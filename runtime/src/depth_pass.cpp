@@ -21,7 +21,8 @@ Result<std::unique_ptr<ShadowMapImages>> render_depth(
 
   std::vector<float> positions;
   positions.reserve(triangles.size() * 3);
-  for (const auto& vertex : triangles) positions.insert(positions.end(), vertex.begin(), vertex.end());
+  for (const auto& vertex : triangles)
+    positions.insert(positions.end(), vertex.begin(), vertex.end());
 
   PassDraw draw;
   draw.program = &program;

@@ -62,9 +62,9 @@ Result<VkPhysicalDevice> select_physical_device(std::span<const VkPhysicalDevice
     index = first_containing(names, selector);
   }
   if (index) return devices[*index];
-  return make_error(Error::Kind::bad_input, "device '" + std::string(selector) + "'",
-                    "no Vulkan device matches; give an index or part of a name of one of: " +
-                        listing(names));
+  return make_error(
+      Error::Kind::bad_input, "device '" + std::string(selector) + "'",
+      "no Vulkan device matches; give an index or part of a name of one of: " + listing(names));
 }
 
 }  // namespace penumbra::detail

@@ -1,5 +1,6 @@
 #include "penumbra/runtime/engine.hpp"
 
+#include <optional>
 #include <utility>
 
 #include "context.hpp"
@@ -33,26 +34,26 @@ Engine::Engine(std::unique_ptr<detail::Context> context) : context_(std::move(co
 
 Engine::~Engine() = default;
 
-const DeviceInfo& Engine::device_info() const { return context_->info; }
+const DeviceInfo& Engine::device_info() const {
+  return context_->info;
+}
 
 Result<std::shared_ptr<ShadowMap>> Engine::render_depth(
     const PassProgram& depth, std::span<const std::array<float, 3>> triangles, int width,
     int height, const ParamBlock& params) {
-  return detail::run_validated(
-      *context_->validation, [&]() -> Result<std::shared_ptr<ShadowMap>> {
-        auto images = detail::render_depth(*context_, depth, triangles, width, height, params);
-        if (!images) return images.error();
-        return std::shared_ptr<ShadowMap>(new ShadowMap(std::move(*images)));
-      });
+  return detail::run_validated(*context_->validation, [&]() -> Result<std::shared_ptr<ShadowMap>> {
+    auto images = detail::render_depth(*context_, depth, triangles, width, height, params);
+    if (!images) return images.error();
+    return std::shared_ptr<ShadowMap>(new ShadowMap(std::move(*images)));
+  });
 }
 
 Result<std::shared_ptr<ShadowMap>> Engine::upload_shadow_map(const FloatImage& normalized_depth) {
-  return detail::run_validated(
-      *context_->validation, [&]() -> Result<std::shared_ptr<ShadowMap>> {
-        auto images = detail::upload_shadow_map(*context_, normalized_depth);
-        if (!images) return images.error();
-        return std::shared_ptr<ShadowMap>(new ShadowMap(std::move(*images)));
-      });
+  return detail::run_validated(*context_->validation, [&]() -> Result<std::shared_ptr<ShadowMap>> {
+    auto images = detail::upload_shadow_map(*context_, normalized_depth);
+    if (!images) return images.error();
+    return std::shared_ptr<ShadowMap>(new ShadowMap(std::move(*images)));
+  });
 }
 
 Result<FloatImage> Engine::read_shadow_map(const ShadowMap& map) {

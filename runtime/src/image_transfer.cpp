@@ -42,9 +42,9 @@ Result<std::vector<float>> read_image(const vk::Device& device, vk::CommandConte
                                       std::uint32_t components, std::string_view what) {
   std::vector<float> texels(static_cast<std::size_t>(image.desc().width) * image.desc().height *
                             components);
-  auto staging = vk::Buffer::create(device, texels.size() * sizeof(float),
-                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                    "the readback buffer for " + std::string(what));
+  auto staging =
+      vk::Buffer::create(device, texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                         "the readback buffer for " + std::string(what));
   if (!staging) return staging.error();
   const VkBufferImageCopy region = whole_image(image);
   PENUMBRA_TRY(commands.submit(

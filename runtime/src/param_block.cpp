@@ -22,9 +22,9 @@ Result<std::vector<std::byte>> pack_params(const ParamsLayout& layout, const Par
     const std::string name = std::string(kParamsBlock) + " member '" + member.name + "'";
     const auto value = params.find(member.name);
     if (value == params.end()) {
-      return make_error(Error::Kind::bad_input, std::string(pass),
-                        name + " has no value in the ParamBlock (given: " + given_names(params) +
-                            ")");
+      return make_error(
+          Error::Kind::bad_input, std::string(pass),
+          name + " has no value in the ParamBlock (given: " + given_names(params) + ")");
     }
     const bool fits = member.size % sizeof(float) == 0 && member.size >= sizeof(float) &&
                       member.size <= sizeof(value->second) &&

@@ -16,7 +16,9 @@ namespace {
 vk::RenderPassDesc render_pass_desc(const PassTarget& target) {
   vk::RenderPassDesc desc;
   desc.colour = {target.colour->desc().format, target.colour_final};
-  if (target.depth) desc.depth = vk::AttachmentDesc{target.depth->desc().format, target.depth_final};
+  if (target.depth) {
+    desc.depth = vk::AttachmentDesc{target.depth->desc().format, target.depth_final};
+  }
   desc.next_stages = target.next_stages;
   desc.next_access = target.next_access;
   return desc;
@@ -26,8 +28,8 @@ Result<std::optional<vk::Buffer>> create_vertices(const vk::Device& device,
                                                   std::span<const float> positions) {
   // A buffer cannot be empty; a pass without vertices only clears its target.
   if (positions.empty()) return std::optional<vk::Buffer>();
-  auto buffer = vk::Buffer::create(device, positions.size_bytes(), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                   "the vertex buffer");
+  auto buffer = vk::Buffer::create(device, positions.size_bytes(),
+                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "the vertex buffer");
   if (!buffer) return buffer.error();
   std::memcpy(buffer->bytes().data(), positions.data(), positions.size_bytes());
   return std::optional<vk::Buffer>(std::move(*buffer));
@@ -55,8 +57,8 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
                             static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
   }
   // No y flip: Vulkan's framebuffer y grows with the row index, so row 0 is v in [0, 1/H).
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width),
-                            static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkViewport viewport{
+      0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);

@@ -12,8 +12,7 @@ namespace penumbra::detail {
 namespace {
 
 Result<std::optional<vk::Buffer>> create_uniforms(const Context& context, const BindingPlan& plan,
-                                                  const ParamBlock& params,
-                                                  std::string_view pass) {
+                                                  const ParamBlock& params, std::string_view pass) {
   const bool uses_params = std::any_of(plan.bindings.begin(), plan.bindings.end(),
                                        [](const auto& b) { return b.role == BindingRole::params; });
   if (!uses_params) return std::optional<vk::Buffer>();
@@ -83,8 +82,8 @@ Result<PassDescriptors> PassDescriptors::create(const Context& context, const Bi
                                 context.nearest.get());
         break;
       case BindingRole::map_colour:
-        vk::write_sampled_image(device, set, binding.binding, map->colour.view(),
-                                kMapColourLayout, context.nearest.get());
+        vk::write_sampled_image(device, set, binding.binding, map->colour.view(), kMapColourLayout,
+                                context.nearest.get());
         break;
       case BindingRole::map_comparison:
         vk::write_sampled_image(device, set, binding.binding, map->depth.view(), kMapDepthLayout,

@@ -17,14 +17,14 @@ Status check_interface(const PassProgram& program, const PassShape& shape) {
       program.frag.iface.stage != ShaderStage::fragment) {
     return fail("the program's reflection must describe a vertex stage and a fragment stage");
   }
-  const std::string supplied = "position (" + std::to_string(shape.position_components) +
-                               " floats) at location 0";
+  const std::string supplied =
+      "position (" + std::to_string(shape.position_components) + " floats) at location 0";
   bool has_position = false;
   for (const StageVariable& input : program.vert.iface.inputs) {
     if (input.location != 0) {
       return fail("vertex input '" + input.name + "' at location " +
-                  std::to_string(input.location) + " has no data; the " + pass +
-                  " supplies only " + supplied);
+                  std::to_string(input.location) + " has no data; the " + pass + " supplies only " +
+                  supplied);
     }
     if (input.components != shape.position_components) {
       return fail("vertex input '" + input.name + "' has " + std::to_string(input.components) +

@@ -18,7 +18,7 @@ namespace penumbra::detail {
 
 // What a pass feeds its program and how it draws.
 struct PassShape {
-  std::string_view name;  // "depth pass", "query pass": names errors
+  std::string_view name;                           // "depth pass", "query pass": names errors
   VkFormat position_format = VK_FORMAT_UNDEFINED;  // the vertex data at location 0
   std::uint32_t position_components = 0;           // floats per vertex
   bool depth_test = false;

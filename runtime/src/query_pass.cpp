@@ -18,14 +18,15 @@ Status check_receivers(const FloatImage& receivers) {
   if (channels_ok && receivers.data.size() == receivers.pixel_count() * receivers.channels) {
     return {};
   }
-  return make_error(Error::Kind::bad_input, "receivers",
-                    "expected 3 or 4 channels (u, v, z_r) and width * height * channels values; "
-                    "got " + std::to_string(receivers.channels) + " channels and " +
-                        std::to_string(receivers.data.size()) + " values for " +
-                        std::to_string(receivers.width) + "x" + std::to_string(receivers.height));
+  const std::string got = "; got " + std::to_string(receivers.channels) + " channels and " +
+                          std::to_string(receivers.data.size()) + " values for " +
+                          std::to_string(receivers.width) + "x" + std::to_string(receivers.height);
+  return make_error(
+      Error::Kind::bad_input, "receivers",
+      "expected 3 or 4 channels (u, v, z_r) and width * height * channels values" + got);
 }
 
-// RGBA32F is the widest format every device samples; a fourth channel pads.
+// Sampling RGB32F is optional in Vulkan and RGBA32F is not, so a fourth channel pads.
 std::vector<float> to_rgba(const FloatImage& receivers) {
   std::vector<float> rgba(receivers.pixel_count() * 4, 0.0f);
   for (std::size_t p = 0; p < receivers.pixel_count(); ++p) {
@@ -48,19 +49,19 @@ Result<FloatImage> run_query(Context& context, const PassProgram& program,
 
   auto receivers_image = vk::Image::create(
       *context.device,
-      {width, height, kReceiversFormat, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-       VK_IMAGE_ASPECT_COLOR_BIT},
+      {width, height, kReceiversFormat,
+       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
       "the receivers image");
   if (!receivers_image) return receivers_image.error();
   PENUMBRA_TRY(upload_image(*context.device, *context.commands, *receivers_image,
                             to_rgba(receivers), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                             "the receivers image"));
-  auto visibility = vk::Image::create(
-      *context.device,
-      {width, height, kVisibilityFormat,
-       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-       VK_IMAGE_ASPECT_COLOR_BIT},
-      "the visibility image");
+  auto visibility =
+      vk::Image::create(*context.device,
+                        {width, height, kVisibilityFormat,
+                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                         VK_IMAGE_ASPECT_COLOR_BIT},
+                        "the visibility image");
   if (!visibility) return visibility.error();
 
   PassDraw draw;

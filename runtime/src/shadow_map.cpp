@@ -32,12 +32,17 @@ Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context&
 
 }  // namespace detail
 
-ShadowMap::ShadowMap(std::unique_ptr<detail::ShadowMapImages> images) : images_(std::move(images)) {}
+ShadowMap::ShadowMap(std::unique_ptr<detail::ShadowMapImages> images)
+    : images_(std::move(images)) {}
 
 ShadowMap::~ShadowMap() = default;
 
-int ShadowMap::width() const { return static_cast<int>(images_->colour.desc().width); }
+int ShadowMap::width() const {
+  return static_cast<int>(images_->colour.desc().width);
+}
 
-int ShadowMap::height() const { return static_cast<int>(images_->colour.desc().height); }
+int ShadowMap::height() const {
+  return static_cast<int>(images_->colour.desc().height);
+}
 
 }  // namespace penumbra

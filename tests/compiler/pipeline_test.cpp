@@ -119,7 +119,8 @@ TEST(TargetText, SourceNamesSurvive) {
   auto pass = compile_pass(make_variant(Technique::pcss), Target::glsl450, PassKind::query);
   ASSERT_TRUE(pass.ok()) << pass.error().to_string();
   for (const char* name : {"FindBlocker", "PenumbraSize", "PCF_Filter", "avgBlockerDepth",
-                           "searchWidth", "filterRadiusUV", "shadow_compare_bilinear"}) {
+                           "searchWidth", "filterRadiusUV", "shadow_compare_bilinear",
+                           "POISSON_DISK[i]"}) {
     EXPECT_THAT(pass->frag.text, HasSubstr(name));
   }
 }
@@ -201,6 +202,9 @@ TEST(BuildLibrary, IndexHoldsTheBakedDiskValuesExactly) {
   // comment naming the variant and its keys.
   const std::string text = slurp(dir.path / "out" / "hlsl_dx9" / v.name / "query.frag.hlsl");
   EXPECT_THAT(text.substr(0, 200), HasSubstr("Variant " + v.name + " (technique pcss, blocker_samples 25"));
+  // Two different disks keep their own source names.
+  EXPECT_THAT(text, HasSubstr("BLOCKER_DISK[25]"));
+  EXPECT_THAT(text, HasSubstr("PCF_DISK[16]"));
 }
 
 }  // namespace

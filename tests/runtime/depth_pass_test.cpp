@@ -15,7 +15,9 @@ const test::TestLight kLight;  // n = 9.5, Fw = 3.75, depth_scale = 1/32
 
 // Light-view x (or y) that projects to u (or v) at depth z: the contract's
 // u = 0.5 + (x n / z) / Fw solved for x.
-float light_x(float u, float z) { return (u - 0.5f) * z * kLight.frustum_width / kLight.near_plane; }
+float light_x(float u, float z) {
+  return (u - 0.5f) * z * kLight.frustum_width / kLight.near_plane;
+}
 
 // Two triangles covering [u0, u1] x [v0, v1] at depth z.
 void add_quad(std::vector<std::array<float, 3>>& triangles, float u0, float u1, float v0, float v1,
@@ -115,8 +117,8 @@ TEST(DepthPassTest, DepthImageHoldsTheSameDepth) {
 TEST(DepthPassTest, NoTrianglesLeavesTheFarPlane) {
   auto engine = test::make_engine();
   ASSERT_NE(engine, nullptr);
-  auto map = engine->render_depth(test::depth_program(), {}, 3, 2,
-                                  test::make_params(kLight, 3, 2, 3, 2));
+  auto map =
+      engine->render_depth(test::depth_program(), {}, 3, 2, test::make_params(kLight, 3, 2, 3, 2));
   ASSERT_TRUE(map) << map.error().to_string();
   auto depth = engine->read_shadow_map(**map);
   ASSERT_TRUE(depth) << depth.error().to_string();

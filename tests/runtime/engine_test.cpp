@@ -17,8 +17,8 @@ TEST(EngineTest, PicksLavapipeByDefault) {
   EXPECT_NE(info.name.find("llvmpipe"), std::string::npos) << info.name;
   EXPECT_NE(info.driver.find("llvmpipe"), std::string::npos) << info.driver;
   EXPECT_EQ(info.sub_texel_precision_bits, 8u);
-  EXPECT_EQ(info.api_version >> 22, 1u);                    // variant 0, major 1
-  EXPECT_GE((info.api_version >> 12) & 0x3ffu, 2u);         // minor >= 2
+  EXPECT_EQ(info.api_version >> 22, 1u);             // variant 0, major 1
+  EXPECT_GE((info.api_version >> 12) & 0x3ffu, 2u);  // minor >= 2
 }
 
 TEST(EngineTest, SelectsByIndexOrCaseInsensitiveName) {
@@ -46,12 +46,16 @@ TEST(EngineTest, OutOfRangeIndexListsTheAvailableOnes) {
       << engine.error().message;
 }
 
-// Sets an environment variable for one scope, restoring the old value after.
+// Sets (or, with nullptr, unsets) an environment variable for one scope.
 class ScopedEnv {
  public:
   ScopedEnv(const char* name, const char* value) : name_(name) {
     if (const char* old = std::getenv(name)) old_ = old;
-    setenv(name, value, 1);
+    if (value) {
+      setenv(name, value, 1);
+    } else {
+      unsetenv(name);
+    }
   }
   ~ScopedEnv() {
     if (old_) {
@@ -68,6 +72,7 @@ class ScopedEnv {
 
 TEST(EngineTest, NoDriverIsAClearDeviceError) {
   const ScopedEnv no_driver("VK_ICD_FILENAMES", "/nonexistent/penumbra_icd.json");
+  const ScopedEnv no_newer_name("VK_DRIVER_FILES", nullptr);  // it would take precedence
   auto engine = Engine::create({}, ignore_diagnostics());
   ASSERT_FALSE(engine);
   EXPECT_EQ(engine.error().kind, Error::Kind::device);

@@ -50,9 +50,9 @@ Result<FloatImage> query(Engine& engine, const PassProgram& program, const Float
                          const FloatImage& receivers) {
   auto shadow_map = engine.upload_shadow_map(map);
   if (!shadow_map) return shadow_map.error();
-  return engine.run_query(program, **shadow_map, receivers,
-                          test::make_params(unscaled(), map.width, map.height, receivers.width,
-                                            receivers.height));
+  return engine.run_query(
+      program, **shadow_map, receivers,
+      test::make_params(unscaled(), map.width, map.height, receivers.width, receivers.height));
 }
 
 TEST(QueryPassTest, BilinearComparisonAtHandPickedPoints) {
@@ -127,7 +127,8 @@ TEST(QueryPassTest, ShadowDepthReadsTheMapWithAndWithoutShadowCmp) {
   std::vector<std::array<float, 3>> centres;
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 4; ++i) {
-      centres.push_back({(static_cast<float>(i) + 0.5f) / 4, (static_cast<float>(j) + 0.5f) / 4, 0});
+      centres.push_back(
+          {(static_cast<float>(i) + 0.5f) / 4, (static_cast<float>(j) + 0.5f) / 4, 0});
     }
   }
   for (const PassProgram& program : {test::point_program(), test::point_with_cmp_program()}) {

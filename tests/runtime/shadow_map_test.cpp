@@ -14,7 +14,8 @@ TEST(ShadowMapTest, UploadThenReadBackIsExact) {
   // Not square, so a transposed copy would show; values with full mantissas.
   FloatImage depth(7, 5, 1);
   for (int j = 0; j < depth.height; ++j) {
-    for (int i = 0; i < depth.width; ++i) depth.at(i, j) = static_cast<float>(i * 5 + j + 1) / 37.0f;
+    for (int i = 0; i < depth.width; ++i)
+      depth.at(i, j) = static_cast<float>(i * 5 + j + 1) / 37.0f;
   }
   depth.at(0, 0) = 0.0f;
   depth.at(6, 4) = 1.0f;

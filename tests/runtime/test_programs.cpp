@@ -24,8 +24,14 @@ std::vector<std::uint32_t> read_spirv(const std::string& name) {
 
 // shaders/params.glsl: four std140 vec4 members.
 UniformBlock shadow_params() {
-  return {"ShadowParams", "params", 0, 0, 64,
-          {{"shadow_map_size", 0, 16}, {"light", 16, 16}, {"sampling", 32, 16},
+  return {"ShadowParams",
+          "params",
+          0,
+          0,
+          64,
+          {{"shadow_map_size", 0, 16},
+           {"light", 16, 16},
+           {"sampling", 32, 16},
            {"screen_size", 48, 16}}};
 }
 

@@ -10,9 +10,9 @@ namespace penumbra::test {
 
 // Light and map parameters of the tests. depth_scale is a power of two.
 struct TestLight {
-  float light_size = 0.5f;     // L
-  float frustum_width = 3.75f; // Fw
-  float near_plane = 9.5f;     // n
+  float light_size = 0.5f;      // L
+  float frustum_width = 3.75f;  // Fw
+  float near_plane = 9.5f;      // n
   float bias = 0.0f;
   float depth_scale = 1.0f / 32.0f;
 };

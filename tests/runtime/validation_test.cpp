@@ -54,8 +54,8 @@ TEST_F(ValidationTest, EveryOperationIsClean) {
   EXPECT_TRUE(engine_->read_shadow_map(**rendered));
   const FloatImage receivers(4, 3, 4, 0.25f);
   for (const PassProgram& program : {test::compare_program(), test::point_program()}) {
-    auto visibility = engine_->run_query(program, **uploaded, receivers,
-                                         test::make_params(kLight, 8, 8, 4, 3));
+    auto visibility =
+        engine_->run_query(program, **uploaded, receivers, test::make_params(kLight, 8, 8, 4, 3));
     EXPECT_TRUE(visibility) << visibility.error().to_string();
   }
   for (const Diagnostic& message : validation_messages()) ADD_FAILURE() << message.message;

@@ -2,6 +2,7 @@
 #include <glslang/Public/ResourceLimits.h>
 
 #include "glsl/glslang_setup.hpp"
+#include "glsl/name_disk_constants.hpp"
 #include "stages/stages.hpp"
 
 namespace penumbra {
@@ -39,6 +40,7 @@ Status CompileStage::process(ShaderJob& job) const {
     return make_error(Error::Kind::compile, job.describe(),
                       "SPIR-V generation failed:\n" + logger.getAllMessages());
   }
+  if (job.variant) name_disk_constants(job.spirv, *job.variant);
   return {};
 }
 

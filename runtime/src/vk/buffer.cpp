@@ -24,8 +24,8 @@ Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferU
   vkGetBufferMemoryRequirements(device.get(), raw, &requirements);
   // Coherent memory: host writes before a submission and reads after its fence need no flushes.
   auto memory = allocate_memory(
-      device, requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-      name);
+      device, requirements,
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, name);
   if (!memory) return memory.error();
   PENUMBRA_TRY(check(vkBindBufferMemory(device.get(), raw, memory->get(), 0), "vkBindBufferMemory",
                      "binding memory to " + name));

@@ -39,7 +39,8 @@ Result<CommandContext> CommandContext::create(const Device& device) {
 
 CommandContext::CommandContext(const Device& device,
                                DeviceObject<VkCommandPool, vkDestroyCommandPool> pool,
-                               VkCommandBuffer commands, DeviceObject<VkFence, vkDestroyFence> fence)
+                               VkCommandBuffer commands,
+                               DeviceObject<VkFence, vkDestroyFence> fence)
     : device_(device.get()),
       queue_(device.queue()),
       pool_(std::move(pool)),
@@ -54,8 +55,8 @@ Status CommandContext::submit(const Recorder& record, std::string_view what) {
   PENUMBRA_TRY(check(vkBeginCommandBuffer(commands_, &begin), "vkBeginCommandBuffer",
                      "starting to record " + name));
   record(commands_);
-  PENUMBRA_TRY(
-      check(vkEndCommandBuffer(commands_), "vkEndCommandBuffer", "finishing the recording of " + name));
+  PENUMBRA_TRY(check(vkEndCommandBuffer(commands_), "vkEndCommandBuffer",
+                     "finishing the recording of " + name));
 
   const VkFence fence = fence_.get();
   PENUMBRA_TRY(check(vkResetFences(device_, 1, &fence), "vkResetFences", "resetting the fence"));
@@ -63,7 +64,8 @@ Status CommandContext::submit(const Recorder& record, std::string_view what) {
   submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &commands_;
-  PENUMBRA_TRY(check(vkQueueSubmit(queue_, 1, &submit, fence), "vkQueueSubmit", "submitting " + name));
+  PENUMBRA_TRY(
+      check(vkQueueSubmit(queue_, 1, &submit, fence), "vkQueueSubmit", "submitting " + name));
   // No timeout: returning early would free resources the device still uses.
   return check(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences",
                "waiting for " + name);

@@ -17,7 +17,8 @@ Result<DescriptorPool> DescriptorPool::create(VkDevice device,
   VkDescriptorPool pool = VK_NULL_HANDLE;
   PENUMBRA_TRY(check(vkCreateDescriptorPool(device, &info, nullptr, &pool),
                      "vkCreateDescriptorPool", "creating a descriptor pool"));
-  return DescriptorPool(device, DeviceObject<VkDescriptorPool, vkDestroyDescriptorPool>(device, pool));
+  return DescriptorPool(device,
+                        DeviceObject<VkDescriptorPool, vkDestroyDescriptorPool>(device, pool));
 }
 
 DescriptorPool::DescriptorPool(VkDevice device,

@@ -1,5 +1,6 @@
 #include "vk/device.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -52,6 +53,10 @@ Result<std::shared_ptr<const Device>> Device::create(std::shared_ptr<const Insta
                      std::string("opening ") + device->properties_.deviceName));
   vkGetDeviceQueue(device->device_, *family, 0, &device->queue_);
   return std::shared_ptr<const Device>(std::move(device));
+}
+
+std::uint32_t Device::api_version() const {
+  return std::min(properties_.apiVersion, Instance::kApiVersion);
 }
 
 Device::~Device() {

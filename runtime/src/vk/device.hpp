@@ -26,6 +26,8 @@ class Device {
   VkQueue queue() const { return queue_; }
   std::uint32_t queue_family() const { return queue_family_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  // The version the runtime may use: the device's, capped by the instance's.
+  std::uint32_t api_version() const;
   const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
 
  private:

@@ -7,7 +7,8 @@
 namespace penumbra::vk {
 
 Result<Framebuffer> create_framebuffer(VkDevice device, VkRenderPass render_pass,
-                                       std::span<const VkImageView> attachments, VkExtent2D extent) {
+                                       std::span<const VkImageView> attachments,
+                                       VkExtent2D extent) {
   VkFramebufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   info.renderPass = render_pass;

@@ -90,8 +90,9 @@ Result<GraphicsPipeline> create_graphics_pipeline(VkDevice device,
   info.renderPass = desc.render_pass;
   info.subpass = 0;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  PENUMBRA_TRY(check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-                     "vkCreateGraphicsPipelines", "creating a graphics pipeline"));
+  PENUMBRA_TRY(
+      check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+            "vkCreateGraphicsPipelines", "creating a graphics pipeline"));
   return GraphicsPipeline(device, pipeline);
 }
 

@@ -29,8 +29,7 @@ Result<Image> Image::create(const Device& device, const ImageDesc& desc, std::st
 
   VkMemoryRequirements requirements{};
   vkGetImageMemoryRequirements(device.get(), raw_image, &requirements);
-  auto memory =
-      allocate_memory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
+  auto memory = allocate_memory(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
   if (!memory) return memory.error();
   PENUMBRA_TRY(check(vkBindImageMemory(device.get(), raw_image, memory->get(), 0),
                      "vkBindImageMemory", "binding memory to " + name));
@@ -48,7 +47,8 @@ Result<Image> Image::create(const Device& device, const ImageDesc& desc, std::st
                DeviceObject<VkImageView, vkDestroyImageView>(device.get(), raw_view));
 }
 
-Image::Image(const ImageDesc& desc, DeviceMemory memory, DeviceObject<VkImage, vkDestroyImage> image,
+Image::Image(const ImageDesc& desc, DeviceMemory memory,
+             DeviceObject<VkImage, vkDestroyImage> image,
              DeviceObject<VkImageView, vkDestroyImageView> view)
     : desc_(desc), memory_(std::move(memory)), image_(std::move(image)), view_(std::move(view)) {}
 

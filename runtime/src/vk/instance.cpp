@@ -47,8 +47,7 @@ Result<std::shared_ptr<const Instance>> Instance::create(bool validation,
   app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
   app.pApplicationName = "penumbra";
   app.pEngineName = "penumbra";
-  // 1.2 for VkPhysicalDeviceDriverProperties; the runtime needs nothing newer.
-  app.apiVersion = VK_API_VERSION_1_2;
+  app.apiVersion = kApiVersion;
 
   const char* layers[] = {kValidationLayer};
   const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
@@ -70,7 +69,9 @@ Result<std::shared_ptr<const Instance>> Instance::create(bool validation,
   return std::shared_ptr<const Instance>(new Instance(instance, enable_validation));
 }
 
-Instance::~Instance() { vkDestroyInstance(instance_, nullptr); }
+Instance::~Instance() {
+  vkDestroyInstance(instance_, nullptr);
+}
 
 Result<std::vector<VkPhysicalDevice>> Instance::physical_devices() const {
   std::uint32_t count = 0;

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -14,6 +15,10 @@ namespace penumbra::vk {
 
 class Instance {
  public:
+  // The newest Vulkan version the runtime uses (VkFormatProperties3); it runs
+  // on older devices at their own version.
+  static constexpr std::uint32_t kApiVersion = VK_API_VERSION_1_3;
+
   // With `validation`, enables VK_LAYER_KHRONOS_validation and VK_EXT_debug_utils
   // when present; when absent, warns through `diagnostics` and goes on without.
   static Result<std::shared_ptr<const Instance>> create(bool validation,

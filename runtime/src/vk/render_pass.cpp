@@ -58,8 +58,8 @@ Result<RenderPass> create_render_pass(VkDevice device, const RenderPassDesc& des
   info.dependencyCount = 1;
   info.pDependencies = &done;
   VkRenderPass render_pass = VK_NULL_HANDLE;
-  PENUMBRA_TRY(check(vkCreateRenderPass(device, &info, nullptr, &render_pass),
-                     "vkCreateRenderPass", "creating a render pass"));
+  PENUMBRA_TRY(check(vkCreateRenderPass(device, &info, nullptr, &render_pass), "vkCreateRenderPass",
+                     "creating a render pass"));
   return RenderPass(device, render_pass);
 }
 

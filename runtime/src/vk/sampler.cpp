@@ -23,8 +23,9 @@ Result<Sampler> create_sampler(VkDevice device, SamplerKind kind) {
   info.maxLod = 0.0f;
   info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
   VkSampler sampler = VK_NULL_HANDLE;
-  PENUMBRA_TRY(check(vkCreateSampler(device, &info, nullptr, &sampler), "vkCreateSampler",
-                     comparison ? "creating the comparison sampler" : "creating the nearest sampler"));
+  PENUMBRA_TRY(
+      check(vkCreateSampler(device, &info, nullptr, &sampler), "vkCreateSampler",
+            comparison ? "creating the comparison sampler" : "creating the nearest sampler"));
   return Sampler(device, sampler);
 }
 

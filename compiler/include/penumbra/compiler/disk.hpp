@@ -25,12 +25,12 @@ struct DiskOptions {
 Result<Disk> generate_disk(const DiskOptions& options);
 
 // The NVIDIA PCSS whitepaper's 16 points, point for point (name
-// "whitepaper16", method "whitepaper", seed 0). Some lie slightly outside the
-// unit disk.
+// "whitepaper16", method "whitepaper", seed 0). Half of them lie outside the
+// unit disk, up to radius 1.23.
 Disk whitepaper16();
 
 // Minimum pairwise distance divided by the hexagonal-packing bound for
-// N points in the unit disk, sqrt(2 pi / (sqrt(3) N)); 1.0 when N == 1.
+// N points in the unit disk, sqrt(2 pi / (sqrt(3) N)); 1.0 for fewer than 2.
 double normalized_min_distance(std::span<const Point2> points);
 
 // {"name", "method", "seed", "count", "normalized_min_distance", "points"};

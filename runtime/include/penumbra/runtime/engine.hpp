@@ -45,8 +45,9 @@ struct DeviceInfo {
 class Engine {
  public:
   // Opens the device `options` selects and checks that it supports every
-  // format and feature the passes use. Error kinds: device (no device, no
-  // match, a missing format feature, a failed Vulkan call).
+  // format and feature the passes use. Errors: bad_input when the selector
+  // matches no device (the message lists them); device when there is no
+  // device at all, a format feature is missing or a Vulkan call fails.
   static Result<std::unique_ptr<Engine>> create(const EngineOptions& options,
                                                 DiagnosticConsumer diagnostics);
   Engine(const Engine&) = delete;
