@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "cli_harness.hpp"
@@ -23,7 +24,8 @@ constexpr const char* kManifest = R"({
   "targets": ["spirv", "glsl450"],
   "sets": [
     {"technique": ["pcss"], "blocker_samples": [16], "pcf_samples": [16], "disk": ["whitepaper16"]},
-    {"technique": ["hard"]}
+    {"technique": ["hard"]},
+    {"technique": ["pcf_grid"], "kernel": [3]}
   ]})";
 
 class EvalCommand : public ::testing::Test {
@@ -85,6 +87,38 @@ TEST_F(EvalCommand, PcssWhitepaper16AgreesWithTheWhitepapersCode) {
   }
   EXPECT_GT(compared, vis->pixel_count() * 9 / 10);
   EXPECT_GT(partial, 500u) << "the scene must have real penumbrae";
+}
+
+// A receiver exactly at the stored depth is lit (LESS_EQUAL); one ulp behind
+// it is shadowed. Checked on the device and in the reference, through the
+// point compare (hard) and the bilinear compare (pcf_grid).
+TEST_F(EvalCommand, ReceiverAtTheStoredDepthIsLitAndOneUlpBehindIsNot) {
+  const float depth = 12.0f;
+  const FloatImage map(16, 16, 1, depth);
+  FloatImage recv(4, 2, 3);
+  for (int j = 0; j < recv.height; ++j) {
+    for (int i = 0; i < recv.width; ++i) {
+      recv.at(i, j, 0) = (float(i) * 3.0f + 2.3f) / 16.0f;
+      recv.at(i, j, 1) = (float(j) * 7.0f + 4.6f) / 16.0f;
+      recv.at(i, j, 2) = j == 0 ? depth : std::nextafter(depth, 100.0f);
+    }
+  }
+  ASSERT_TRUE(write_pfm(dir_->path() / "flat.pfm", map).ok());
+  ASSERT_TRUE(write_pfm(dir_->path() / "edge_recv.pfm", recv).ok());
+  for (const std::string variant : {"hard", "pcf_grid_k3"}) {
+    for (const std::string mode : {"", "--reference"}) {
+      const CliRun run = run_penumbra("eval '" + lib().string() + "' " + variant +
+                                      " --shadow-map " + path("flat.pfm") + " --receivers " +
+                                      path("edge_recv.pfm") + " " + mode + " -o " + path("edge.pfm"));
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      auto vis = read_pfm(dir_->path() / "edge.pfm");
+      ASSERT_TRUE(vis.ok());
+      for (int i = 0; i < recv.width; ++i) {
+        EXPECT_EQ(vis->at(i, 0), 1.0f) << variant << " " << mode << " at z_r == depth";
+        EXPECT_EQ(vis->at(i, 1), 0.0f) << variant << " " << mode << " one ulp behind";
+      }
+    }
+  }
 }
 
 TEST_F(EvalCommand, ReferenceFlagRunsTheCpuReference) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fixtures.hpp"
+#include "penumbra/compiler/disk.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/reference/whitepaper_pcss.hpp"
@@ -55,5 +56,17 @@ TEST(WhitepaperPcss, EvaluateMatchesTheWhitepaperOnBuiltinScenes) {
   }
 }
 
+// The compiler bakes whitepaper16 into shaders; the transliteration keeps its
+// own copy of the whitepaper's table. They must agree point for point.
+TEST(WhitepaperDisk, CompilerCopyEqualsTheTransliterationsCopy) {
+  const Disk baked = whitepaper16();
+  const auto& paper = whitepaper_poisson_disk();
+  ASSERT_EQ(baked.points.size(), paper.size());
+  for (std::size_t i = 0; i < paper.size(); ++i) {
+    EXPECT_EQ(baked.points[i], paper[i]) << "point " << i;
+  }
+}
+
 }  // namespace
 }  // namespace penumbra::reference
+
