@@ -22,12 +22,7 @@ void add_build_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1, 64));
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {
-    auto manifest = load_manifest(args->manifest);
-    if (!manifest) {
-      exit_code = report(manifest.error());
-      return;
-    }
-    auto variants = expand(*manifest);
+    auto variants = load_variants(args->manifest);
     if (!variants) {
       exit_code = report(variants.error());
       return;

@@ -64,7 +64,8 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", args->output, "Visibility image to write (Pf)")->required();
   cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--frustum-width", args->light.frustum_width, "Frustum width Fw at the near plane")
+  cmd->add_option("--frustum-width", args->light.frustum_width,
+                  "Frustum width Fw at the near plane")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--near", args->light.near_plane, "Near plane n")->check(CLI::PositiveNumber);
   cmd->add_option("--bias", args->light.bias, "Depth bias subtracted from z_r");

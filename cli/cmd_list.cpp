@@ -11,12 +11,7 @@ void add_list_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("list", "Print the variants of a manifest, one per line");
   cmd->add_option("manifest", *manifest_path, "Permutation manifest (JSON)")->required();
   cmd->callback([manifest_path, &exit_code] {
-    auto manifest = load_manifest(*manifest_path);
-    if (!manifest) {
-      exit_code = report(manifest.error());
-      return;
-    }
-    auto variants = expand(*manifest);
+    auto variants = load_variants(*manifest_path);
     if (!variants) {
       exit_code = report(variants.error());
       return;

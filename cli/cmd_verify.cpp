@@ -18,14 +18,15 @@ struct VerifyArgs {
 
 void print_summary(const VerifyReport& report) {
   for (const DepthCheck& c : report.depth_checks) {
-    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass on " << c.scene << ": "
-              << c.mismatched << " of " << c.texels << " texels off\n";
+    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass on " << c.scene << ": " << c.mismatched
+              << " of " << c.texels << " texels off\n";
   }
   for (const VariantRun& v : report.variants) {
     for (const TargetRun& t : v.targets) {
       if (!t.executed) continue;
       double max_error = 0.0;
-      for (const SceneRun& s : t.scenes) max_error = std::max(max_error, s.comparison.max_abs_error);
+      for (const SceneRun& s : t.scenes)
+        max_error = std::max(max_error, s.comparison.max_abs_error);
       std::cout << (t.pass ? "PASS " : "FAIL ") << v.name << " [" << to_string(t.target)
                 << "] max error " << max_error << "\n";
     }

@@ -2,7 +2,9 @@
 
 namespace penumbra {
 
-std::string_view to_string(PassKind pass) { return pass == PassKind::depth ? "depth" : "query"; }
+std::string_view to_string(PassKind pass) {
+  return pass == PassKind::depth ? "depth" : "query";
+}
 
 std::string_view to_string(ShaderStage stage) {
   return stage == ShaderStage::vertex ? "vertex" : "fragment";

@@ -47,8 +47,8 @@ TEST_F(BuildErrors, UnknownTechnique) {
 }
 
 TEST_F(BuildErrors, UnknownTarget) {
-  const std::string err = build_fails(
-      R"({"schema": 1, "targets": ["metal"], "sets": [{"technique": ["hard"]}]})");
+  const std::string err =
+      build_fails(R"({"schema": 1, "targets": ["metal"], "sets": [{"technique": ["hard"]}]})");
   EXPECT_THAT(err, HasSubstr("/targets/0"));
   EXPECT_THAT(err, HasSubstr("metal"));
   EXPECT_THAT(err, HasSubstr("hlsl_dx9"));
@@ -97,8 +97,8 @@ TEST(CliUsage, UnknownSubcommandIsExit2) {
 }
 
 TEST(CliUsage, ListPrintsVariantsOfTheDefaultManifest) {
-  const CliRun run = run_penumbra(std::string("list '") + PENUMBRA_SOURCE_DIR +
-                                  "/permutations/default.json'");
+  const CliRun run =
+      run_penumbra(std::string("list '") + PENUMBRA_SOURCE_DIR + "/permutations/default.json'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("pcss_b16_p16_whitepaper16\n"));
   EXPECT_THAT(run.out, HasSubstr("pcf_grid_k7\n"));

@@ -33,7 +33,8 @@ class EvalCommand : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = new ScratchDir("eval");
     const auto manifest = dir_->write("manifest.json", kManifest);
-    const CliRun run = run_penumbra("build '" + manifest.string() + "' -o '" + lib().string() + "'");
+    const CliRun run =
+        run_penumbra("build '" + manifest.string() + "' -o '" + lib().string() + "'");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     // The whitepaper's own setting: its constants are the scenes' defaults.
     const reference::Scene scene = reference::builtin_scenes().front();
@@ -45,7 +46,9 @@ class EvalCommand : public ::testing::Test {
   static void TearDownTestSuite() { delete dir_; }
 
   static std::filesystem::path lib() { return dir_->path() / "lib"; }
-  static std::string path(const std::string& name) { return "'" + (dir_->path() / name).string() + "'"; }
+  static std::string path(const std::string& name) {
+    return "'" + (dir_->path() / name).string() + "'";
+  }
   static std::string eval_args(const std::string& variant, const std::string& extra) {
     return "eval '" + lib().string() + "' " + variant + " --shadow-map " + path("depth.pfm") +
            " --receivers " + path("recv.pfm") + " " + extra;
@@ -77,9 +80,8 @@ TEST_F(EvalCommand, PcssWhitepaper16AgreesWithTheWhitepapersCode) {
   for (int j = 0; j < vis->height; ++j) {
     for (int i = 0; i < vis->width; ++i) {
       if (ref->ambiguous.at(i, j) != 0.0f) continue;
-      const double expected = reference::whitepaper_pcss(view, receivers_.at(i, j, 0),
-                                                         receivers_.at(i, j, 1),
-                                                         receivers_.at(i, j, 2));
+      const double expected = reference::whitepaper_pcss(
+          view, receivers_.at(i, j, 0), receivers_.at(i, j, 1), receivers_.at(i, j, 2));
       ASSERT_NEAR(vis->at(i, j), expected, tolerance) << "pixel " << i << ", " << j;
       ++compared;
       if (expected > 0.01 && expected < 0.99) ++partial;
@@ -107,9 +109,9 @@ TEST_F(EvalCommand, ReceiverAtTheStoredDepthIsLitAndOneUlpBehindIsNot) {
   ASSERT_TRUE(write_pfm(dir_->path() / "edge_recv.pfm", recv).ok());
   for (const std::string variant : {"hard", "pcf_grid_k3"}) {
     for (const std::string mode : {"", "--reference"}) {
-      const CliRun run = run_penumbra("eval '" + lib().string() + "' " + variant +
-                                      " --shadow-map " + path("flat.pfm") + " --receivers " +
-                                      path("edge_recv.pfm") + " " + mode + " -o " + path("edge.pfm"));
+      const CliRun run = run_penumbra(
+          "eval '" + lib().string() + "' " + variant + " --shadow-map " + path("flat.pfm") +
+          " --receivers " + path("edge_recv.pfm") + " " + mode + " -o " + path("edge.pfm"));
       ASSERT_EQ(run.exit_code, 0) << run.err;
       auto vis = read_pfm(dir_->path() / "edge.pfm");
       ASSERT_TRUE(vis.ok());
@@ -122,8 +124,7 @@ TEST_F(EvalCommand, ReceiverAtTheStoredDepthIsLitAndOneUlpBehindIsNot) {
 }
 
 TEST_F(EvalCommand, ReferenceFlagRunsTheCpuReference) {
-  const CliRun run =
-      run_penumbra(eval_args("hard", "--reference -o " + path("hard_ref.pfm")));
+  const CliRun run = run_penumbra(eval_args("hard", "--reference -o " + path("hard_ref.pfm")));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   auto vis = read_pfm(dir_->path() / "hard_ref.pfm");
   ASSERT_TRUE(vis.ok());
@@ -134,18 +135,18 @@ TEST_F(EvalCommand, ReferenceFlagRunsTheCpuReference) {
 }
 
 TEST_F(EvalCommand, MissingShadowMapIsExit2AndWritesNothing) {
-  const CliRun run = run_penumbra("eval '" + lib().string() + "' hard --shadow-map " +
-                                  path("absent.pfm") + " --receivers " + path("recv.pfm") +
-                                  " -o " + path("never.pfm"));
+  const CliRun run =
+      run_penumbra("eval '" + lib().string() + "' hard --shadow-map " + path("absent.pfm") +
+                   " --receivers " + path("recv.pfm") + " -o " + path("never.pfm"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("absent.pfm"));
   EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
 }
 
 TEST_F(EvalCommand, WrongReceiversImageIsExit2) {
-  const CliRun run = run_penumbra("eval '" + lib().string() + "' hard --shadow-map " +
-                                  path("depth.pfm") + " --receivers " + path("depth.pfm") +
-                                  " -o " + path("never.pfm"));
+  const CliRun run =
+      run_penumbra("eval '" + lib().string() + "' hard --shadow-map " + path("depth.pfm") +
+                   " --receivers " + path("depth.pfm") + " -o " + path("never.pfm"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("--receivers"));
   EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
@@ -177,7 +178,8 @@ TEST_F(EvalCommand, NoVulkanDeviceIsExit2) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_THAT(run.err, HasSubstr("no-such-gpu"));
   EXPECT_FALSE(std::filesystem::exists(lib() / "verify.json"));
-  const CliRun none = run_penumbra("verify '" + lib().string() + "'", "VK_ICD_FILENAMES=/nonexistent.json");
+  const CliRun none =
+      run_penumbra("verify '" + lib().string() + "'", "VK_ICD_FILENAMES=/nonexistent.json");
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_THAT(none.err, HasSubstr("Vulkan"));
   EXPECT_FALSE(std::filesystem::exists(lib() / "verify.json"));

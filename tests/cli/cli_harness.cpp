@@ -20,12 +20,12 @@ std::string slurp(const std::filesystem::path& path) {
 }  // namespace
 
 CliRun run_penumbra(const std::string& args, const std::string& env) {
-  const auto base = std::filesystem::path(::testing::TempDir()) /
-                    ("penumbra-cli-" + std::to_string(::getpid()));
+  const auto base =
+      std::filesystem::path(::testing::TempDir()) / ("penumbra-cli-" + std::to_string(::getpid()));
   const std::string out = base.string() + ".out";
   const std::string err = base.string() + ".err";
-  const std::string command =
-      env + " " + std::string(PENUMBRA_EXECUTABLE) + " " + args + " > '" + out + "' 2> '" + err + "'";
+  const std::string command = env + " " + std::string(PENUMBRA_EXECUTABLE) + " " + args + " > '" +
+                              out + "' 2> '" + err + "'";
   const int status = std::system(command.c_str());
   CliRun run;
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -56,8 +56,7 @@ std::filesystem::path ScratchDir::write(const std::string& name, const std::stri
 
 std::size_t ScratchDir::entry_count() const {
   std::size_t count = 0;
-  for ([[maybe_unused]] const auto& entry :
-       std::filesystem::recursive_directory_iterator(path_)) {
+  for ([[maybe_unused]] const auto& entry : std::filesystem::recursive_directory_iterator(path_)) {
     ++count;
   }
   return count;

@@ -1,8 +1,8 @@
 // The hlsl_dx9 constant-register shim rewrites layout, never meaning.
+#include "targets/dx9_constants.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include "targets/dx9_constants.hpp"
 
 namespace penumbra {
 namespace {

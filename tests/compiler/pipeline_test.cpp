@@ -61,8 +61,7 @@ struct TempDir {
   ~TempDir() { std::filesystem::remove_all(path); }
 };
 
-class EveryTechniqueAndTarget
-    : public ::testing::TestWithParam<std::tuple<Technique, Target>> {};
+class EveryTechniqueAndTarget : public ::testing::TestWithParam<std::tuple<Technique, Target>> {};
 
 TEST_P(EveryTechniqueAndTarget, QueryPassCompilesWithTheSharedInterface) {
   const auto [technique, target] = GetParam();
@@ -86,13 +85,13 @@ TEST_P(EveryTechniqueAndTarget, QueryPassCompilesWithTheSharedInterface) {
   EXPECT_EQ(has_cmp, target != Target::hlsl_dx9 && technique != Technique::hard);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    All, EveryTechniqueAndTarget,
-    ::testing::Combine(::testing::ValuesIn(kAllTechniques), ::testing::ValuesIn(kAllTargets)),
-    [](const auto& param_info) {
-      return std::string(to_string(std::get<0>(param_info.param))) + "_" +
-             std::string(to_string(std::get<1>(param_info.param)));
-    });
+INSTANTIATE_TEST_SUITE_P(All, EveryTechniqueAndTarget,
+                         ::testing::Combine(::testing::ValuesIn(kAllTechniques),
+                                            ::testing::ValuesIn(kAllTargets)),
+                         [](const auto& param_info) {
+                           return std::string(to_string(std::get<0>(param_info.param))) + "_" +
+                                  std::string(to_string(std::get<1>(param_info.param)));
+                         });
 
 TEST(TargetText, Dx9UsesRegistersPointReadsAndNoComparisonSampler) {
   auto pass = compile_pass(make_variant(Technique::pcss), Target::hlsl_dx9, PassKind::query);
@@ -118,9 +117,9 @@ TEST(TargetText, Dx10UsesSampleCmpLevelZeroAndSampleLevel) {
 TEST(TargetText, SourceNamesSurvive) {
   auto pass = compile_pass(make_variant(Technique::pcss), Target::glsl450, PassKind::query);
   ASSERT_TRUE(pass.ok()) << pass.error().to_string();
-  for (const char* name : {"FindBlocker", "PenumbraSize", "PCF_Filter", "avgBlockerDepth",
-                           "searchWidth", "filterRadiusUV", "shadow_compare_bilinear",
-                           "POISSON_DISK[i]"}) {
+  for (const char* name :
+       {"FindBlocker", "PenumbraSize", "PCF_Filter", "avgBlockerDepth", "searchWidth",
+        "filterRadiusUV", "shadow_compare_bilinear", "POISSON_DISK[i]"}) {
     EXPECT_THAT(pass->frag.text, HasSubstr(name));
   }
 }
@@ -201,7 +200,8 @@ TEST(BuildLibrary, IndexHoldsTheBakedDiskValuesExactly) {
   // Every emitted file starts with (or, for GLSL, right after #version) a
   // comment naming the variant and its keys.
   const std::string text = slurp(dir.path / "out" / "hlsl_dx9" / v.name / "query.frag.hlsl");
-  EXPECT_THAT(text.substr(0, 200), HasSubstr("Variant " + v.name + " (technique pcss, blocker_samples 25"));
+  EXPECT_THAT(text.substr(0, 200),
+              HasSubstr("Variant " + v.name + " (technique pcss, blocker_samples 25"));
   // Two different disks keep their own source names.
   EXPECT_THAT(text, HasSubstr("BLOCKER_DISK[25]"));
   EXPECT_THAT(text, HasSubstr("PCF_DISK[16]"));

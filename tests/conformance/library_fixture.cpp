@@ -13,10 +13,8 @@ namespace penumbra::testing {
 namespace {
 
 Result<std::vector<Variant>> default_variants() {
-  auto manifest = load_manifest(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" /
-                                "default.json");
-  if (!manifest) return manifest.error();
-  return expand(*manifest);
+  return load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" /
+                       "default.json");
 }
 
 }  // namespace

@@ -2,7 +2,6 @@
 // front ends: spirv-val for .spv, glslangValidator for GLSL and HLSL (DX9
 // in its DX9-compatible mode).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <cstdlib>
@@ -20,7 +19,8 @@ struct ToolRun {
 };
 
 ToolRun run_tool(const std::string& command) {
-  const std::string log = ::testing::TempDir() + "penumbra-tool-" + std::to_string(::getpid()) + ".log";
+  const std::string log =
+      ::testing::TempDir() + "penumbra-tool-" + std::to_string(::getpid()) + ".log";
   const int status = std::system((command + " > '" + log + "' 2>&1").c_str());
   std::ifstream in(log);
   std::stringstream text;

@@ -13,12 +13,12 @@ class VariantConformance : public ::testing::TestWithParam<std::string> {};
 TEST_P(VariantConformance, SpirvMatchesReferenceOnEveryScene) {
   auto lib = build_default_variant(GetParam(), /*with_engine=*/true);
   ASSERT_NE(lib, nullptr);
-  auto report = verify_library(lib->library, *lib->engine, {.variants = {GetParam()}},
-                               ignore_diagnostics());
+  auto report =
+      verify_library(lib->library, *lib->engine, {.variants = {GetParam()}}, ignore_diagnostics());
   ASSERT_TRUE(report.ok()) << report.error().to_string();
   for (const DepthCheck& depth : report->depth_checks) {
-    EXPECT_TRUE(depth.pass) << "depth pass on " << depth.scene << ": " << depth.mismatched
-                            << " of " << depth.texels << " texels off";
+    EXPECT_TRUE(depth.pass) << "depth pass on " << depth.scene << ": " << depth.mismatched << " of "
+                            << depth.texels << " texels off";
   }
   ASSERT_EQ(report->variants.size(), 1u);
   bool spirv_ran = false;
@@ -39,8 +39,7 @@ TEST_P(VariantConformance, SpirvMatchesReferenceOnEveryScene) {
   EXPECT_TRUE(spirv_ran);
 }
 
-INSTANTIATE_TEST_SUITE_P(Default, VariantConformance,
-                         ::testing::ValuesIn(default_variant_names()),
+INSTANTIATE_TEST_SUITE_P(Default, VariantConformance, ::testing::ValuesIn(default_variant_names()),
                          [](const auto& param_info) { return test_name(param_info.param); });
 
 }  // namespace

@@ -69,4 +69,3 @@ TEST(WhitepaperDisk, CompilerCopyEqualsTheTransliterationsCopy) {
 
 }  // namespace
 }  // namespace penumbra::reference
-

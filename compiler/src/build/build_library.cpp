@@ -61,7 +61,9 @@ Status run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int thre
 
 }  // namespace
 
-std::string_view penumbra_version() { return PENUMBRA_VERSION; }
+std::string_view penumbra_version() {
+  return PENUMBRA_VERSION;
+}
 
 Result<BuildSummary> build_library(std::span<const Variant> variants,
                                    const std::filesystem::path& out_dir,

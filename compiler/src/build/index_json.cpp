@@ -24,8 +24,8 @@ nlohmann::json disk_info_json(const Disk& disk) {
 }
 
 // The job that produced `source` for `target` (shared or this variant's).
-const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant,
-                          Target target, const PassStageSource& source) {
+const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant, Target target,
+                          const PassStageSource& source) {
   for (const ShaderJob& job : jobs) {
     const bool owner = source.per_variant ? job.variant == &variant : job.variant == nullptr;
     if (owner && job.target == target && job.pass == source.pass && job.stage == source.stage) {

@@ -44,6 +44,8 @@ glslang::TShader::Includer::IncludeResult* ShaderlibIncluder::includeSystem(
   return includeLocal(header_name, includer_name, inclusion_depth);
 }
 
-void ShaderlibIncluder::releaseInclude(IncludeResult* result) { delete result; }
+void ShaderlibIncluder::releaseInclude(IncludeResult* result) {
+  delete result;
+}
 
 }  // namespace penumbra

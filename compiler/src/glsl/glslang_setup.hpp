@@ -22,7 +22,8 @@ void configure_environment(glslang::TShader& shader, ShaderStage stage);
 // generated header given at construction.
 class ShaderlibIncluder : public glslang::TShader::Includer {
  public:
-  explicit ShaderlibIncluder(std::string variant_header) : variant_header_(std::move(variant_header)) {}
+  explicit ShaderlibIncluder(std::string variant_header)
+      : variant_header_(std::move(variant_header)) {}
   IncludeResult* includeLocal(const char* header_name, const char* includer_name,
                               size_t inclusion_depth) override;
   IncludeResult* includeSystem(const char* header_name, const char* includer_name,

@@ -1,11 +1,10 @@
 #include "glsl/name_disk_constants.hpp"
 
-#include <spirv/unified1/spirv.hpp>
-
 #include <bit>
 #include <map>
 #include <optional>
 #include <set>
+#include <spirv/unified1/spirv.hpp>
 #include <string>
 
 namespace penumbra {
@@ -31,7 +30,8 @@ std::vector<Instruction> instructions(const std::vector<std::uint32_t>& words) {
 std::vector<std::uint32_t> op_name(std::uint32_t id, const std::string& name) {
   std::vector<std::uint32_t> literal((name.size() + 4) / 4, 0);  // NUL-terminated, padded
   for (std::size_t c = 0; c < name.size(); ++c) {
-    literal[c / 4] |= static_cast<std::uint32_t>(static_cast<unsigned char>(name[c])) << (8 * (c % 4));
+    literal[c / 4] |= static_cast<std::uint32_t>(static_cast<unsigned char>(name[c]))
+                      << (8 * (c % 4));
   }
   std::vector<std::uint32_t> out = {0, id};
   out.insert(out.end(), literal.begin(), literal.end());
@@ -80,8 +80,9 @@ void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& varia
         const bool blocker = same_points(points, variant.blocker_disk);
         const bool pcf = same_points(points, variant.pcf_disk);
         if (blocker || pcf) {
-          names.emplace_back(w[2], blocker && pcf ? "POISSON_DISK" : blocker ? "BLOCKER_DISK"
-                                                                              : "PCF_DISK");
+          names.emplace_back(w[2], blocker && pcf ? "POISSON_DISK"
+                                   : blocker      ? "BLOCKER_DISK"
+                                                  : "PCF_DISK");
         }
         break;
       }

@@ -17,8 +17,8 @@ std::string upper(std::string_view text) {
 }
 
 std::string disk_array(std::string_view name, const Disk& disk) {
-  std::string out = "const vec2 " + std::string(name) + "[" + std::to_string(disk.points.size()) +
-                    "] = vec2[](";
+  std::string out =
+      "const vec2 " + std::string(name) + "[" + std::to_string(disk.points.size()) + "] = vec2[](";
   for (std::size_t i = 0; i < disk.points.size(); ++i) {
     out += i == 0 ? "\n  " : ",\n  ";
     out += "vec2(" + glsl_float(disk.points[i][0]) + ", " + glsl_float(disk.points[i][1]) + ")";
@@ -50,7 +50,8 @@ std::string variant_header(const Variant* variant, Target target) {
   if (keys.blocker_samples) {
     out += "#define BLOCKER_SEARCH_NUM_SAMPLES " + std::to_string(*keys.blocker_samples) + "\n";
   }
-  if (keys.pcf_samples) out += "#define PCF_NUM_SAMPLES " + std::to_string(*keys.pcf_samples) + "\n";
+  if (keys.pcf_samples)
+    out += "#define PCF_NUM_SAMPLES " + std::to_string(*keys.pcf_samples) + "\n";
   if (variant->blocker_disk) out += disk_array("BLOCKER_DISK", *variant->blocker_disk);
   if (variant->pcf_disk) out += disk_array("PCF_DISK", *variant->pcf_disk);
   return out;

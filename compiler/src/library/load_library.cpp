@@ -48,7 +48,8 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
   if (disks.contains("blocker")) {
     v.blocker_disk = read_disk(disks["blocker"], info.value("blocker", json::object()));
   }
-  if (disks.contains("pcf")) v.pcf_disk = read_disk(disks["pcf"], info.value("pcf", json::object()));
+  if (disks.contains("pcf"))
+    v.pcf_disk = read_disk(disks["pcf"], info.value("pcf", json::object()));
   for (const json& t : j.at("targets")) {
     auto target = parse_target(t.get<std::string>());
     if (!target) {

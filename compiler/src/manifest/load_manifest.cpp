@@ -21,4 +21,10 @@ Result<Manifest> load_manifest(const std::filesystem::path& path) {
   return parse_manifest(text, name);
 }
 
+Result<std::vector<Variant>> load_variants(const std::filesystem::path& path) {
+  auto manifest = load_manifest(path);
+  if (!manifest) return manifest.error();
+  return expand(*manifest);
+}
+
 }  // namespace penumbra

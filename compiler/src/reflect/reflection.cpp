@@ -1,8 +1,7 @@
 #include "penumbra/compiler/reflection.hpp"
 
-#include <spirv_cross/spirv_cross.hpp>
-
 #include <algorithm>
+#include <spirv_cross/spirv_cross.hpp>
 
 namespace penumbra {
 namespace {
@@ -19,10 +18,10 @@ UniformBlock reflect_block(const Compiler& compiler, const Resource& resource) {
   block.binding = compiler.get_decoration(resource.id, spv::DecorationBinding);
   block.size = static_cast<std::uint32_t>(compiler.get_declared_struct_size(type));
   for (std::uint32_t i = 0; i < type.member_types.size(); ++i) {
-    block.members.push_back(BlockMember{
-        compiler.get_member_name(resource.base_type_id, i),
-        compiler.type_struct_member_offset(type, i),
-        static_cast<std::uint32_t>(compiler.get_declared_struct_member_size(type, i))});
+    block.members.push_back(
+        BlockMember{compiler.get_member_name(resource.base_type_id, i),
+                    compiler.type_struct_member_offset(type, i),
+                    static_cast<std::uint32_t>(compiler.get_declared_struct_member_size(type, i))});
   }
   return block;
 }
@@ -58,9 +57,9 @@ Result<ShaderInterface> reflect(std::span<const std::uint32_t> spirv) {
     }
     for (const Resource& resource : resources.sampled_images) {
       const auto& type = compiler.get_type(resource.type_id);
-      iface.sampled_images.push_back(
-          SampledImage{resource.name, compiler.get_decoration(resource.id, spv::DecorationDescriptorSet),
-                       compiler.get_decoration(resource.id, spv::DecorationBinding), type.image.depth});
+      iface.sampled_images.push_back(SampledImage{
+          resource.name, compiler.get_decoration(resource.id, spv::DecorationDescriptorSet),
+          compiler.get_decoration(resource.id, spv::DecorationBinding), type.image.depth});
     }
     std::sort(iface.sampled_images.begin(), iface.sampled_images.end(),
               [](const SampledImage& a, const SampledImage& b) { return a.binding < b.binding; });

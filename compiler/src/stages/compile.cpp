@@ -1,5 +1,5 @@
-#include <glslang/SPIRV/GlslangToSpv.h>
 #include <glslang/Public/ResourceLimits.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
 
 #include "glsl/glslang_setup.hpp"
 #include "glsl/name_disk_constants.hpp"

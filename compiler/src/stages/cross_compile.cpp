@@ -1,7 +1,6 @@
+#include <memory>
 #include <spirv_cross/spirv_glsl.hpp>
 #include <spirv_cross/spirv_hlsl.hpp>
-
-#include <memory>
 
 #include "penumbra/compiler/targets.hpp"
 #include "stages/stages.hpp"
@@ -26,7 +25,7 @@ std::unique_ptr<CompilerGLSL> make_glsl(const ShaderJob& job) {
       break;
     case Target::glsl330:
       options.version = 330;
-      options.enable_420pack_extension = false;           // no binding qualifiers in 3.30
+      options.enable_420pack_extension = false;              // no binding qualifiers in 3.30
       options.emit_uniform_buffer_as_plain_uniforms = true;  // uniforms set by name
       break;
     default:  // essl300
@@ -67,7 +66,8 @@ Status CrossCompileStage::process(ShaderJob& job) const {
   }
   if (job.target == Target::hlsl_dx9) {
     auto rewritten = dx9_constants_as_registers(job.text);
-    if (!rewritten) return make_error(Error::Kind::compile, job.describe(), rewritten.error().message);
+    if (!rewritten)
+      return make_error(Error::Kind::compile, job.describe(), rewritten.error().message);
     job.text = std::move(*rewritten);
   }
   return {};

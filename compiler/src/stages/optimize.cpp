@@ -7,10 +7,10 @@ namespace penumbra {
 Status OptimizeStage::process(ShaderJob& job) const {
   spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_0);
   std::string messages;
-  optimizer.SetMessageConsumer([&messages](spv_message_level_t, const char*,
-                                           const spv_position_t&, const char* message) {
-    messages += std::string(message) + "\n";
-  });
+  optimizer.SetMessageConsumer(
+      [&messages](spv_message_level_t, const char*, const spv_position_t&, const char* message) {
+        messages += std::string(message) + "\n";
+      });
   // No inlining and no SSA rewriting: those replace named locals and
   // functions with numbered temporaries in the cross-compiled text. These
   // passes only fold and remove what is provably dead.

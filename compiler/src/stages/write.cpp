@@ -23,8 +23,9 @@ std::string banner(const ShaderJob& job) {
   } else {
     out += "Shared by every variant";
   }
-  out += "; target " + std::string(to_string(job.target)) + "; " + std::string(to_string(job.pass)) +
-         " pass, " + std::string(to_string(job.stage)) + " stage.\n";
+  out += "; target " + std::string(to_string(job.target)) + "; " +
+         std::string(to_string(job.pass)) + " pass, " + std::string(to_string(job.stage)) +
+         " stage.\n";
   return out;
 }
 

@@ -1,7 +1,6 @@
 #include "targets/rules.hpp"
 
 #include <spirv/unified1/spirv.hpp>
-
 #include <string>
 
 namespace penumbra {
@@ -23,8 +22,10 @@ constexpr ForbiddenOp kDx9Forbidden[] = {
     {spv::OpImageSampleProjExplicitLod, "tex2Dproj", "projective lookups are not allowed"},
     {spv::OpImageSampleProjDrefImplicitLod, "tex2Dproj", "projective lookups are not allowed"},
     {spv::OpImageSampleProjDrefExplicitLod, "tex2Dproj", "projective lookups are not allowed"},
-    {spv::OpImageQuerySize, "textureSize", "SM 3.0 has no texture-size query; pass sizes as constants"},
-    {spv::OpImageQuerySizeLod, "textureSize", "SM 3.0 has no texture-size query; pass sizes as constants"},
+    {spv::OpImageQuerySize, "textureSize",
+     "SM 3.0 has no texture-size query; pass sizes as constants"},
+    {spv::OpImageQuerySizeLod, "textureSize",
+     "SM 3.0 has no texture-size query; pass sizes as constants"},
     {spv::OpImageFetch, "texelFetch", "SM 3.0 has no texel fetch; sample texel centres"},
     {spv::OpShiftLeftLogical, "integer bit shift", "SM 3.0 has no integer bit operations"},
     {spv::OpShiftRightLogical, "integer bit shift", "SM 3.0 has no integer bit operations"},
@@ -42,9 +43,9 @@ Status check_dx9(const ShaderJob& job) {
     const std::uint32_t count = words[i] >> spv::WordCountShift;
     for (const ForbiddenOp& forbidden : kDx9Forbidden) {
       if (op == forbidden.op) {
-        return make_error(Error::Kind::compile, job.describe(),
-                          std::string(forbidden.construct) + " is not allowed for hlsl_dx9: " +
-                              forbidden.why);
+        return make_error(
+            Error::Kind::compile, job.describe(),
+            std::string(forbidden.construct) + " is not allowed for hlsl_dx9: " + forbidden.why);
       }
     }
     if (count == 0) break;  // malformed; spirv-val has already rejected such modules

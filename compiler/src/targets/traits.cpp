@@ -1,7 +1,7 @@
-#include "penumbra/compiler/targets.hpp"
-
 #include <algorithm>
 #include <cctype>
+
+#include "penumbra/compiler/targets.hpp"
 
 namespace penumbra {
 

@@ -10,7 +10,8 @@ namespace penumbra {
 namespace {
 
 bool all_finite(const FloatImage& image) {
-  return std::all_of(image.data.begin(), image.data.end(), [](float v) { return std::isfinite(v); });
+  return std::all_of(image.data.begin(), image.data.end(),
+                     [](float v) { return std::isfinite(v); });
 }
 
 // The largest depth either input holds: the far end of the normalized range.
@@ -62,18 +63,17 @@ Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& 
   for (float& d : normalized.data) d *= depth_scale;  // exact: a power of two
   auto map = engine.upload_shadow_map(normalized);
   if (!map) return map.error();
-  const ParamBlock params = shadow_params(
-      inputs.light,
-      {inputs.shadow_map.width, inputs.shadow_map.height, inputs.receivers.width,
-       inputs.receivers.height},
-      depth_scale);
+  const ParamBlock params = shadow_params(inputs.light,
+                                          {inputs.shadow_map.width, inputs.shadow_map.height,
+                                           inputs.receivers.width, inputs.receivers.height},
+                                          depth_scale);
   return engine.run_query(*program, **map, inputs.receivers, params);
 }
 
 Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  auto image = reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light,
-                                         inputs.receivers);
+  auto image =
+      reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light, inputs.receivers);
   if (!image) return image.error();
   return std::move(image->visibility);
 }

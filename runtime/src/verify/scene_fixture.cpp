@@ -49,16 +49,15 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth,
       {scene.map_width, scene.map_height, scene.receivers_width, scene.receivers_height},
       depth_scale);
   const auto triangles = reference::triangles(scene);
-  auto map = engine.render_depth(depth, triangles, scene.map_width, scene.map_height,
-                                 fixture.params);
+  auto map =
+      engine.render_depth(depth, triangles, scene.map_width, scene.map_height, fixture.params);
   if (!map) return map.error();
   fixture.map = *map;
   auto normalized = engine.read_shadow_map(**map);
   if (!normalized) return normalized.error();
   fixture.linear_depth = std::move(*normalized);
   for (float& d : fixture.linear_depth.data) d /= depth_scale;  // exact: a power of two
-  fixture.receivers =
-      reference::receivers(scene, scene.receivers_width, scene.receivers_height);
+  fixture.receivers = reference::receivers(scene, scene.receivers_width, scene.receivers_height);
   fixture.depth_check = check_depth(scene, fixture.linear_depth);
   return fixture;
 }

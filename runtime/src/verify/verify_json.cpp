@@ -35,17 +35,16 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
   for (Technique t : kAllTechniques) {
     tolerances[std::string(to_string(t))] = reference::tolerance(t, precision);
   }
-  nlohmann::json out = {
-      {"generator", library.generator},
-      {"device",
-       {{"name", report.device.name},
-        {"driver", report.device.driver},
-        {"sub_texel_precision_bits", report.device.sub_texel_precision_bits}}},
-      {"tolerances", tolerances},
-      {"max_ambiguous_fraction", reference::kMaxAmbiguousFraction},
-      {"pass", report.pass()},
-      {"runs", report.runs},
-      {"failed", report.failed}};
+  nlohmann::json out = {{"generator", library.generator},
+                        {"device",
+                         {{"name", report.device.name},
+                          {"driver", report.device.driver},
+                          {"sub_texel_precision_bits", report.device.sub_texel_precision_bits}}},
+                        {"tolerances", tolerances},
+                        {"max_ambiguous_fraction", reference::kMaxAmbiguousFraction},
+                        {"pass", report.pass()},
+                        {"runs", report.runs},
+                        {"failed", report.failed}};
   nlohmann::json depth = nlohmann::json::array();
   for (const DepthCheck& c : report.depth_checks) depth.push_back(depth_json(c));
   out["depth_pass"] = depth;
@@ -55,7 +54,8 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
     for (const TargetRun& run : v.targets) {
       targets[std::string(to_string(run.target))] = target_json(run);
     }
-    variants.push_back({{"name", v.name}, {"technique", to_string(v.technique)}, {"targets", targets}});
+    variants.push_back(
+        {{"name", v.name}, {"technique", to_string(v.technique)}, {"targets", targets}});
   }
   out["variants"] = variants;
   return out;

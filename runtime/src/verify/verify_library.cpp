@@ -10,7 +10,9 @@ namespace {
 
 // How each target is executed. Only SPIR-V runs for now; the text targets
 // are validated at build time and report why they were not executed.
-bool executable(Target target) { return target == Target::spirv; }
+bool executable(Target target) {
+  return target == Target::spirv;
+}
 
 std::string not_executed_reason(Target target) {
   return "not executed: running " + std::string(to_string(target)) +
@@ -55,9 +57,8 @@ Result<TargetRun> run_target(Engine& engine, const Library& library, const Libra
 }
 
 bool selected(const VerifyOptions& options, const std::string& name) {
-  return options.variants.empty() ||
-         std::find(options.variants.begin(), options.variants.end(), name) !=
-             options.variants.end();
+  return options.variants.empty() || std::find(options.variants.begin(), options.variants.end(),
+                                               name) != options.variants.end();
 }
 
 }  // namespace
@@ -76,7 +77,8 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   }
   for (const std::string& name : options.variants) {
     if (!library.find(name)) {
-      return make_error(Error::Kind::bad_input, name, "no such variant in " + library.root.string());
+      return make_error(Error::Kind::bad_input, name,
+                        "no such variant in " + library.root.string());
     }
   }
   VerifyReport report;

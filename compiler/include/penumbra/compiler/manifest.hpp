@@ -67,4 +67,7 @@ Result<Manifest> parse_manifest(std::string_view json_text, std::string_view sou
 // sorted by technique (hard, pcf_grid, pcf_poisson, pcss) and then by keys.
 Result<std::vector<Variant>> expand(const Manifest& manifest);
 
+// load_manifest() then expand(): the variants of a manifest file.
+Result<std::vector<Variant>> load_variants(const std::filesystem::path& path);
+
 }  // namespace penumbra

@@ -36,29 +36,29 @@ using Point2 = std::array<float, 2>;
 
 // A Poisson disk exactly as baked into shaders (float32 values).
 struct Disk {
-  std::string name;                       // family name from the manifest, e.g. "whitepaper16"
-  std::string method;                     // "whitepaper", "best_candidate", "sample_elimination"
-  std::uint64_t seed = 0;                 // generator seed (0 for whitepaper16)
-  std::vector<Point2> points;             // the baked points, in order
-  double normalized_min_distance = 0.0;   // min pairwise distance / hexagonal-packing bound
+  std::string name;                      // family name from the manifest, e.g. "whitepaper16"
+  std::string method;                    // "whitepaper", "best_candidate", "sample_elimination"
+  std::uint64_t seed = 0;                // generator seed (0 for whitepaper16)
+  std::vector<Point2> points;            // the baked points, in order
+  double normalized_min_distance = 0.0;  // min pairwise distance / hexagonal-packing bound
 };
 
 // The keys that select a variant of a technique. Unused keys stay empty.
 struct VariantKeys {
-  std::optional<int> kernel;            // pcf_grid: odd K
-  std::optional<int> blocker_samples;   // pcss
-  std::optional<int> pcf_samples;       // pcf_poisson, pcss
-  std::optional<std::string> disk;      // disk family name: pcf_poisson, pcss
+  std::optional<int> kernel;           // pcf_grid: odd K
+  std::optional<int> blocker_samples;  // pcss
+  std::optional<int> pcf_samples;      // pcf_poisson, pcss
+  std::optional<std::string> disk;     // disk family name: pcf_poisson, pcss
 };
 
 // One fully specified permutation: what gets compiled and verified.
 struct Variant {
-  std::string name;                 // stable, e.g. "pcss_b16_p16_whitepaper16"
+  std::string name;  // stable, e.g. "pcss_b16_p16_whitepaper16"
   Technique technique = Technique::hard;
   VariantKeys keys;
-  std::optional<Disk> blocker_disk; // pcss only
-  std::optional<Disk> pcf_disk;     // pcf_poisson and pcss
-  std::vector<Target> targets;      // targets this variant is emitted for, in kAllTargets order
+  std::optional<Disk> blocker_disk;  // pcss only
+  std::optional<Disk> pcf_disk;      // pcf_poisson and pcss
+  std::vector<Target> targets;       // targets this variant is emitted for, in kAllTargets order
 };
 
 // Builds the stable variant name from technique and keys:

@@ -3,11 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "penumbra/support/result.hpp"
 
@@ -16,7 +15,7 @@ namespace penumbra {
 enum class ShaderStage { vertex, fragment };
 
 struct BlockMember {
-  std::string name;       // e.g. "shadow_map_size"
+  std::string name;  // e.g. "shadow_map_size"
   std::uint32_t offset = 0;
   std::uint32_t size = 0;  // bytes
 };
@@ -26,7 +25,7 @@ struct UniformBlock {
   std::string instance_name;  // e.g. "params"
   std::uint32_t set = 0;
   std::uint32_t binding = 0;
-  std::uint32_t size = 0;     // declared size in bytes
+  std::uint32_t size = 0;  // declared size in bytes
   std::vector<BlockMember> members;
 };
 

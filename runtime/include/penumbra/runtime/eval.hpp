@@ -9,9 +9,9 @@
 namespace penumbra {
 
 struct EvalInputs {
-  FloatImage shadow_map;           // Pf: linear light-view z, W x H
-  FloatImage receivers;            // PF: (u, v, z_r) per pixel
-  reference::LightParams light;    // light size, frustum width, near plane, bias, filter radius
+  FloatImage shadow_map;         // Pf: linear light-view z, W x H
+  FloatImage receivers;          // PF: (u, v, z_r) per pixel
+  reference::LightParams light;  // light size, frustum width, near plane, bias, filter radius
 };
 
 // Checks the images (channels, sizes, finite values); errors name the input.

@@ -23,8 +23,8 @@ struct SceneRun {
 struct TargetRun {
   Target target = Target::spirv;
   bool executed = false;
-  std::string how;     // how the target was executed, or why it was not
-  bool pass = false;   // executed and every scene passed
+  std::string how;    // how the target was executed, or why it was not
+  bool pass = false;  // executed and every scene passed
   std::vector<SceneRun> scenes;
 };
 

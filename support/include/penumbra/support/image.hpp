@@ -9,8 +9,8 @@ namespace penumbra {
 struct FloatImage {
   int width = 0;
   int height = 0;
-  int channels = 1;          // 1 (Pf) or 3 (PF); 4 only in memory (GPU upload)
-  std::vector<float> data;   // width * height * channels, row j = 0 first
+  int channels = 1;         // 1 (Pf) or 3 (PF); 4 only in memory (GPU upload)
+  std::vector<float> data;  // width * height * channels, row j = 0 first
 
   FloatImage() = default;
   FloatImage(int w, int h, int c, float fill = 0.0f)

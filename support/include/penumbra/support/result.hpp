@@ -33,8 +33,8 @@ inline Error make_error(Error::Kind kind, std::string where, std::string message
 template <typename T>
 class [[nodiscard]] Result {
  public:
-  Result(T value) : data_(std::move(value)) {}           // NOLINT(google-explicit-constructor)
-  Result(Error error) : data_(std::move(error)) {}       // NOLINT(google-explicit-constructor)
+  Result(T value) : data_(std::move(value)) {}      // NOLINT(google-explicit-constructor)
+  Result(Error error) : data_(std::move(error)) {}  // NOLINT(google-explicit-constructor)
 
   bool ok() const { return data_.index() == 0; }
   explicit operator bool() const { return ok(); }
@@ -73,8 +73,8 @@ using Status = Result<void>;
 }  // namespace penumbra
 
 // Propagates an error from an expression yielding Result<...>.
-#define PENUMBRA_TRY(expr)                                        \
-  do {                                                            \
+#define PENUMBRA_TRY(expr)                                         \
+  do {                                                             \
     if (auto penumbra_try_status_ = (expr); !penumbra_try_status_) \
-      return penumbra_try_status_.error();                        \
+      return penumbra_try_status_.error();                         \
   } while (0)

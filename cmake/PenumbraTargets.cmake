@@ -1,0 +1,25 @@
+# One place for warning flags, sanitizers and the shape of a library target:
+# every project target calls penumbra_target_defaults().
+function(penumbra_target_defaults target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                           -Wno-sign-conversion)
+  if(PENUMBRA_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(PENUMBRA_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()
+
+# penumbra_add_library(NAME ALIAS SOURCES...): a static library with its
+# public headers in include/, private ones in src/, exported as penumbra::ALIAS.
+function(penumbra_add_library name alias)
+  add_library(${name} STATIC ${ARGN})
+  add_library(penumbra::${alias} ALIAS ${name})
+  target_include_directories(${name}
+    PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+           $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>
+    PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+  penumbra_target_defaults(${name})
+endfunction()
