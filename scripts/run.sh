@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
 install_missing_packages
-configure_and_build build -DPENUMBRA_BUILD_TESTS=OFF
+configure_and_build build penumbra_cli
 ./build/penumbra build permutations/default.json -o out -j "$(nproc)"
 status=0
 ./build/penumbra verify out || status=$?

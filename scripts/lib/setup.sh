@@ -23,10 +23,11 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# configure_and_build BUILD_DIR [extra cmake args...]
+# configure_and_build BUILD_DIR [TARGET]: configures (tests on) and builds
+# TARGET, or everything.
 configure_and_build() {
   local build_dir="$1"
-  shift
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@"
-  cmake --build "$build_dir" --parallel "$(nproc)"
+  local target="${2:-all}"
+  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON
+  cmake --build "$build_dir" --parallel "$(nproc)" --target "$target"
 }

@@ -7,9 +7,10 @@
 
 layout(set = 0, binding = 3) uniform sampler2D receivers;
 
+layout(location = 0) in vec2 screen_uv;  // this pixel's centre in [0, 1]
 layout(location = 0) out vec4 visibility;
 
 void main() {
-  vec3 query = textureLod(receivers, gl_FragCoord.xy * params.screen_size.zw, 0.0).xyz;
+  vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
   visibility = vec4(shadow_visibility(query));
 }
