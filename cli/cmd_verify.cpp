@@ -12,25 +12,39 @@ struct VerifyArgs {
   std::string library;
   std::string device;
   std::vector<std::string> variants;
+  std::vector<std::string> targets;
+  bool no_gl = false;
   bool validation = false;
   bool verbose = false;
 };
 
+std::string run_label(const VariantRun& v, const TargetRun& t) {
+  std::string label = v.name + " [" + std::string(to_string(t.target));
+  if (t.backend != "vulkan") label += " on " + t.backend;
+  return label + "]";
+}
+
 void print_summary(const VerifyReport& report) {
   for (const DepthCheck& c : report.depth_checks) {
-    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass on " << c.scene << ": " << c.mismatched
-              << " of " << c.texels << " texels off\n";
+    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass [" << to_string(c.target) << "] on "
+              << c.scene << ": " << c.mismatched << " of " << c.texels << " texels off\n";
   }
   for (const VariantRun& v : report.variants) {
-    for (const TargetRun& t : v.targets) {
+    for (const TargetRun& t : v.runs) {
       if (!t.executed) continue;
+      if (!t.error.empty()) {
+        std::cout << "FAIL " << run_label(v, t) << ": " << t.error << "\n";
+        continue;
+      }
       double max_error = 0.0;
       for (const SceneRun& s : t.scenes)
         max_error = std::max(max_error, s.comparison.max_abs_error);
-      std::cout << (t.pass ? "PASS " : "FAIL ") << v.name << " [" << to_string(t.target)
-                << "] max error " << max_error << "\n";
+      std::cout << (t.pass ? "PASS " : "FAIL ") << run_label(v, t) << " max error " << max_error
+                << "\n";
     }
   }
+  if (report.gl_device.empty())
+    std::cout << "note: the OpenGL path did not run (see verify.json)\n";
   std::cout << report.runs - report.failed << " passed, " << report.failed << " failed\n";
 }
 
@@ -43,6 +57,8 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("library", args->library, "Built library directory")->required();
   cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
   cmd->add_option("--variant", args->variants, "Only these variants (repeatable)");
+  cmd->add_option("--target", args->targets, "Only these targets (repeatable)");
+  cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {
@@ -57,8 +73,17 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(engine.error());
       return;
     }
-    auto result = verify_library(*library, **engine, {.variants = args->variants},
-                                 stderr_diagnostics(args->verbose));
+    VerifyOptions options{.variants = args->variants, .targets = {}, .gl = !args->no_gl};
+    for (const std::string& name : args->targets) {
+      auto target = parse_target(name);
+      if (!target) {
+        exit_code = report(make_error(Error::Kind::bad_input, "--target " + name,
+                                      "unknown target; allowed: " + allowed_targets()));
+        return;
+      }
+      options.targets.push_back(*target);
+    }
+    auto result = verify_library(*library, **engine, options, stderr_diagnostics(args->verbose));
     if (!result) {
       exit_code = report(result.error());
       return;

@@ -1,35 +1,93 @@
 #include "penumbra/runtime/library_programs.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "penumbra/compiler/targets.hpp"
+#include "penumbra/compiler/text_frontend.hpp"
 
 namespace penumbra {
 namespace {
 
-Result<StageCode> load_stage(const std::filesystem::path& path) {
-  auto words = read_spirv_file(path);
-  if (!words) return words.error();
-  auto iface = reflect(*words);
-  if (!iface) return make_error(Error::Kind::compile, path.string(), iface.error().message);
-  return StageCode{std::move(*words), std::move(*iface)};
+Result<StageCode> reflected(std::vector<std::uint32_t> spirv, const std::string& name) {
+  auto iface = reflect(spirv);
+  if (!iface) return make_error(Error::Kind::compile, name, iface.error().message);
+  return StageCode{std::move(spirv), std::move(*iface)};
 }
 
-}  // namespace
-
-Result<PassProgram> load_program(const Library& library, const LibraryVariant& variant,
-                                 PassKind pass, Target target) {
+Result<const PassFiles*> pass_files(const LibraryVariant& variant, PassKind pass, Target target) {
   const auto by_pass = variant.passes.find(pass);
-  const auto files = by_pass == variant.passes.end() ? nullptr : &by_pass->second;
-  if (!files || !files->contains(target)) {
+  if (by_pass == variant.passes.end() || !by_pass->second.contains(target)) {
     return make_error(Error::Kind::bad_input, variant.variant.name,
                       "the library has no " + std::string(to_string(pass)) + " pass for target " +
                           std::string(to_string(target)));
   }
-  const PassFiles& pass_files = files->at(target);
-  auto vert = load_stage(library.root / pass_files.vert);
+  return &by_pass->second.at(target);
+}
+
+// Compiles one stage's emitted text with the target's front end.
+Result<StageCode> text_stage(const Library& library, const LibraryVariant& variant, PassKind pass,
+                             Target target, ShaderStage stage, Execution& execution) {
+  auto text = read_pass_file(library, variant, pass, target, stage);
+  if (!text) return text.error();
+  auto files = pass_files(variant, pass, target);
+  const std::string& rel = stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag;
+  auto compiled = compile_target_text(target, stage, *text, (library.root / rel).string());
+  if (!compiled) return compiled.error();
+  execution.front_end = compiled->front_end;
+  for (const std::string& shim : compiled->shims) {
+    if (std::find(execution.shims.begin(), execution.shims.end(), shim) == execution.shims.end()) {
+      execution.shims.push_back(shim);
+    }
+  }
+  return reflected(std::move(compiled->spirv), (library.root / rel).string());
+}
+
+}  // namespace
+
+Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
+                                   PassKind pass, Target target, ShaderStage stage) {
+  auto files = pass_files(variant, pass, target);
+  if (!files) return files.error();
+  const auto path = library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return make_error(Error::Kind::io, path.string(), "cannot open the shader file");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
+                                          PassKind pass, Target target) {
+  ExecutableProgram out;
+  if (target == Target::spirv) {
+    auto files = pass_files(variant, pass, target);
+    if (!files) return files.error();
+    for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
+      const auto path =
+          library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
+      auto words = read_spirv_file(path);
+      if (!words) return words.error();
+      auto code = reflected(std::move(*words), path.string());
+      if (!code) return code.error();
+      (stage == ShaderStage::vertex ? out.program.vert : out.program.frag) = std::move(*code);
+    }
+    out.execution.front_end = "SPIR-V as built";
+    return out;
+  }
+  auto vert = text_stage(library, variant, pass, target, ShaderStage::vertex, out.execution);
   if (!vert) return vert.error();
-  auto frag = load_stage(library.root / pass_files.frag);
+  auto frag = text_stage(library, variant, pass, target, ShaderStage::fragment, out.execution);
   if (!frag) return frag.error();
-  return PassProgram{std::move(*vert), std::move(*frag)};
+  out.program.vert = std::move(*vert);
+  out.program.frag = std::move(*frag);
+  // HLSL flips clip-space y for Direct3D's viewport; GLSL writes OpenGL's
+  // clip z in [-w, w]. The engine reproduces each API's convention.
+  out.program.d3d_viewport = traits(target).is_hlsl;
+  out.program.gl_clip_depth = !traits(target).is_hlsl;
+  return out;
 }
 
 float depth_scale_for(double max_z) {

@@ -35,6 +35,35 @@ Result<std::optional<vk::Buffer>> create_vertices(const vk::Device& device,
   return std::optional<vk::Buffer>(std::move(*buffer));
 }
 
+// Vulkan's framebuffer y grows with the row index, so with y = 0 and a
+// positive height clip y = -1 lands on row 0, the contract's v = 0. A vertex
+// stage written for Direct3D's viewport (y up) negates clip y; a negative
+// height, anchored at the bottom edge, negates it back.
+VkViewport pass_viewport(VkExtent2D extent, bool d3d_viewport) {
+  const auto width = static_cast<float>(extent.width);
+  const auto height = static_cast<float>(extent.height);
+  if (d3d_viewport) return {0.0f, height, width, -height, 0.0f, 1.0f};
+  return {0.0f, 0.0f, width, height, 0.0f, 1.0f};
+}
+
+// A negative viewport height is core in Vulkan 1.1; before that it needs
+// VK_KHR_maintenance1, which the runtime does not enable.
+Status check_viewport_support(const Context& context, const PassDraw& draw) {
+  if (draw.program->gl_clip_depth && !context.device->depth_clip_control()) {
+    return make_error(Error::Kind::device, std::string(draw.shape.name),
+                      "the program writes OpenGL clip-space depth (gl_clip_depth), which needs "
+                      "VK_EXT_depth_clip_control; " +
+                          context.info.name + " does not offer it");
+  }
+  if (!draw.program->d3d_viewport || context.device->api_version() >= VK_API_VERSION_1_1) {
+    return {};
+  }
+  return make_error(Error::Kind::device, std::string(draw.shape.name),
+                    "the program asks for a Direct3D viewport (d3d_viewport), which needs a "
+                    "negative viewport height: Vulkan 1.1, and " +
+                        context.info.name + " offers Vulkan 1.0");
+}
+
 void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_pass,
                  VkFramebuffer framebuffer, const PassPipeline& pipeline,
                  const PassDescriptors& descriptors, const std::optional<vk::Buffer>& vertices) {
@@ -56,9 +85,7 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 0,
                             static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
   }
-  // No y flip: Vulkan's framebuffer y grows with the row index, so row 0 is v in [0, 1/H).
-  const VkViewport viewport{
-      0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkViewport viewport = pass_viewport(extent, draw.program->d3d_viewport);
   const VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
@@ -76,6 +103,7 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
 }  // namespace
 
 Status draw_pass(Context& context, const PassDraw& draw) {
+  PENUMBRA_TRY(check_viewport_support(context, draw));
   const VkDevice device = context.device->get();
   const std::vector<std::string_view> available = draw.resources.available();
   auto plan = plan_bindings(*draw.program, draw.shape.name, available);

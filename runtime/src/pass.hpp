@@ -33,7 +33,8 @@ struct PassDraw {
 };
 
 // Binds the program's resources by reflection, draws the positions as a
-// triangle list over the whole target, and waits for the result.
+// triangle list over the whole target (through a flipped viewport for a
+// program with d3d_viewport), and waits for the result.
 Status draw_pass(Context& context, const PassDraw& draw);
 
 }  // namespace penumbra::detail

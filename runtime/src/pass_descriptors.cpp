@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -11,32 +12,66 @@
 namespace penumbra::detail {
 namespace {
 
-Result<std::optional<vk::Buffer>> create_uniforms(const Context& context, const BindingPlan& plan,
-                                                  const ParamBlock& params, std::string_view pass) {
-  const bool uses_params = std::any_of(plan.bindings.begin(), plan.bindings.end(),
-                                       [](const auto& b) { return b.role == BindingRole::params; });
-  if (!uses_params) return std::optional<vk::Buffer>();
-  auto bytes = pack_params(plan.params, params, pass);
+Result<vk::Buffer> create_uniforms(const Context& context, const ParamsLayout& layout,
+                                   const ParamBlock& params, std::string_view pass) {
+  auto bytes = pack_params(layout, params, pass);
   if (!bytes) return bytes.error();
   // A buffer cannot be empty, even for a block without members.
   const VkDeviceSize size = std::max<VkDeviceSize>(bytes->size(), 16);
   auto buffer = vk::Buffer::create(*context.device, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                   "the ShadowParams uniform buffer");
+                                   "the " + layout.block + " uniform buffer");
   if (!buffer) return buffer.error();
   std::memcpy(buffer->bytes().data(), bytes->data(), bytes->size());
-  return std::optional<vk::Buffer>(std::move(*buffer));
+  return std::move(*buffer);
 }
 
 Result<vk::DescriptorPool> create_pool(VkDevice device, const BindingPlan& plan) {
-  std::uint32_t buffers = 0;
-  std::uint32_t images = 0;
-  for (const PlannedBinding& binding : plan.bindings) {
-    ++(binding.role == BindingRole::params ? buffers : images);
-  }
+  std::map<VkDescriptorType, std::uint32_t> counts;
+  for (const PlannedBinding& binding : plan.bindings) ++counts[binding.type];
   std::vector<VkDescriptorPoolSize> sizes;
-  if (buffers) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffers});
-  if (images) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, images});
+  for (const auto& [type, count] : counts) sizes.push_back({type, count});
   return vk::DescriptorPool::create(device, sizes, plan.set_count);
+}
+
+// The image (in the layout it rests in) and the sampler a role binds.
+struct RoleImage {
+  VkImageView view = VK_NULL_HANDLE;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkSampler sampler = VK_NULL_HANDLE;
+};
+
+RoleImage role_image(const Context& context, const PassResources& resources, BindingRole role) {
+  const ShadowMapImages* map = resources.shadow_map;
+  switch (role) {
+    case BindingRole::map_depth:
+      return {map->depth.view(), kMapDepthLayout, context.nearest.get()};
+    case BindingRole::map_colour:
+      return {map->colour.view(), kMapColourLayout, context.nearest.get()};
+    case BindingRole::map_comparison:
+      return {map->depth.view(), kMapDepthLayout, context.comparison.get()};
+    case BindingRole::receivers:
+      return {resources.receivers->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+              context.nearest.get()};
+    case BindingRole::params:
+      break;
+  }
+  return {};
+}
+
+// A separate image or sampler takes its half of the role's pair.
+void write_separate(VkDevice device, VkDescriptorSet set, const PlannedBinding& binding,
+                    const RoleImage& image) {
+  const bool is_sampler = binding.type == VK_DESCRIPTOR_TYPE_SAMPLER;
+  const VkDescriptorImageInfo info{is_sampler ? image.sampler : VK_NULL_HANDLE,
+                                   is_sampler ? VK_NULL_HANDLE : image.view, image.layout};
+  VkWriteDescriptorSet write{};
+  write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+  write.dstSet = set;
+  write.dstBinding = binding.binding;
+  write.descriptorCount = 1;
+  write.descriptorType = binding.type;
+  write.pImageInfo = &info;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
 
 }  // namespace
@@ -56,9 +91,7 @@ Result<PassDescriptors> PassDescriptors::create(const Context& context, const Bi
                                                 const PassPipeline& pipeline,
                                                 const PassResources& resources,
                                                 std::string_view pass) {
-  if (plan.set_count == 0) return PassDescriptors(std::nullopt, std::nullopt, {});
-  auto uniforms = create_uniforms(context, plan, *resources.params, pass);
-  if (!uniforms) return uniforms.error();
+  if (plan.set_count == 0) return PassDescriptors({}, std::nullopt, {});
   const VkDevice device = context.device->get();
   auto pool = create_pool(device, plan);
   if (!pool) return pool.error();
@@ -69,36 +102,28 @@ Result<PassDescriptors> PassDescriptors::create(const Context& context, const Bi
     sets.push_back(*allocated);
   }
 
+  std::vector<vk::Buffer> uniforms;
   for (const PlannedBinding& binding : plan.bindings) {
     const VkDescriptorSet set = sets[binding.set];
-    const ShadowMapImages* map = resources.shadow_map;
-    switch (binding.role) {
-      case BindingRole::params:
-        vk::write_uniform_buffer(device, set, binding.binding, (*uniforms)->get(),
-                                 (*uniforms)->size());
-        break;
-      case BindingRole::map_depth:
-        vk::write_sampled_image(device, set, binding.binding, map->depth.view(), kMapDepthLayout,
-                                context.nearest.get());
-        break;
-      case BindingRole::map_colour:
-        vk::write_sampled_image(device, set, binding.binding, map->colour.view(), kMapColourLayout,
-                                context.nearest.get());
-        break;
-      case BindingRole::map_comparison:
-        vk::write_sampled_image(device, set, binding.binding, map->depth.view(), kMapDepthLayout,
-                                context.comparison.get());
-        break;
-      case BindingRole::receivers:
-        vk::write_sampled_image(device, set, binding.binding, resources.receivers->view(),
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, context.nearest.get());
-        break;
+    if (binding.role == BindingRole::params) {
+      auto buffer = create_uniforms(context, binding.params, *resources.params, pass);
+      if (!buffer) return buffer.error();
+      vk::write_uniform_buffer(device, set, binding.binding, buffer->get(), buffer->size());
+      uniforms.push_back(std::move(*buffer));
+      continue;
+    }
+    const RoleImage image = role_image(context, resources, binding.role);
+    if (binding.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER) {
+      vk::write_sampled_image(device, set, binding.binding, image.view, image.layout,
+                              image.sampler);
+    } else {
+      write_separate(device, set, binding, image);
     }
   }
-  return PassDescriptors(std::move(*uniforms), std::move(*pool), std::move(sets));
+  return PassDescriptors(std::move(uniforms), std::move(*pool), std::move(sets));
 }
 
-PassDescriptors::PassDescriptors(std::optional<vk::Buffer> uniforms,
+PassDescriptors::PassDescriptors(std::vector<vk::Buffer> uniforms,
                                  std::optional<vk::DescriptorPool> pool,
                                  std::vector<VkDescriptorSet> sets)
     : uniforms_(std::move(uniforms)), pool_(std::move(pool)), sets_(std::move(sets)) {}

@@ -1,5 +1,5 @@
 // PassDescriptors: the descriptor sets of one pass, pointing every planned
-// binding at its resource, and the uniform buffer holding ShadowParams.
+// binding at its resource, and the uniform buffers holding ShadowParams.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -30,6 +30,7 @@ struct PassResources {
 class PassDescriptors {
  public:
   // `plan` must come from plan_bindings() with `resources.available()`.
+  // Each uniform block binding gets its own buffer, packed from the ParamBlock.
   static Result<PassDescriptors> create(const Context& context, const BindingPlan& plan,
                                         const PassPipeline& pipeline,
                                         const PassResources& resources, std::string_view pass);
@@ -38,10 +39,10 @@ class PassDescriptors {
   const std::vector<VkDescriptorSet>& sets() const { return sets_; }
 
  private:
-  PassDescriptors(std::optional<vk::Buffer> uniforms, std::optional<vk::DescriptorPool> pool,
+  PassDescriptors(std::vector<vk::Buffer> uniforms, std::optional<vk::DescriptorPool> pool,
                   std::vector<VkDescriptorSet> sets);
 
-  std::optional<vk::Buffer> uniforms_;
+  std::vector<vk::Buffer> uniforms_;
   std::optional<vk::DescriptorPool> pool_;  // absent when the program binds nothing
   std::vector<VkDescriptorSet> sets_;
 };

@@ -1,6 +1,8 @@
 #include "pass_pipeline.hpp"
 
+#include <algorithm>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "vk/shader_module.hpp"
@@ -8,35 +10,81 @@
 namespace penumbra::detail {
 namespace {
 
-Status check_interface(const PassProgram& program, const PassShape& shape) {
+Error fail(const std::string& pass, std::string message) {
+  return make_error(Error::Kind::bad_input, pass, std::move(message));
+}
+
+bool declares_builtin(const ShaderInterface& iface, std::string_view builtin) {
+  return std::find(iface.builtin_outputs.begin(), iface.builtin_outputs.end(), builtin) !=
+         iface.builtin_outputs.end();
+}
+
+Status check_vertex_stage(const ShaderInterface& vert, const PassShape& shape) {
   const std::string pass(shape.name);
-  auto fail = [&](const std::string& message) {
-    return make_error(Error::Kind::bad_input, pass, message);
-  };
-  if (program.vert.iface.stage != ShaderStage::vertex ||
-      program.frag.iface.stage != ShaderStage::fragment) {
-    return fail("the program's reflection must describe a vertex stage and a fragment stage");
-  }
   const std::string supplied =
       "position (" + std::to_string(shape.position_components) + " floats) at location 0";
   bool has_position = false;
-  for (const StageVariable& input : program.vert.iface.inputs) {
+  for (const StageVariable& input : vert.inputs) {
     if (input.location != 0) {
-      return fail("vertex input '" + input.name + "' at location " +
-                  std::to_string(input.location) + " has no data; the " + pass + " supplies only " +
-                  supplied);
+      return fail(pass, "vertex input '" + input.name + "' at location " +
+                            std::to_string(input.location) + " has no data; the " + pass +
+                            " supplies only " + supplied);
     }
     if (input.components != shape.position_components) {
-      return fail("vertex input '" + input.name + "' has " + std::to_string(input.components) +
-                  " components; the " + pass + " supplies " + supplied);
+      return fail(pass, "vertex input '" + input.name + "' has " +
+                            std::to_string(input.components) + " components; the " + pass +
+                            " supplies " + supplied);
     }
     has_position = true;
   }
-  if (!has_position) return fail("the vertex shader has no input at location 0 for " + supplied);
-  for (const StageVariable& output : program.frag.iface.outputs) {
-    if (output.location == 0) return {};
+  if (!has_position) {
+    return fail(pass, "the vertex shader has no input at location 0 for " + supplied);
   }
-  return fail("the fragment shader writes no output at location 0, the pass's R32_SFLOAT target");
+  // glslang's HLSL front end makes Direct3D 9's POSITION semantic a plain
+  // output: the rasterizer would get no position at all.
+  if (!declares_builtin(vert, "Position")) {
+    return fail(pass,
+                "the vertex shader writes no clip-space position (BuiltIn Position: GLSL "
+                "gl_Position, HLSL SV_Position)");
+  }
+  return {};
+}
+
+// Outputs without an attachment would be dropped silently; among them
+// Direct3D 9's DEPTH semantic, which glslang makes a plain output.
+Status check_fragment_stage(const ShaderInterface& frag, const PassShape& shape) {
+  const std::string pass(shape.name);
+  bool has_output = false;
+  for (const StageVariable& output : frag.outputs) {
+    if (output.location != 0) {
+      return fail(pass, "fragment output '" + output.name + "' at location " +
+                            std::to_string(output.location) + " has no attachment; the " + pass +
+                            " has one R32_SFLOAT target, at location 0");
+    }
+    has_output = true;
+  }
+  if (!has_output) {
+    return fail(pass,
+                "the fragment shader writes no output at location 0, the pass's R32_SFLOAT target");
+  }
+  if (shape.fragment_depth && !declares_builtin(frag, "FragDepth")) {
+    return fail(pass,
+                "the fragment shader writes no fragment depth (BuiltIn FragDepth: GLSL "
+                "gl_FragDepth, HLSL SV_Depth); the " +
+                    pass +
+                    " stores the same normalized depth in the map's depth image as in output 0");
+  }
+  return {};
+}
+
+Status check_interface(const PassProgram& program, const PassShape& shape) {
+  if (program.vert.iface.stage != ShaderStage::vertex ||
+      program.frag.iface.stage != ShaderStage::fragment) {
+    return fail(std::string(shape.name),
+                "the program's reflection must describe a vertex stage and a fragment stage");
+  }
+  PENUMBRA_TRY(check_vertex_stage(program.vert.iface, shape));
+  return check_fragment_stage(program.frag.iface, shape);
 }
 
 Result<std::vector<vk::DescriptorSetLayout>> create_set_layouts(VkDevice device,
@@ -49,9 +97,7 @@ Result<std::vector<vk::DescriptorSetLayout>> create_set_layouts(VkDevice device,
       if (planned.set != set) continue;
       VkDescriptorSetLayoutBinding binding{};
       binding.binding = planned.binding;
-      binding.descriptorType = planned.role == BindingRole::params
-                                   ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                   : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+      binding.descriptorType = planned.type;
       binding.descriptorCount = 1;
       binding.stageFlags = planned.stages;
       bindings.push_back(binding);
@@ -92,6 +138,7 @@ Result<PassPipeline> PassPipeline::create(VkDevice device, const PassProgram& pr
   desc.position_format = shape.position_format;
   desc.position_stride = shape.position_components * static_cast<std::uint32_t>(sizeof(float));
   desc.depth_test = shape.depth_test;
+  desc.gl_clip_depth = program.gl_clip_depth;
   auto pipeline = vk::create_graphics_pipeline(device, desc);
   if (!pipeline) return pipeline.error();
   return PassPipeline(std::move(*set_layouts), std::move(*layout), std::move(*pipeline));

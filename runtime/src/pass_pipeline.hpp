@@ -22,12 +22,14 @@ struct PassShape {
   VkFormat position_format = VK_FORMAT_UNDEFINED;  // the vertex data at location 0
   std::uint32_t position_components = 0;           // floats per vertex
   bool depth_test = false;
+  bool fragment_depth = false;  // the fragment shader must write the fragment depth
 };
 
 class PassPipeline {
  public:
-  // Checks the program's stages, vertex input (location 0 only, of the
-  // shape's width) and fragment output (location 0) against `shape`, then
+  // Checks the program's stages against `shape`: vertex input (location 0
+  // only, of the shape's width), a clip-space position, fragment output
+  // (location 0 only) and, where the shape asks, the fragment depth. Then
   // builds one descriptor set layout per set of `plan`.
   static Result<PassPipeline> create(VkDevice device, const PassProgram& program,
                                      const BindingPlan& plan, const PassShape& shape,

@@ -66,7 +66,7 @@ Result<FloatImage> run_query(Context& context, const PassProgram& program,
 
   PassDraw draw;
   draw.program = &program;
-  draw.shape = {"query pass", kQueryPositionFormat, 2, false};
+  draw.shape = {"query pass", kQueryPositionFormat, 2, false, false};
   draw.resources = {&params, &map, &*receivers_image};
   draw.positions = kFullScreenTriangle;
   draw.target.colour = &*visibility;

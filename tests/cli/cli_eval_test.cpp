@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "cli_harness.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/reference/compare.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -21,7 +23,7 @@ using ::testing::HasSubstr;
 
 constexpr const char* kManifest = R"({
   "schema": 1,
-  "targets": ["spirv", "glsl450"],
+  "targets": ["spirv", "glsl450", "hlsl_dx9"],
   "sets": [
     {"technique": ["pcss"], "blocker_samples": [16], "pcf_samples": [16], "disk": ["whitepaper16"]},
     {"technique": ["hard"]},
@@ -171,6 +173,63 @@ TEST_F(EvalCommand, VerifyWritesVerifyJsonAndPasses) {
   text << in.rdbuf();
   EXPECT_THAT(text.str(), HasSubstr("\"pass\": true"));
   std::filesystem::remove(lib() / "verify.json");
+}
+
+// Replaces `from` by `to` in a library file; fails the test if absent.
+void edit_file(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string body = text.str();
+  const auto at = body.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+  body.replace(at, from.size(), to);
+  std::ofstream(file) << body;
+}
+
+// A wrong emission is caught by executing that target's own text: a changed
+// constant in the DX9 HLSL, and GLSL that no longer compiles.
+TEST_F(EvalCommand, VerifyFailsOnABrokenEmission) {
+  const auto broken = dir_->path() / "broken";
+  std::filesystem::copy(lib(), broken, std::filesystem::copy_options::recursive);
+  const auto variant = std::string("pcss_b16_p16_whitepaper16");
+  edit_file(broken / "hlsl_dx9" / variant / "query.frag.hlsl", "(zReceiver - zBlocker) / zBlocker",
+            "(zReceiver - zBlocker) / (zBlocker * 0.9f)");
+  edit_file(broken / "glsl450" / "hard" / "query.frag", "void main()",
+            "void main() { oops; }\nvoid unused()");
+  const CliRun run = run_penumbra("verify '" + broken.string() + "' --no-gl");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_THAT(run.out, HasSubstr("FAIL pcss_b16_p16_whitepaper16 [hlsl_dx9]"));
+  EXPECT_THAT(run.out, HasSubstr("FAIL hard [glsl450]"));
+  EXPECT_THAT(run.out, HasSubstr("PASS pcss_b16_p16_whitepaper16 [spirv]"));
+  EXPECT_THAT(run.out, HasSubstr("PASS pcss_b16_p16_whitepaper16 [glsl450]"));
+  EXPECT_THAT(run.out, HasSubstr("PASS hard [hlsl_dx9]"));
+  std::ifstream in(broken / "verify.json");
+  std::stringstream json;
+  json << in.rdbuf();
+  EXPECT_THAT(json.str(), HasSubstr("\"pass\": false"));
+  EXPECT_THAT(json.str(), HasSubstr("glslang"));  // the run says which front end it used
+}
+
+TEST_F(EvalCommand, EvalRunsEachTargetsOwnTextAgainstTheReference) {
+  auto library = load_library(lib());
+  ASSERT_TRUE(library.ok());
+  const Variant& variant = library->find("pcss_b16_p16_whitepaper16")->variant;
+  const reference::SamplingPrecision precision;
+  auto ref =
+      reference::evaluate_image(variant, map_, reference::LightParams{}, receivers_, precision);
+  ASSERT_TRUE(ref.ok());
+  for (const std::string target : {"spirv", "glsl450", "hlsl_dx9"}) {
+    const CliRun run =
+        run_penumbra(eval_args(variant.name, "--target " + target + " -o " + path("t.pfm")));
+    ASSERT_EQ(run.exit_code, 0) << target << ": " << run.err;
+    auto vis = read_pfm(dir_->path() / "t.pfm");
+    ASSERT_TRUE(vis.ok());
+    auto comparison = reference::compare(*vis, ref->visibility, ref->ambiguous,
+                                         reference::tolerance(Technique::pcss, precision));
+    ASSERT_TRUE(comparison.ok());
+    EXPECT_TRUE(comparison->pass) << target << ": max error " << comparison->max_abs_error;
+  }
 }
 
 TEST_F(EvalCommand, NoVulkanDeviceIsExit2) {

@@ -22,6 +22,15 @@ TEST(Dx9Constants, Float4MembersBecomeRegisters) {
             "float4 main() : COLOR0 { return params_b; }\n");
 }
 
+TEST(Dx9Constants, HalfPixelGetsTheRegisterAfterTheBlock) {
+  const std::string in =
+      "cbuffer P : register(b0)\n{\n    float4 params_a : packoffset(c0);\n"
+      "    float4 params_b : packoffset(c3);\n};\nuniform float4 gl_HalfPixel;\n";
+  auto out = dx9_constants_as_registers(in);
+  ASSERT_TRUE(out.ok());
+  EXPECT_THAT(*out, HasSubstr("uniform float4 gl_HalfPixel : register(c4);"));
+}
+
 TEST(Dx9Constants, APackedScalarIsRefusedNamingTheMember) {
   const std::string in =
       "cbuffer P : register(b0)\n{\n    float4 params_a : packoffset(c0);\n"

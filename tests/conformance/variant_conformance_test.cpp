@@ -1,6 +1,10 @@
-// Every variant of permutations/default.json, executed on the Vulkan device
-// (lavapipe) over the project's scenes and checked against the CPU reference.
+// Every variant of permutations/default.json, each target's own emitted
+// shaders executed (SPIR-V as built, GLSL and HLSL text through glslang's
+// front ends, GLSL also through the OpenGL driver when built with it) over
+// the project's scenes and checked against the CPU reference.
 #include <gtest/gtest.h>
+
+#include <set>
 
 #include "library_fixture.hpp"
 #include "penumbra/runtime/verify.hpp"
@@ -10,33 +14,39 @@ namespace {
 
 class VariantConformance : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(VariantConformance, SpirvMatchesReferenceOnEveryScene) {
+TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
   auto lib = build_default_variant(GetParam(), /*with_engine=*/true);
   ASSERT_NE(lib, nullptr);
   auto report =
-      verify_library(lib->library, *lib->engine, {.variants = {GetParam()}}, ignore_diagnostics());
+      verify_library(lib->library, *lib->engine,
+                     {.variants = {GetParam()}, .targets = {}, .gl = true}, ignore_diagnostics());
   ASSERT_TRUE(report.ok()) << report.error().to_string();
   for (const DepthCheck& depth : report->depth_checks) {
-    EXPECT_TRUE(depth.pass) << "depth pass on " << depth.scene << ": " << depth.mismatched << " of "
-                            << depth.texels << " texels off";
+    EXPECT_TRUE(depth.pass) << "depth pass of " << to_string(depth.target) << " on " << depth.scene
+                            << ": " << depth.mismatched << " of " << depth.texels << " texels off";
   }
   ASSERT_EQ(report->variants.size(), 1u);
-  bool spirv_ran = false;
-  for (const TargetRun& run : report->variants[0].targets) {
-    if (!run.executed) continue;
-    spirv_ran = spirv_ran || run.target == Target::spirv;
-    ASSERT_FALSE(run.scenes.empty());
+  std::set<Target> on_vulkan;
+  for (const TargetRun& run : report->variants[0].runs) {
+    const std::string label = std::string(to_string(run.target)) + " on " + run.backend;
+    if (!run.executed) {
+      EXPECT_EQ(run.backend, "gl") << label << " must run: " << run.not_executed;
+      continue;
+    }
+    ASSERT_TRUE(run.error.empty()) << label << ": " << run.error;
+    if (run.backend == "vulkan") on_vulkan.insert(run.target);
+    ASSERT_EQ(run.scenes.size(), 2u) << label;
     for (const SceneRun& scene : run.scenes) {
       const auto& c = scene.comparison;
-      EXPECT_TRUE(c.pass) << to_string(run.target) << " on " << scene.scene << ": max error "
-                          << c.max_abs_error << " (tolerance " << c.tolerance << "), "
-                          << c.over_tolerance << " pixels over, " << c.ambiguous << " ambiguous of "
-                          << c.pixels;
+      EXPECT_TRUE(c.pass) << label << " (" << run.execution.front_end << ") on " << scene.scene
+                          << ": max error " << c.max_abs_error << " (tolerance " << c.tolerance
+                          << "), " << c.over_tolerance << " pixels over, " << c.ambiguous
+                          << " ambiguous of " << c.pixels;
       // A scene that leaves almost everything ambiguous would check nothing.
-      EXPECT_GT(c.compared, c.pixels * 9 / 10) << scene.scene;
+      EXPECT_GT(c.compared, c.pixels * 9 / 10) << label << " " << scene.scene;
     }
   }
-  EXPECT_TRUE(spirv_ran);
+  EXPECT_EQ(on_vulkan.size(), kAllTargets.size()) << "every target's own shaders must execute";
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, VariantConformance, ::testing::ValuesIn(default_variant_names()),

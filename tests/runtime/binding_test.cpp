@@ -98,6 +98,17 @@ TEST_F(BindingTest, VertexInputMustMatchThePass) {
             "floats) at location 0");
 }
 
+TEST(ParamBlockKeyTest, MembersReadTheKeyWithoutTheInstancePrefix) {
+  EXPECT_EQ(param_block_key("light"), "light");         // ShadowParams block member
+  EXPECT_EQ(param_block_key("params.light"), "light");  // struct in gl_DefaultUniformBlock
+  EXPECT_EQ(param_block_key("params_screen_size"), "screen_size");  // SPIRV-Cross HLSL
+  EXPECT_EQ(param_block_key("gl_HalfPixel"), "gl_HalfPixel");
+  EXPECT_EQ(param_block_key("params"), "params");
+  EXPECT_EQ(param_block_key("params_"), "params_");
+  EXPECT_EQ(param_block_key("paramslight"), "paramslight");
+  EXPECT_EQ(param_block_key("other.light"), "other.light");
+}
+
 TEST_F(BindingTest, NonSpirvIsRefused) {
   PassProgram program = test::compare_program();
   program.frag.spirv = {1, 2, 3, 4, 5, 6};

@@ -13,28 +13,12 @@ namespace {
 constexpr int kSize = 16;
 const test::TestLight kLight;  // n = 9.5, Fw = 3.75, depth_scale = 1/32
 
-// Light-view x (or y) that projects to u (or v) at depth z: the contract's
-// u = 0.5 + (x n / z) / Fw solved for x.
-float light_x(float u, float z) {
-  return (u - 0.5f) * z * kLight.frustum_width / kLight.near_plane;
-}
-
-// Two triangles covering [u0, u1] x [v0, v1] at depth z.
-void add_quad(std::vector<std::array<float, 3>>& triangles, float u0, float u1, float v0, float v1,
-              float z) {
-  const std::array<float, 3> a{light_x(u0, z), light_x(v0, z), z};
-  const std::array<float, 3> b{light_x(u1, z), light_x(v0, z), z};
-  const std::array<float, 3> c{light_x(u1, z), light_x(v1, z), z};
-  const std::array<float, 3> d{light_x(u0, z), light_x(v1, z), z};
-  triangles.insert(triangles.end(), {a, b, c, a, c, d});
-}
-
 // The scene: a near quad (z = 12) drawn first, overlapping a far quad
 // (z = 24) drawn after it, so the far one must lose the depth test.
 std::vector<std::array<float, 3>> scene() {
   std::vector<std::array<float, 3>> triangles;
-  add_quad(triangles, 0.5f, 1.25f, 0.5f, 0.875f, 12.0f);  // runs off the map's right edge
-  add_quad(triangles, 0.25f, 0.75f, 0.25f, 0.75f, 24.0f);
+  test::add_caster_quad(triangles, kLight, 0.5f, 1.25f, 0.5f, 0.875f, 12.0f);  // runs off the right
+  test::add_caster_quad(triangles, kLight, 0.25f, 0.75f, 0.25f, 0.75f, 24.0f);
   return triangles;
 }
 

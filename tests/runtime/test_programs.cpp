@@ -6,7 +6,6 @@
 #include <string>
 
 namespace penumbra::test {
-namespace {
 
 std::vector<std::uint32_t> read_spirv(const std::string& name) {
   const std::string path = std::string(PENUMBRA_RUNTIME_TEST_SPIRV_DIR) + "/" + name + ".spv";
@@ -21,6 +20,8 @@ std::vector<std::uint32_t> read_spirv(const std::string& name) {
             static_cast<std::streamsize>(words.size() * sizeof(std::uint32_t)));
   return words;
 }
+
+namespace {
 
 // shaders/params.glsl: four std140 vec4 members.
 UniformBlock shadow_params() {
@@ -39,6 +40,7 @@ StageCode fullscreen_vert() {
   ShaderInterface iface;
   iface.stage = ShaderStage::vertex;
   iface.inputs = {{"position", 0, 2}};
+  iface.builtin_outputs = {"Position", "PointSize", "ClipDistance", "CullDistance"};
   return {read_spirv("fullscreen.vert"), iface};
 }
 
@@ -66,18 +68,20 @@ ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_
           {"screen_size", {sw, sh, 1.0f / sw, 1.0f / sh}}};
 }
 
-PassProgram depth_program() {
+PassProgram depth_program(const std::string& vert_name) {
   ShaderInterface vert;
   vert.stage = ShaderStage::vertex;
   vert.uniform_blocks = {shadow_params()};
   vert.inputs = {{"position", 0, 3}};
   vert.outputs = {{"light_z", 0, 1}};
+  vert.builtin_outputs = {"Position", "PointSize", "ClipDistance", "CullDistance"};
   ShaderInterface frag;
   frag.stage = ShaderStage::fragment;
   frag.uniform_blocks = {shadow_params()};
   frag.inputs = {{"light_z", 0, 1}};
   frag.outputs = {{"depth_out", 0, 1}};
-  return {{read_spirv("depth.vert"), vert}, {read_spirv("depth.frag"), frag}};
+  frag.builtin_outputs = {"FragDepth"};
+  return {{read_spirv(vert_name), vert}, {read_spirv("depth.frag"), frag}};
 }
 
 PassProgram compare_program() {
@@ -111,6 +115,17 @@ std::unique_ptr<Engine> make_engine(bool validation) {
     return nullptr;
   }
   return std::move(*engine);
+}
+
+void add_caster_quad(std::vector<std::array<float, 3>>& triangles, const TestLight& light, float u0,
+                     float u1, float v0, float v1, float z) {
+  // The contract's u = 0.5 + (x n / z) / Fw solved for x (and v for y).
+  const auto x = [&](float u) { return (u - 0.5f) * z * light.frustum_width / light.near_plane; };
+  const std::array<float, 3> a{x(u0), x(v0), z};
+  const std::array<float, 3> b{x(u1), x(v0), z};
+  const std::array<float, 3> c{x(u1), x(v1), z};
+  const std::array<float, 3> d{x(u0), x(v1), z};
+  triangles.insert(triangles.end(), {a, b, c, a, c, d});
 }
 
 FloatImage receivers_row(const std::vector<std::array<float, 3>>& points) {

@@ -2,7 +2,11 @@
 // with reflection records written by hand to match the GLSL.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "penumbra/runtime/engine.hpp"
 
@@ -20,7 +24,11 @@ struct TestLight {
 // Every ShadowParams member, for a map of map_w x map_h and an output of screen_w x screen_h.
 ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_w, int screen_h);
 
-PassProgram depth_program();            // depth.vert + depth.frag
+// The words of shaders/<name> compiled at build time (<name>.spv); fails the test if missing.
+std::vector<std::uint32_t> read_spirv(const std::string& name);
+
+// depth.vert + depth.frag; "depth_flip_y.vert" is depth.vert negating clip y.
+PassProgram depth_program(const std::string& vert_name = "depth.vert");
 PassProgram compare_program();          // fullscreen.vert + compare.frag: shadow_cmp at (u, v, z_r)
 PassProgram point_program();            // fullscreen.vert + point.frag: shadow_depth, no shadow_cmp
 PassProgram point_with_cmp_program();   // the same, with shadow_cmp declared
@@ -28,6 +36,10 @@ PassProgram unknown_sampler_program();  // fullscreen.vert + unknown_sampler.fra
 
 // An engine on the default device (lavapipe); fails the test if none.
 std::unique_ptr<Engine> make_engine(bool validation = false);
+
+// Two triangles covering [u0, u1] x [v0, v1] of the map at light-view depth z.
+void add_caster_quad(std::vector<std::array<float, 3>>& triangles, const TestLight& light, float u0,
+                     float u1, float v0, float v1, float z);
 
 // A receivers image of one row holding the (u, v, z_r) points in order.
 FloatImage receivers_row(const std::vector<std::array<float, 3>>& points);

@@ -82,6 +82,9 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                    std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
                    " threads"});
   PENUMBRA_TRY(run_jobs(jobs, Pipeline(staged->staging()), threads));
+  for (const ShaderJob& job : jobs) {
+    for (const Diagnostic& d : job.diagnostics) diagnostics(d);
+  }
 
   const std::string index = index_json(variants, jobs).dump(2) + "\n";
   PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index));

@@ -65,6 +65,9 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
       const std::string target_name(to_string(target));
       passes[pass][target_name][stage] = job->output_path;
       reflection[pass][target_name][stage] = job->interface;
+      if (job->estimated_slots > 0) {
+        out["estimated_ps30_slots"][pass + "." + stage] = job->estimated_slots;
+      }
     }
   }
   out["targets"] = targets;

@@ -3,28 +3,13 @@
 #include <algorithm>
 #include <spirv_cross/spirv_cross.hpp>
 
+#include "reflect_parts.hpp"
+
 namespace penumbra {
 namespace {
 
 using spirv_cross::Compiler;
 using spirv_cross::Resource;
-
-UniformBlock reflect_block(const Compiler& compiler, const Resource& resource) {
-  UniformBlock block;
-  const auto& type = compiler.get_type(resource.base_type_id);
-  block.type_name = compiler.get_name(resource.base_type_id);
-  block.instance_name = compiler.get_name(resource.id);
-  block.set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);
-  block.binding = compiler.get_decoration(resource.id, spv::DecorationBinding);
-  block.size = static_cast<std::uint32_t>(compiler.get_declared_struct_size(type));
-  for (std::uint32_t i = 0; i < type.member_types.size(); ++i) {
-    block.members.push_back(
-        BlockMember{compiler.get_member_name(resource.base_type_id, i),
-                    compiler.type_struct_member_offset(type, i),
-                    static_cast<std::uint32_t>(compiler.get_declared_struct_member_size(type, i))});
-  }
-  return block;
-}
 
 std::vector<StageVariable> reflect_variables(const Compiler& compiler,
                                              const spirv_cross::SmallVector<Resource>& resources) {
@@ -40,6 +25,26 @@ std::vector<StageVariable> reflect_variables(const Compiler& compiler,
   return out;
 }
 
+// The outputs a vertex or fragment stage can declare, by their SPIR-V names.
+std::string builtin_name(spv::BuiltIn builtin) {
+  switch (builtin) {
+    case spv::BuiltInPosition:
+      return "Position";
+    case spv::BuiltInPointSize:
+      return "PointSize";
+    case spv::BuiltInClipDistance:
+      return "ClipDistance";
+    case spv::BuiltInCullDistance:
+      return "CullDistance";
+    case spv::BuiltInFragDepth:
+      return "FragDepth";
+    case spv::BuiltInSampleMask:
+      return "SampleMask";
+    default:
+      return "BuiltIn" + std::to_string(static_cast<int>(builtin));
+  }
+}
+
 }  // namespace
 
 Result<ShaderInterface> reflect(std::span<const std::uint32_t> spirv) {
@@ -53,18 +58,14 @@ Result<ShaderInterface> reflect(std::span<const std::uint32_t> spirv) {
 
     const auto resources = compiler.get_shader_resources();
     for (const Resource& resource : resources.uniform_buffers) {
-      iface.uniform_blocks.push_back(reflect_block(compiler, resource));
+      iface.uniform_blocks.push_back(detail::reflect_block(compiler, resource));
     }
-    for (const Resource& resource : resources.sampled_images) {
-      const auto& type = compiler.get_type(resource.type_id);
-      iface.sampled_images.push_back(SampledImage{
-          resource.name, compiler.get_decoration(resource.id, spv::DecorationDescriptorSet),
-          compiler.get_decoration(resource.id, spv::DecorationBinding), type.image.depth});
-    }
-    std::sort(iface.sampled_images.begin(), iface.sampled_images.end(),
-              [](const SampledImage& a, const SampledImage& b) { return a.binding < b.binding; });
     iface.inputs = reflect_variables(compiler, resources.stage_inputs);
     iface.outputs = reflect_variables(compiler, resources.stage_outputs);
+    for (const spirv_cross::BuiltInResource& builtin : resources.builtin_outputs) {
+      iface.builtin_outputs.push_back(builtin_name(builtin.builtin));
+    }
+    detail::reflect_images(compiler, resources, iface);
     return iface;
   } catch (const spirv_cross::CompilerError& error) {
     return make_error(Error::Kind::compile, "reflection", error.what());

@@ -2,7 +2,7 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 
 #include "glsl/glslang_setup.hpp"
-#include "glsl/name_disk_constants.hpp"
+#include "glsl/spirv_annotations.hpp"
 #include "stages/stages.hpp"
 
 namespace penumbra {
@@ -16,8 +16,6 @@ Status CompileStage::process(ShaderJob& job) const {
   const int length = static_cast<int>(job.preprocessed.size());
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure_environment(shader, job.stage);
-  // Recorded in the module as OpModuleProcessed: names the variant in the binary.
-  shader.addProcesses({"penumbra " + job.describe()});
 
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
@@ -41,6 +39,7 @@ Status CompileStage::process(ShaderJob& job) const {
                       "SPIR-V generation failed:\n" + logger.getAllMessages());
   }
   if (job.variant) name_disk_constants(job.spirv, *job.variant);
+  add_banner_string(job.spirv, job.banner());
   return {};
 }
 

@@ -1,6 +1,8 @@
 #include "targets/dx9_constants.hpp"
 
+#include <algorithm>
 #include <regex>
+#include <string>
 
 namespace penumbra {
 
@@ -13,6 +15,7 @@ Result<std::string> dx9_constants_as_registers(const std::string& hlsl) {
   const std::string block_name = match[1];
   std::string replacement = "// " + block_name + " as Direct3D 9 constant registers\n";
   const std::string body = match[2];
+  int next_register = 0;
   std::size_t start = 0;
   while (start < body.size()) {
     std::size_t end = body.find('\n', start);
@@ -28,8 +31,16 @@ Result<std::string> dx9_constants_as_registers(const std::string& hlsl) {
                             "float4 registers");
     }
     replacement += "uniform float4 " + m[2].str() + " : register(c" + m[3].str() + ");\n";
+    next_register = std::max(next_register, std::stoi(m[3].str()) + 1);
   }
   std::string out = match.prefix().str() + replacement + match.suffix().str();
+  // SPIRV-Cross declares its half-pixel constant without a register. FXC
+  // would pick a free one, but other HLSL compilers (glslang) pack it at c0,
+  // on top of the block: give it the first register after the block.
+  static const std::regex half_pixel(R"(uniform float4 gl_HalfPixel;)");
+  out = std::regex_replace(
+      out, half_pixel,
+      "uniform float4 gl_HalfPixel : register(c" + std::to_string(next_register) + ");");
   if (std::regex_search(out, block)) {
     return make_error(Error::Kind::compile, "hlsl_dx9 constants",
                       "more than one uniform block; Direct3D 9 has one constant register file");

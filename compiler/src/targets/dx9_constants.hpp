@@ -3,6 +3,7 @@
 // register. This rewrites each float4 member at `packoffset(cN)` into
 // `uniform float4 name : register(cN);` — the same register, the same
 // meaning. Every ShadowParams member is a float4, so nothing is repacked.
+// SPIRV-Cross's `gl_HalfPixel` (vertex shaders) gets the next free register.
 #pragma once
 
 #include <string>

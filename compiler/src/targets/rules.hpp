@@ -1,11 +1,26 @@
-// Target rules: constructs a target cannot express, checked on the SPIR-V
-// before emitting so the message names variant, target and construct.
+// Target rules: constructs and limits a target cannot express, checked on the
+// SPIR-V compiled for that target before emitting, so that the message names
+// the variant, the target and the construct (docs/targets.md lists them).
 #pragma once
 
 #include "penumbra/compiler/stage.hpp"
+#include "targets/spirv_module.hpp"
 
 namespace penumbra {
 
-Status check_target_rules(const ShaderJob& job);
+// Checks job.spirv against the rules of job.target. For an hlsl_dx9
+// fragment shader it also records the ps_3_0 slot estimate in
+// job.estimated_slots, and a warning in job.diagnostics when the estimate is
+// over the 512 slots every ps_3_0 device runs.
+Status check_target_rules(ShaderJob& job);
+
+// hlsl_dx9 (dx9_rules.cpp): no comparison samplers, tex2Dproj, size queries,
+// texel fetches or integer bit operations; sampler and constant registers
+// within Shader Model 3.0's limits.
+Status check_dx9_rules(ShaderJob& job, const SpirvModule& module);
+
+// hlsl_dx10 (dx10_rules.cpp): no gradients inside loops; SampleLevel and
+// SampleCmpLevelZero are the only sampling.
+Status check_dx10_rules(const ShaderJob& job, const SpirvModule& module);
 
 }  // namespace penumbra

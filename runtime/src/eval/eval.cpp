@@ -50,12 +50,7 @@ Status check_eval_inputs(const EvalInputs& inputs) {
 Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& variant,
                                   Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  if (target != Target::spirv) {
-    return make_error(Error::Kind::bad_input, "--target " + std::string(to_string(target)),
-                      "running this target's text on the device is not implemented yet; "
-                      "allowed: spirv (or --reference)");
-  }
-  auto program = load_program(library, variant, PassKind::query, target);
+  auto program = load_executable(library, variant, PassKind::query, target);
   if (!program) return program.error();
 
   const float depth_scale = depth_scale_for(max_depth(inputs));
@@ -67,7 +62,7 @@ Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& 
                                           {inputs.shadow_map.width, inputs.shadow_map.height,
                                            inputs.receivers.width, inputs.receivers.height},
                                           depth_scale);
-  return engine.run_query(*program, **map, inputs.receivers, params);
+  return engine.run_query(program->program, **map, inputs.receivers, params);
 }
 
 Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs) {

@@ -19,10 +19,11 @@ bool interior(const FloatImage& ray_cast, int i, int j) {
   return true;
 }
 
-DepthCheck check_depth(const reference::Scene& scene, const FloatImage& gpu) {
+DepthCheck check_depth(const reference::Scene& scene, Target target, const FloatImage& gpu) {
   const FloatImage expected = reference::ray_cast_depth(scene, gpu.width, gpu.height, scene.far_z);
   DepthCheck check;
   check.scene = scene.name;
+  check.target = target;
   for (int j = 0; j < gpu.height; ++j) {
     for (int i = 0; i < gpu.width; ++i) {
       if (!interior(expected, i, j)) continue;
@@ -39,7 +40,7 @@ DepthCheck check_depth(const reference::Scene& scene, const FloatImage& gpu) {
 
 }  // namespace
 
-Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth,
+Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
                                    const reference::Scene& scene) {
   SceneFixture fixture;
   fixture.scene = scene;
@@ -55,10 +56,11 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth,
   fixture.map = *map;
   auto normalized = engine.read_shadow_map(**map);
   if (!normalized) return normalized.error();
+  fixture.normalized_depth = *normalized;
   fixture.linear_depth = std::move(*normalized);
   for (float& d : fixture.linear_depth.data) d /= depth_scale;  // exact: a power of two
   fixture.receivers = reference::receivers(scene, scene.receivers_width, scene.receivers_height);
-  fixture.depth_check = check_depth(scene, fixture.linear_depth);
+  fixture.depth_check = check_depth(scene, target, fixture.linear_depth);
   return fixture;
 }
 

@@ -1,5 +1,6 @@
-// A test scene made ready on the device: its shadow map rendered by the
-// library's own depth pass, read back as linear z for the reference.
+// A test scene made ready on the device for one target: its shadow map
+// rendered by that target's own depth pass, read back as linear z for the
+// reference.
 #pragma once
 
 #include "penumbra/reference/scene.hpp"
@@ -13,12 +14,13 @@ struct SceneFixture {
   reference::Scene scene;
   ParamBlock params;
   std::shared_ptr<ShadowMap> map;
-  FloatImage linear_depth;  // the rendered map, linear z
-  FloatImage receivers;     // (u, v, z_r)
+  FloatImage normalized_depth;  // the rendered map as stored
+  FloatImage linear_depth;      // the same, linear z
+  FloatImage receivers;         // (u, v, z_r)
   DepthCheck depth_check;
 };
 
-Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth,
+Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
                                    const reference::Scene& scene);
 
 }  // namespace penumbra

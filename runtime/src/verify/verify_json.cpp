@@ -6,16 +6,25 @@ namespace {
 
 nlohmann::json depth_json(const DepthCheck& c) {
   return {{"scene", c.scene},
+          {"target", to_string(c.target)},
           {"texels_checked", c.texels},
           {"mismatched", c.mismatched},
           {"max_abs_error", c.max_abs_error},
           {"pass", c.pass}};
 }
 
-nlohmann::json target_json(const TargetRun& run) {
-  nlohmann::json out = {{"executed", run.executed}, {"how", run.how}};
-  if (!run.executed) return out;
-  out["pass"] = run.pass;
+nlohmann::json run_json(const TargetRun& run) {
+  nlohmann::json out = {
+      {"target", to_string(run.target)}, {"backend", run.backend}, {"executed", run.executed}};
+  if (!run.executed) {
+    out["not_executed"] = run.not_executed;
+    return out;
+  }
+  out["device"] = run.device;
+  out["front_end"] = run.execution.front_end;
+  out["shims"] = run.execution.shims;
+  out["pass"] = run.pass && run.error.empty();
+  if (!run.error.empty()) out["error"] = run.error;
   nlohmann::json scenes = nlohmann::json::array();
   for (const SceneRun& s : run.scenes) {
     nlohmann::json entry = s.comparison;
@@ -40,6 +49,7 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
                          {{"name", report.device.name},
                           {"driver", report.device.driver},
                           {"sub_texel_precision_bits", report.device.sub_texel_precision_bits}}},
+                        {"gl_device", report.gl_device},
                         {"tolerances", tolerances},
                         {"max_ambiguous_fraction", reference::kMaxAmbiguousFraction},
                         {"pass", report.pass()},
@@ -50,12 +60,9 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
   out["depth_pass"] = depth;
   nlohmann::json variants = nlohmann::json::array();
   for (const VariantRun& v : report.variants) {
-    nlohmann::json targets = nlohmann::json::object();
-    for (const TargetRun& run : v.targets) {
-      targets[std::string(to_string(run.target))] = target_json(run);
-    }
-    variants.push_back(
-        {{"name", v.name}, {"technique", to_string(v.technique)}, {"targets", targets}});
+    nlohmann::json runs = nlohmann::json::array();
+    for (const TargetRun& run : v.runs) runs.push_back(run_json(run));
+    variants.push_back({{"name", v.name}, {"technique", to_string(v.technique)}, {"runs", runs}});
   }
   out["variants"] = variants;
   return out;

@@ -1,54 +1,55 @@
 #include <algorithm>
+#include <map>
 
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/runtime/verify.hpp"
+#include "verify/gl_backend.hpp"
 #include "verify/scene_fixture.hpp"
 
 namespace penumbra {
 namespace {
 
-// How each target is executed. Only SPIR-V runs for now; the text targets
-// are validated at build time and report why they were not executed.
-bool executable(Target target) {
-  return target == Target::spirv;
-}
+// A target's scenes, each rendered by that target's own depth pass.
+struct TargetFixtures {
+  Execution depth_execution;
+  std::vector<SceneFixture> scenes;
+};
 
-std::string not_executed_reason(Target target) {
-  return "not executed: running " + std::string(to_string(target)) +
-         " text on the device is not implemented yet; validated at build time";
-}
+struct Context {
+  const Library& library;
+  Engine& engine;
+  reference::SamplingPrecision precision;
+  std::map<Target, TargetFixtures> fixtures;
+  std::unique_ptr<GlBackend> gl;
+  std::string gl_missing;  // why there is no GL path
+};
 
-Result<SceneRun> run_scene(Engine& engine, const PassProgram& query, const Variant& variant,
-                           const SceneFixture& fixture,
-                           const reference::SamplingPrecision& precision) {
-  auto gpu = engine.run_query(query, *fixture.map, fixture.receivers, fixture.params);
-  if (!gpu) return gpu.error();
+Result<SceneRun> check_scene(const Context& ctx, const FloatImage& gpu, const Variant& variant,
+                             const SceneFixture& fixture) {
   auto expected = reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
-                                            fixture.receivers, precision);
+                                            fixture.receivers, ctx.precision);
   if (!expected) return expected.error();
-  auto comparison = reference::compare(*gpu, expected->visibility, expected->ambiguous,
-                                       reference::tolerance(variant.technique, precision));
+  auto comparison = reference::compare(gpu, expected->visibility, expected->ambiguous,
+                                       reference::tolerance(variant.technique, ctx.precision));
   if (!comparison) return comparison.error();
   return SceneRun{fixture.scene.name, *comparison};
 }
 
-Result<TargetRun> run_target(Engine& engine, const Library& library, const LibraryVariant& entry,
-                             Target target, const std::vector<SceneFixture>& fixtures,
-                             const reference::SamplingPrecision& precision) {
+Result<TargetRun> run_vulkan(Context& ctx, const LibraryVariant& entry, Target target) {
   TargetRun run;
   run.target = target;
-  if (!executable(target)) {
-    run.how = not_executed_reason(target);
-    return run;
-  }
-  auto query = load_program(library, entry, PassKind::query, target);
+  run.device = ctx.engine.device_info().name;
+  auto query = load_executable(ctx.library, entry, PassKind::query, target);
   if (!query) return query.error();
+  run.execution = query->execution;
   run.executed = true;
-  run.how = "SPIR-V as built, on " + engine.device_info().name;
   run.pass = true;
-  for (const SceneFixture& fixture : fixtures) {
-    auto scene = run_scene(engine, *query, entry.variant, fixture, precision);
+  for (const SceneFixture& fixture : ctx.fixtures.at(target).scenes) {
+    auto gpu =
+        ctx.engine.run_query(query->program, *fixture.map, fixture.receivers, fixture.params);
+    if (!gpu) return gpu.error();
+    auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
     if (!scene) return scene.error();
     run.pass = run.pass && scene->comparison.pass;
     run.scenes.push_back(std::move(*scene));
@@ -56,9 +57,79 @@ Result<TargetRun> run_target(Engine& engine, const Library& library, const Libra
   return run;
 }
 
-bool selected(const VerifyOptions& options, const std::string& name) {
-  return options.variants.empty() || std::find(options.variants.begin(), options.variants.end(),
-                                               name) != options.variants.end();
+// The same text through the OpenGL driver, on the map the target's own depth
+// pass rendered.
+Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target target) {
+  TargetRun run;
+  run.target = target;
+  run.backend = "gl";
+  if (!ctx.gl) {
+    run.not_executed = ctx.gl_missing;
+    return run;
+  }
+  run.device = ctx.gl->device();
+  run.execution.front_end = "the OpenGL driver's GLSL compiler";
+  auto vert = read_pass_file(ctx.library, entry, PassKind::query, target, ShaderStage::vertex);
+  if (!vert) return vert.error();
+  auto frag = read_pass_file(ctx.library, entry, PassKind::query, target, ShaderStage::fragment);
+  if (!frag) return frag.error();
+  run.executed = true;
+  run.pass = true;
+  for (const SceneFixture& fixture : ctx.fixtures.at(target).scenes) {
+    auto gpu = ctx.gl->run_query(*vert, *frag, fixture.normalized_depth, fixture.receivers,
+                                 fixture.params);
+    if (!gpu) return gpu.error();
+    auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
+    if (!scene) return scene.error();
+    run.pass = run.pass && scene->comparison.pass;
+    run.scenes.push_back(std::move(*scene));
+  }
+  return run;
+}
+
+// Renders every scene with `target`'s depth pass (shared by all variants).
+Status prepare_target(Context& ctx, Target target, VerifyReport& report) {
+  auto depth = load_executable(ctx.library, ctx.library.variants.front(), PassKind::depth, target);
+  if (!depth) return depth.error();
+  TargetFixtures fixtures{depth->execution, {}};
+  for (const reference::Scene& scene : reference::builtin_scenes()) {
+    auto fixture = prepare_scene(ctx.engine, depth->program, target, scene);
+    if (!fixture) return fixture.error();
+    report.depth_checks.push_back(fixture->depth_check);
+    fixtures.scenes.push_back(std::move(*fixture));
+  }
+  ctx.fixtures.emplace(target, std::move(fixtures));
+  return {};
+}
+
+bool wanted(const std::vector<std::string>& names, const std::string& name) {
+  return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool wanted(const std::vector<Target>& targets, Target target) {
+  return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
+}
+
+// A run that could not compile or execute its shaders is a failed check of
+// that variant and target, not a reason to stop verifying the others.
+TargetRun failed_run(Target target, std::string backend, const Error& error) {
+  TargetRun run;
+  run.target = target;
+  run.backend = std::move(backend);
+  run.executed = true;
+  run.error = error.to_string();
+  return run;
+}
+
+void count(VerifyReport& report, const TargetRun& run) {
+  if (!run.executed) return;
+  if (!run.error.empty()) {
+    ++report.runs;
+    ++report.failed;
+    return;
+  }
+  report.runs += run.scenes.size();
+  for (const SceneRun& s : run.scenes) report.failed += s.comparison.pass ? 0 : 1;
 }
 
 }  // namespace
@@ -83,33 +154,33 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   }
   VerifyReport report;
   report.device = engine.device_info();
-  const reference::SamplingPrecision precision{
-      static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
-
-  // The depth pass is shared by every variant: render each scene once.
-  auto depth = load_program(library, library.variants.front(), PassKind::depth, Target::spirv);
-  if (!depth) return depth.error();
-  std::vector<SceneFixture> fixtures;
-  for (const reference::Scene& scene : reference::builtin_scenes()) {
-    auto fixture = prepare_scene(engine, *depth, scene);
-    if (!fixture) return fixture.error();
-    report.depth_checks.push_back(fixture->depth_check);
-    fixtures.push_back(std::move(*fixture));
+  Context ctx{
+      library, engine,  {static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))},
+      {},      nullptr, {}};
+  if (options.gl) {
+    ctx.gl = GlBackend::create(ctx.gl_missing);
+    if (ctx.gl) report.gl_device = ctx.gl->device();
+  } else {
+    ctx.gl_missing = "not requested (--no-gl)";
   }
 
   for (const LibraryVariant& entry : library.variants) {
-    if (!selected(options, entry.variant.name)) continue;
+    if (!wanted(options.variants, entry.variant.name)) continue;
     VariantRun variant_run;
     variant_run.name = entry.variant.name;
     variant_run.technique = entry.variant.technique;
     for (Target target : entry.variant.targets) {
-      auto run = run_target(engine, library, entry, target, fixtures, precision);
-      if (!run) return run.error();
-      if (run->executed) {
-        report.runs += run->scenes.size();
-        for (const SceneRun& s : run->scenes) report.failed += s.comparison.pass ? 0 : 1;
+      if (!wanted(options.targets, target)) continue;
+      if (!ctx.fixtures.contains(target)) PENUMBRA_TRY(prepare_target(ctx, target, report));
+      auto run = run_vulkan(ctx, entry, target);
+      variant_run.runs.push_back(run ? std::move(*run) : failed_run(target, "vulkan", run.error()));
+      count(report, variant_run.runs.back());
+      if (target == Target::glsl330 || target == Target::glsl450) {
+        auto gl_run = run_gl(ctx, entry, target);
+        variant_run.runs.push_back(gl_run ? std::move(*gl_run)
+                                          : failed_run(target, "gl", gl_run.error()));
+        count(report, variant_run.runs.back());
       }
-      variant_run.targets.push_back(std::move(*run));
     }
     diagnostics({Severity::note, entry.variant.name, "verified"});
     report.variants.push_back(std::move(variant_run));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,28 @@ std::optional<std::uint32_t> graphics_family(VkPhysicalDevice physical) {
     if (families[i].queueCount > 0 && (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) return i;
   }
   return std::nullopt;
+}
+
+bool has_extension(VkPhysicalDevice physical, const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(), [name](const VkExtensionProperties& e) {
+    return std::string_view(e.extensionName) == name;
+  });
+}
+
+// GL clip space (z in [-w, w]) for GLSL text fixed up for OpenGL; optional.
+bool supports_depth_clip_control(VkPhysicalDevice physical) {
+  if (!has_extension(physical, VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME)) return false;
+  VkPhysicalDeviceDepthClipControlFeaturesEXT clip{};
+  clip.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT;
+  VkPhysicalDeviceFeatures2 features{};
+  features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  features.pNext = &clip;
+  vkGetPhysicalDeviceFeatures2(physical, &features);
+  return clip.depthClipControl == VK_TRUE;
 }
 
 }  // namespace
@@ -49,6 +72,17 @@ Result<std::shared_ptr<const Device>> Device::create(std::shared_ptr<const Insta
   info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue_info;
+  VkPhysicalDeviceDepthClipControlFeaturesEXT clip{};
+  clip.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT;
+  clip.depthClipControl = VK_TRUE;
+  const char* clip_extension = VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME;
+  if (device->properties_.apiVersion >= VK_API_VERSION_1_1 &&
+      supports_depth_clip_control(physical)) {
+    device->depth_clip_control_ = true;
+    info.pNext = &clip;
+    info.enabledExtensionCount = 1;
+    info.ppEnabledExtensionNames = &clip_extension;
+  }
   PENUMBRA_TRY(check(vkCreateDevice(physical, &info, nullptr, &device->device_), "vkCreateDevice",
                      std::string("opening ") + device->properties_.deviceName));
   vkGetDeviceQueue(device->device_, *family, 0, &device->queue_);

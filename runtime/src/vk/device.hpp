@@ -28,6 +28,8 @@ class Device {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   // The version the runtime may use: the device's, capped by the instance's.
   std::uint32_t api_version() const;
+  // VK_EXT_depth_clip_control is enabled: pipelines may clip z in [-w, w].
+  bool depth_clip_control() const { return depth_clip_control_; }
   const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
 
  private:
@@ -39,6 +41,7 @@ class Device {
   VkQueue queue_ = VK_NULL_HANDLE;
   std::uint32_t queue_family_ = 0;
   VkPhysicalDeviceProperties properties_{};
+  bool depth_clip_control_ = false;
   VkPhysicalDeviceMemoryProperties memory_{};
 };
 

@@ -41,6 +41,10 @@ Result<GraphicsPipeline> create_graphics_pipeline(VkDevice device,
   viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
   viewport.viewportCount = 1;
   viewport.scissorCount = 1;
+  VkPipelineViewportDepthClipControlCreateInfoEXT clip{};
+  clip.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_DEPTH_CLIP_CONTROL_CREATE_INFO_EXT;
+  clip.negativeOneToOne = VK_TRUE;
+  if (desc.gl_clip_depth) viewport.pNext = &clip;
 
   // No culling: casters are drawn whichever way their triangles wind.
   VkPipelineRasterizationStateCreateInfo raster{};

@@ -27,6 +27,8 @@ struct GraphicsPipelineDesc {
   std::uint32_t position_stride = 0;
   // Depth test LESS with writes; needs a render pass with a depth attachment.
   bool depth_test = false;
+  // OpenGL's clip volume, z in [-w, w] (VK_EXT_depth_clip_control enabled).
+  bool gl_clip_depth = false;
 };
 
 Result<GraphicsPipeline> create_graphics_pipeline(VkDevice device,

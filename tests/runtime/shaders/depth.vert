@@ -1,6 +1,7 @@
 #version 450
 // Depth pass: light-view position to clip space, the contract's projection
 // u = 0.5 + (x n / z) / Fw, with clip z spanning [n, 1/depth_scale].
+// FLIP_Y negates clip y at the end, as Direct3D shaders do.
 #extension GL_GOOGLE_include_directive : require
 #include "params.glsl"
 
@@ -13,4 +14,7 @@ void main() {
   float xy_scale = 2.0 * n / params.light.y;
   gl_Position = vec4(position.xy * xy_scale, (position.z - n) * f / (f - n), position.z);
   light_z = position.z;
+#ifdef FLIP_Y
+  gl_Position.y = -gl_Position.y;
+#endif
 }

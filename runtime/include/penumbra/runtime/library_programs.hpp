@@ -8,9 +8,26 @@
 
 namespace penumbra {
 
-// Reads the pass's .spv files for `target` and reflects them.
-Result<PassProgram> load_program(const Library& library, const LibraryVariant& variant,
-                                 PassKind pass, Target target);
+// How a target's files reached the device: recorded in verify.json.
+struct Execution {
+  std::string front_end;           // "SPIR-V as built", or the front end that compiled the text
+  std::vector<std::string> shims;  // text rewrites the front end needed (docs/frontends.md)
+};
+
+struct ExecutableProgram {
+  PassProgram program;
+  Execution execution;
+};
+
+// The pass of `variant` for `target`, ready to run: the built .spv for
+// spirv; for every other target its emitted text compiled by glslang's GLSL
+// or HLSL front end. Reflected either way, so the engine binds by name.
+Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
+                                          PassKind pass, Target target);
+
+// The emitted text (or .spv bytes) of one stage of a pass.
+Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
+                                   PassKind pass, Target target, ShaderStage stage);
 
 // The power of two 2^-k with 2^k >= max_z, so normalized depth z * scale lies
 // in [0, 1] and scaling is exact (docs/shader-interface.md).

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
@@ -20,14 +21,29 @@ struct StageCode {
 };
 
 // A vertex + fragment pair: the depth pass, a query pass, or any other pass.
+// The SPIR-V may come from Penumbra's shaderlib or from any target's emitted
+// text compiled by glslang (docs/runtime.md).
 struct PassProgram {
   StageCode vert;
   StageCode frag;
+  bool d3d_viewport = false;   // the vertex stage flips y for Direct3D: the runtime flips the
+  bool gl_clip_depth = false;  // the vertex stage writes OpenGL clip z in [-w, w]: the runtime
+                               // clips there too (VK_EXT_depth_clip_control)
+                               // viewport (negative height, Vulkan 1.1 / VK_KHR_maintenance1)
+                               // so row 0 stays first
 };
 
 // ShadowParams member name -> its vec4 value, e.g. "light" -> {L, Fw, n, L/Fw}.
-// Every member the program's block declares must be present; extra entries
-// are ignored, so one ParamBlock can serve every pass.
+// Every member the program's blocks declare must be present (under its
+// param_block_key); extra entries are ignored, so one ParamBlock can serve
+// every pass and every target.
 using ParamBlock = std::map<std::string, std::array<float, 4>>;
+
+// The ParamBlock key a uniform block member reads: the member's name without
+// a leading "params." (a struct member of GLSL's global block, e.g.
+// "params.light") or "params_" (SPIRV-Cross's HLSL flattening, e.g.
+// "params_light"), where `params` is ShadowParams' instance name; any other
+// name is its own key ("light", "gl_HalfPixel").
+std::string_view param_block_key(std::string_view member_name);
 
 }  // namespace penumbra

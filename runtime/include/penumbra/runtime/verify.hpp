@@ -1,5 +1,6 @@
-// `penumbra verify`: every variant of a built library, run on a Vulkan device
-// over the project's test scenes and checked against the CPU reference.
+// `penumbra verify`: every variant of a built library, each target's own
+// shaders executed on a device over the project's test scenes and checked
+// against the CPU reference.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -7,36 +8,45 @@
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/runtime/engine.hpp"
+#include "penumbra/runtime/library_programs.hpp"
 
 namespace penumbra {
 
 struct VerifyOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
+  std::vector<Target> targets;        // only these; empty = all the library has
+  bool gl = true;  // also run glsl330/glsl450 through the OpenGL driver when built with GL
 };
 
-// One variant on one scene for one target.
+// One variant on one scene.
 struct SceneRun {
   std::string scene;
   reference::Comparison comparison;
 };
 
+// One variant, one target, one backend ("vulkan" or "gl").
 struct TargetRun {
   Target target = Target::spirv;
+  std::string backend = "vulkan";
+  std::string device;   // the device or driver that ran it
+  Execution execution;  // front end and shims
   bool executed = false;
-  std::string how;    // how the target was executed, or why it was not
-  bool pass = false;  // executed and every scene passed
+  std::string not_executed;  // why, when not executed
+  std::string error;         // why it failed before any comparison (front end, device)
+  bool pass = false;         // executed and every scene passed
   std::vector<SceneRun> scenes;
 };
 
 struct VariantRun {
   std::string name;
   Technique technique = Technique::hard;
-  std::vector<TargetRun> targets;
+  std::vector<TargetRun> runs;
 };
 
-// The depth pass checked against a CPU ray cast of the scene.
+// A target's depth pass checked against a CPU ray cast of the scene.
 struct DepthCheck {
   std::string scene;
+  Target target = Target::spirv;
   std::size_t texels = 0;      // texels away from occluder edges
   std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
   double max_abs_error = 0.0;
@@ -45,9 +55,10 @@ struct DepthCheck {
 
 struct VerifyReport {
   DeviceInfo device;
+  std::string gl_device;  // empty when the GL path did not run
   std::vector<DepthCheck> depth_checks;
   std::vector<VariantRun> variants;
-  std::size_t runs = 0;    // executed (variant, target, scene) runs
+  std::size_t runs = 0;    // executed (variant, target, backend, scene) runs
   std::size_t failed = 0;  // of those, failed
   bool pass() const;
 };

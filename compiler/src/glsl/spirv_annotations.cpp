@@ -1,4 +1,4 @@
-#include "glsl/name_disk_constants.hpp"
+#include "glsl/spirv_annotations.hpp"
 
 #include <bit>
 #include <map>
@@ -27,15 +27,18 @@ std::vector<Instruction> instructions(const std::vector<std::uint32_t>& words) {
   return out;
 }
 
-std::vector<std::uint32_t> op_name(std::uint32_t id, const std::string& name) {
-  std::vector<std::uint32_t> literal((name.size() + 4) / 4, 0);  // NUL-terminated, padded
-  for (std::size_t c = 0; c < name.size(); ++c) {
-    literal[c / 4] |= static_cast<std::uint32_t>(static_cast<unsigned char>(name[c]))
+// An instruction with `operands` followed by a literal string.
+std::vector<std::uint32_t> with_string(spv::Op op, std::vector<std::uint32_t> operands,
+                                       const std::string& text) {
+  std::vector<std::uint32_t> literal((text.size() + 4) / 4, 0);  // NUL-terminated, padded
+  for (std::size_t c = 0; c < text.size(); ++c) {
+    literal[c / 4] |= static_cast<std::uint32_t>(static_cast<unsigned char>(text[c]))
                       << (8 * (c % 4));
   }
-  std::vector<std::uint32_t> out = {0, id};
+  std::vector<std::uint32_t> out = {0};
+  out.insert(out.end(), operands.begin(), operands.end());
   out.insert(out.end(), literal.begin(), literal.end());
-  out[0] = (static_cast<std::uint32_t>(out.size()) << spv::WordCountShift) | spv::OpName;
+  out[0] = (static_cast<std::uint32_t>(out.size()) << spv::WordCountShift) | op;
   return out;
 }
 
@@ -93,10 +96,33 @@ void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& varia
   if (insert_at == 0) return;  // a module without debug names: leave it as is
   std::vector<std::uint32_t> added;
   for (const auto& [id, name] : names) {
-    const auto instruction = op_name(id, name);
+    const auto instruction = with_string(spv::OpName, {id}, name);
     added.insert(added.end(), instruction.begin(), instruction.end());
   }
   spirv.insert(spirv.begin() + static_cast<std::ptrdiff_t>(insert_at), added.begin(), added.end());
+}
+
+void add_banner_string(std::vector<std::uint32_t>& spirv, const std::string& text) {
+  // The debug section starts with OpString / OpSource*, then OpName.
+  for (const Instruction& in : instructions(spirv)) {
+    switch (in.op) {
+      case spv::OpString:
+      case spv::OpSourceContinued:
+      case spv::OpSource:
+      case spv::OpSourceExtension:
+      case spv::OpName:
+      case spv::OpMemberName: {
+        const std::uint32_t id = spirv[3];  // header word 3, the bound: the next free id
+        const auto instruction = with_string(spv::OpString, {id}, text);
+        spirv[3] = id + 1;
+        spirv.insert(spirv.begin() + static_cast<std::ptrdiff_t>(in.offset), instruction.begin(),
+                     instruction.end());
+        return;
+      }
+      default:
+        break;
+    }
+  }
 }
 
 }  // namespace penumbra

@@ -1,0 +1,28 @@
+// How each text target is handed to glslang: the source language, the parse
+// messages and the TShader options that map its bindings and locations for
+// Vulkan. One function per front end; the options are listed per target in
+// docs/frontends.md.
+#pragma once
+
+#include <glslang/Public/ShaderLang.h>
+
+#include <string_view>
+
+#include "penumbra/compiler/model.hpp"
+#include "penumbra/compiler/reflection.hpp"
+
+namespace penumbra {
+
+struct FrontEndSetup {
+  std::string_view description;  // FrontEndResult::front_end
+  EShMessages messages = EShMsgDefault;
+  bool legalize = false;  // run glslang's HLSL legalization (spirv-opt) after translation
+};
+
+// glsl450, glsl330 and essl300.
+FrontEndSetup configure_glsl_front_end(Target target, ShaderStage stage, glslang::TShader& shader);
+
+// hlsl_dx10 and hlsl_dx9.
+FrontEndSetup configure_hlsl_front_end(Target target, ShaderStage stage, glslang::TShader& shader);
+
+}  // namespace penumbra

@@ -1,0 +1,26 @@
+// Debug annotations glslang cannot produce for Penumbra's SPIR-V 1.0: names
+// for the Poisson-disk constants, and a string naming the variant.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "penumbra/compiler/model.hpp"
+
+namespace penumbra {
+
+// Adds `OpName %id "BLOCKER_DISK"` / `"PCF_DISK"` (or `"POISSON_DISK"` when
+// one constant serves both) for constant arrays whose values are exactly the
+// variant's disks. Leaves other constants alone.
+// glslang emits no OpName for constants, so SPIRV-Cross would print
+// BLOCKER_DISK as `_186`; with the name, every target's text reads like the
+// source.
+void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& variant);
+
+// Adds `OpString "<text>"` at the head of the debug section: the binary's
+// equivalent of the banner comment of text targets (OpModuleProcessed would
+// need SPIR-V 1.1). Consumers ignore it; spirv-dis shows it.
+void add_banner_string(std::vector<std::uint32_t>& spirv, const std::string& text);
+
+}  // namespace penumbra

@@ -1,0 +1,64 @@
+#include "penumbra/gl/engine.hpp"
+
+#include <utility>
+
+#include "context_info.hpp"
+#include "device_selection.hpp"
+#include "query_pass.hpp"
+
+namespace penumbra {
+
+namespace gl {
+
+// What an engine owns: the context (and through it the display) and the
+// objects every call reuses, which destroying the context frees.
+struct Context {
+  EglContext egl;
+  SamplerObjects samplers;
+  GlInfo info;
+};
+
+}  // namespace gl
+
+Result<std::unique_ptr<GlEngine>> GlEngine::create(const GlEngineOptions& options,
+                                                   DiagnosticConsumer diagnostics) {
+  auto opened = gl::open_context(options.device);
+  if (!opened) return opened.error();
+  GlInfo info;
+  gl::SamplerObjects samplers;
+  {
+    auto current = opened->context.make_current();
+    if (!current) return current.error();
+    info = gl::current_context_info();
+    auto created = gl::create_sampler_objects();
+    if (!created) return created.error();
+    samplers = *created;
+  }
+  if (diagnostics) {
+    diagnostics(
+        {Severity::note, "OpenGL", info.renderer + ", " + info.version + " on " + opened->display});
+  }
+  auto context = std::make_unique<gl::Context>(
+      gl::Context{std::move(opened->context), samplers, std::move(info)});
+  return std::unique_ptr<GlEngine>(new GlEngine(std::move(context)));
+}
+
+GlEngine::GlEngine(std::unique_ptr<gl::Context> context) : context_(std::move(context)) {}
+
+GlEngine::~GlEngine() = default;
+
+const GlInfo& GlEngine::info() const {
+  return context_->info;
+}
+
+Result<FloatImage> GlEngine::run_query(std::string_view vertex_text, std::string_view fragment_text,
+                                       const FloatImage& normalized_depth,
+                                       const FloatImage& receivers,
+                                       const std::map<std::string, std::array<float, 4>>& params) {
+  auto current = context_->egl.make_current();
+  if (!current) return current.error();
+  return gl::run_query_pass(context_->samplers,
+                            {vertex_text, fragment_text, normalized_depth, receivers, params});
+}
+
+}  // namespace penumbra

@@ -1,0 +1,33 @@
+// The texts the library emits, in memory: every default variant's passes
+// compiled for a target (compile_pass), as test inputs.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/model.hpp"
+
+namespace penumbra::testing {
+
+inline constexpr std::array kTextTargets = {Target::glsl450, Target::glsl330, Target::essl300,
+                                            Target::hlsl_dx10, Target::hlsl_dx9};
+
+// The variants of permutations/default.json; empty if it cannot be loaded.
+const std::vector<Variant>& default_variants();
+std::vector<std::string> default_variant_names();  // test parameters
+const Variant* find_default_variant(const std::string& name);
+
+struct EmittedStage {
+  PassKind pass = PassKind::query;
+  ShaderStage stage = ShaderStage::vertex;
+  std::string name;        // "pcf_grid_k3/glsl330/query.frag", for messages
+  CompiledStage compiled;  // text, the target's SPIR-V and its reflection
+};
+
+// Depth and query pass, vertex and fragment stage, in that order. Fails the
+// calling test (and returns fewer) when a pass does not compile.
+std::vector<EmittedStage> emitted_stages(const Variant& variant, Target target);
+
+}  // namespace penumbra::testing

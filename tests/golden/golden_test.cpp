@@ -1,0 +1,194 @@
+// Golden files: the text emitted for one representative variant of each
+// technique, and for the shared passes, for every target, compared with the
+// reference copies under tests/golden/reference/ so that any change in the
+// emitted code shows up in review. PENUMBRA_UPDATE_GOLDEN=1 rewrites the
+// references instead of comparing (docs/golden.md).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <spirv-tools/libspirv.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/manifest.hpp"
+#include "penumbra/compiler/targets.hpp"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kReference = fs::path(PENUMBRA_SOURCE_DIR) / "tests" / "golden" / "reference";
+
+constexpr const char* kHowToUpdate =
+    "If the change is intended, rewrite the references with `ninja update-golden` (or "
+    "PENUMBRA_UPDATE_GOLDEN=1 penumbra_golden_tests) and commit them with the change; see "
+    "docs/golden.md.\n";
+
+// One variant per technique, from the default manifest so that the goldens
+// follow its disks.
+constexpr const char* kRepresentatives[] = {"hard", "pcf_grid_k3", "pcf_poisson_p16_whitepaper16",
+                                            "pcss_b16_p16_whitepaper16"};
+
+bool update_mode() {
+  const char* value = std::getenv("PENUMBRA_UPDATE_GOLDEN");
+  return value && std::string(value) == "1";
+}
+
+const Variant& representative(const std::string& name) {
+  static const std::vector<Variant> variants = [] {
+    auto loaded = load_variants(fs::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
+    return loaded.ok() ? std::move(*loaded) : std::vector<Variant>{};
+  }();
+  for (const Variant& v : variants) {
+    if (v.name == name) return v;
+  }
+  throw std::runtime_error("permutations/default.json has no variant " + name);
+}
+
+// "pcss/hlsl_dx9/query.frag.hlsl"; SPIR-V is kept as disassembly (.spvasm).
+fs::path golden_path(const std::string& dir, Target target, std::string_view stem,
+                     ShaderStage stage) {
+  std::string name = output_file_name(target, stem, stage);
+  if (target == Target::spirv) name += "asm";
+  return fs::path(dir) / std::string(to_string(target)) / name;
+}
+
+std::string emitted_text(const CompiledStage& stage, Target target) {
+  if (target != Target::spirv) return stage.text;
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_0);
+  std::string text;
+  // No header: it names the generator's version, which differs between machines.
+  tools.Disassemble(stage.spirv, &text,
+                    SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES | SPV_BINARY_TO_TEXT_OPTION_INDENT |
+                        SPV_BINARY_TO_TEXT_OPTION_NO_HEADER);
+  return text;
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// `diff -u` of the reference against the emitted text.
+std::string unified_diff(const fs::path& reference, const std::string& actual,
+                         const std::string& label) {
+  std::string flat = label;
+  for (char& c : flat) c = c == '/' ? '_' : c;
+  const fs::path emitted = fs::path(::testing::TempDir()) / ("penumbra-golden-" + flat);
+  std::ofstream(emitted, std::ios::binary) << actual;
+  const std::string command = "diff -u --label " + quoted("reference/" + label) + " --label " +
+                              quoted("emitted/" + label) + " " + quoted(reference.string()) + " " +
+                              quoted(emitted.string()) + " 2>&1";
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[4096];
+    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+    pclose(pipe);
+  }
+  fs::remove(emitted);
+  return out.empty() ? "(diff produced no output; compare the files by hand)\n" : out;
+}
+
+void expect_golden(const fs::path& relative, const std::string& actual) {
+  const fs::path path = kReference / relative;
+  EXPECT_EQ(actual.find(PENUMBRA_SOURCE_DIR), std::string::npos)
+      << relative << " names the source directory, which differs between machines";
+  if (update_mode()) {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    ADD_FAILURE() << "no reference file " << path << "\n" << kHowToUpdate;
+    return;
+  }
+  std::stringstream expected;
+  expected << in.rdbuf();
+  if (expected.str() == actual) return;
+  ADD_FAILURE() << relative.generic_string() << " differs from its reference:\n"
+                << unified_diff(path, actual, relative.generic_string()) << kHowToUpdate;
+}
+
+std::string target_name(const ::testing::TestParamInfo<Target>& param_info) {
+  return std::string(to_string(param_info.param));
+}
+
+class QueryPass : public ::testing::TestWithParam<std::tuple<const char*, Target>> {};
+
+TEST_P(QueryPass, MatchesTheReference) {
+  const auto [name, target] = GetParam();
+  const Variant& variant = representative(name);
+  auto pass = compile_pass(variant, target, PassKind::query);
+  ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+  const std::string dir(to_string(variant.technique));
+  expect_golden(golden_path(dir, target, "query", ShaderStage::fragment),
+                emitted_text(pass->frag, target));
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, QueryPass,
+                         ::testing::Combine(::testing::ValuesIn(kRepresentatives),
+                                            ::testing::ValuesIn(kAllTargets)),
+                         [](const auto& param_info) {
+                           const Variant& v = representative(std::get<0>(param_info.param));
+                           return std::string(to_string(v.technique)) + "_" +
+                                  std::string(to_string(std::get<1>(param_info.param)));
+                         });
+
+// The passes every variant shares: depth (vertex and fragment) and the
+// query pass's full-screen vertex shader.
+class SharedPasses : public ::testing::TestWithParam<Target> {};
+
+TEST_P(SharedPasses, MatchTheReference) {
+  const Target target = GetParam();
+  const Variant& variant = representative(kRepresentatives[0]);
+  auto depth = compile_pass(variant, target, PassKind::depth);
+  ASSERT_TRUE(depth.ok()) << depth.error().to_string();
+  auto query = compile_pass(variant, target, PassKind::query);
+  ASSERT_TRUE(query.ok()) << query.error().to_string();
+  expect_golden(golden_path("common", target, "depth", ShaderStage::vertex),
+                emitted_text(depth->vert, target));
+  expect_golden(golden_path("common", target, "depth", ShaderStage::fragment),
+                emitted_text(depth->frag, target));
+  expect_golden(golden_path("common", target, "fullscreen", ShaderStage::vertex),
+                emitted_text(query->vert, target));
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, SharedPasses, ::testing::ValuesIn(kAllTargets), target_name);
+
+// A reference no test compares against any more (a renamed output, a
+// dropped target) would silently rot: the tree holds exactly the goldens.
+TEST(GoldenReference, HoldsOnlyCurrentGoldens) {
+  std::set<fs::path> expected;
+  for (Target target : kAllTargets) {
+    for (const char* name : kRepresentatives) {
+      const std::string dir(to_string(representative(name).technique));
+      expected.insert(golden_path(dir, target, "query", ShaderStage::fragment));
+    }
+    expected.insert(golden_path("common", target, "depth", ShaderStage::vertex));
+    expected.insert(golden_path("common", target, "depth", ShaderStage::fragment));
+    expected.insert(golden_path("common", target, "fullscreen", ShaderStage::vertex));
+  }
+  if (update_mode()) fs::create_directories(kReference);  // this test may run first
+  ASSERT_TRUE(fs::is_directory(kReference)) << "no reference tree " << kReference << "\n"
+                                            << kHowToUpdate;
+  for (const auto& entry : fs::recursive_directory_iterator(kReference)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), kReference);
+    if (expected.contains(relative)) continue;
+    if (update_mode()) {
+      fs::remove(entry.path());
+    } else {
+      ADD_FAILURE() << "stale reference file " << relative << "\n" << kHowToUpdate;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace penumbra

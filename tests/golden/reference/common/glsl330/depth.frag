@@ -1,0 +1,22 @@
+#version 330
+
+struct ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+};
+
+uniform ShadowParams params;
+
+in float light_z;
+layout(location = 0) out float depth_out;
+
+void main()
+{
+    float normalized = light_z * params.sampling.z;
+    depth_out = normalized;
+    gl_FragDepth = normalized;
+}
+

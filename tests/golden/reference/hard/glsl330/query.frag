@@ -1,0 +1,43 @@
+#version 330
+
+struct ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+};
+
+uniform ShadowParams params;
+
+uniform sampler2D shadow_depth;
+uniform sampler2D receivers;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+float shadow_compare_point(vec2 uv, float z_receiver)
+{
+    float param = z_receiver;
+    return float(shadow_reference(param) <= textureLod(shadow_depth, uv, 0.0).x);
+}
+
+float shadow_visibility(vec3 query)
+{
+    vec2 param = query.xy;
+    float param_1 = query.z;
+    return shadow_compare_point(param, param_1);
+}
+
+void main()
+{
+    vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
+    vec3 param = query;
+    visibility = vec4(shadow_visibility(param));
+}
+

@@ -1,0 +1,53 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+layout(std140) uniform ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+} params;
+
+uniform highp sampler2DShadow shadow_cmp;
+uniform highp sampler2D receivers;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+float shadow_compare_bilinear(vec2 uv, float z_receiver)
+{
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    vec3 _57 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_57.xy, _57.z), 0.0);
+}
+
+float shadow_visibility(vec3 query)
+{
+    float sum = 0.0;
+    for (int j = -1; j <= 1; j++)
+    {
+        for (int i = -1; i <= 1; i++)
+        {
+            vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
+            float param_1 = query.z;
+            sum += shadow_compare_bilinear(param, param_1);
+        }
+    }
+    return sum / 9.0;
+}
+
+void main()
+{
+    vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
+    vec3 param = query;
+    visibility = vec4(shadow_visibility(param));
+}
+

@@ -1,0 +1,69 @@
+cbuffer ShadowParams : register(b0)
+{
+    float4 params_shadow_map_size : packoffset(c0);
+    float4 params_light : packoffset(c1);
+    float4 params_sampling : packoffset(c2);
+    float4 params_screen_size : packoffset(c3);
+};
+
+Texture2D<float4> shadow_cmp : register(t2);
+SamplerComparisonState _shadow_cmp_sampler : register(s2);
+Texture2D<float4> receivers : register(t3);
+SamplerState _receivers_sampler : register(s3);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : SV_Target0;
+};
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float shadow_compare_bilinear(float2 uv, float z_receiver)
+{
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    float3 _57 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _57.xy, _57.z);
+}
+
+float shadow_visibility(float3 query)
+{
+    float sum = 0.0f;
+    for (int j = -1; j <= 1; j++)
+    {
+        for (int i = -1; i <= 1; i++)
+        {
+            float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
+            float param_1 = query.z;
+            sum += shadow_compare_bilinear(param, param_1);
+        }
+    }
+    return sum / 9.0f;
+}
+
+void frag_main()
+{
+    float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
+    float3 param = query;
+    visibility = shadow_visibility(param).xxxx;
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = visibility;
+    return stage_output;
+}

@@ -1,0 +1,74 @@
+// ShadowParams as Direct3D 9 constant registers
+uniform float4 params_shadow_map_size : register(c0);
+uniform float4 params_light : register(c1);
+uniform float4 params_sampling : register(c2);
+uniform float4 params_screen_size : register(c3);
+
+
+uniform sampler2D shadow_depth;
+uniform sampler2D receivers;
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : COLOR0;
+};
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float shadow_compare_bilinear(float2 uv, float z_receiver)
+{
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    float2 texel = (uv * params_shadow_map_size.xy) - 0.5f.xx;
+    float2 corner = floor(texel);
+    float2 weight = texel - corner;
+    float2 uv00 = (corner + 0.5f.xx) * params_shadow_map_size.zw;
+    float2 uv11 = uv00 + params_shadow_map_size.zw;
+    float lit00 = float(reference <= tex2Dlod(shadow_depth, float4(uv00, 0.0, 0.0f)).x);
+    float lit10 = float(reference <= tex2Dlod(shadow_depth, float4(float2(uv11.x, uv00.y), 0.0, 0.0f)).x);
+    float lit01 = float(reference <= tex2Dlod(shadow_depth, float4(float2(uv00.x, uv11.y), 0.0, 0.0f)).x);
+    float lit11 = float(reference <= tex2Dlod(shadow_depth, float4(uv11, 0.0, 0.0f)).x);
+    return lerp(lerp(lit00, lit10, weight.x), lerp(lit01, lit11, weight.x), weight.y);
+}
+
+float shadow_visibility(float3 query)
+{
+    float sum = 0.0f;
+    for (int j = -1; j <= 1; j++)
+    {
+        for (int i = -1; i <= 1; i++)
+        {
+            float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
+            float param_1 = query.z;
+            sum += shadow_compare_bilinear(param, param_1);
+        }
+    }
+    return sum / 9.0f;
+}
+
+void frag_main()
+{
+    float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
+    float3 param = query;
+    visibility = shadow_visibility(param).xxxx;
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = float4(visibility);
+    return stage_output;
+}

@@ -1,0 +1,73 @@
+static const float2 PCF_DISK[16] = { float2(-0.94201624393463134765625f, -0.39906215667724609375f), float2(0.94558608531951904296875f, -0.768907248973846435546875f), float2(-0.094184100627899169921875f, -0.929388701915740966796875f), float2(0.34495937824249267578125f, 0.29387760162353515625f), float2(-0.91588580608367919921875f, 0.4577143192291259765625f), float2(-0.8154423236846923828125f, -0.87912464141845703125f), float2(-0.38277542591094970703125f, 0.2767684459686279296875f), float2(0.9748439788818359375f, 0.7564837932586669921875f), float2(0.4432332515716552734375f, -0.9751155376434326171875f), float2(0.5374298095703125f, -0.473734200000762939453125f), float2(-0.2649691104888916015625f, -0.418930232524871826171875f), float2(0.79197514057159423828125f, 0.19090187549591064453125f), float2(-0.24188840389251708984375f, 0.997065067291259765625f), float2(-0.8140995502471923828125f, 0.91437590122222900390625f), float2(0.1998412609100341796875f, 0.786413669586181640625f), float2(0.14383161067962646484375f, -0.141007900238037109375f) };
+
+// ShadowParams as Direct3D 9 constant registers
+uniform float4 params_shadow_map_size : register(c0);
+uniform float4 params_light : register(c1);
+uniform float4 params_sampling : register(c2);
+uniform float4 params_screen_size : register(c3);
+
+
+uniform sampler2D shadow_depth;
+uniform sampler2D receivers;
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : COLOR0;
+};
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float shadow_compare_bilinear(float2 uv, float z_receiver)
+{
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    float2 texel = (uv * params_shadow_map_size.xy) - 0.5f.xx;
+    float2 corner = floor(texel);
+    float2 weight = texel - corner;
+    float2 uv00 = (corner + 0.5f.xx) * params_shadow_map_size.zw;
+    float2 uv11 = uv00 + params_shadow_map_size.zw;
+    float lit00 = float(reference <= tex2Dlod(shadow_depth, float4(uv00, 0.0, 0.0f)).x);
+    float lit10 = float(reference <= tex2Dlod(shadow_depth, float4(float2(uv11.x, uv00.y), 0.0, 0.0f)).x);
+    float lit01 = float(reference <= tex2Dlod(shadow_depth, float4(float2(uv00.x, uv11.y), 0.0, 0.0f)).x);
+    float lit11 = float(reference <= tex2Dlod(shadow_depth, float4(uv11, 0.0, 0.0f)).x);
+    return lerp(lerp(lit00, lit10, weight.x), lerp(lit01, lit11, weight.x), weight.y);
+}
+
+float shadow_visibility(float3 query)
+{
+    float sum = 0.0f;
+    for (int i = 0; i < 16; i++)
+    {
+        float2 param = query.xy + (PCF_DISK[i] * params_sampling.x);
+        float param_1 = query.z;
+        sum += shadow_compare_bilinear(param, param_1);
+    }
+    return sum / 16.0f;
+}
+
+void frag_main()
+{
+    float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
+    float3 param = query;
+    visibility = shadow_visibility(param).xxxx;
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = float4(visibility);
+    return stage_output;
+}

@@ -1,0 +1,122 @@
+#version 450
+
+const vec2 POISSON_DISK[16] = vec2[](vec2(-0.94201624393463134765625, -0.39906215667724609375), vec2(0.94558608531951904296875, -0.768907248973846435546875), vec2(-0.094184100627899169921875, -0.929388701915740966796875), vec2(0.34495937824249267578125, 0.29387760162353515625), vec2(-0.91588580608367919921875, 0.4577143192291259765625), vec2(-0.8154423236846923828125, -0.87912464141845703125), vec2(-0.38277542591094970703125, 0.2767684459686279296875), vec2(0.9748439788818359375, 0.7564837932586669921875), vec2(0.4432332515716552734375, -0.9751155376434326171875), vec2(0.5374298095703125, -0.473734200000762939453125), vec2(-0.2649691104888916015625, -0.418930232524871826171875), vec2(0.79197514057159423828125, 0.19090187549591064453125), vec2(-0.24188840389251708984375, 0.997065067291259765625), vec2(-0.8140995502471923828125, 0.91437590122222900390625), vec2(0.1998412609100341796875, 0.786413669586181640625), vec2(0.14383161067962646484375, -0.141007900238037109375));
+
+layout(binding = 0, std140) uniform ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+} params;
+
+layout(binding = 1) uniform sampler2D shadow_depth;
+layout(binding = 2) uniform sampler2DShadow shadow_cmp;
+layout(binding = 3) uniform sampler2D receivers;
+
+layout(location = 0) in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+
+float shadow_depth_point(vec2 uv)
+{
+    return textureLod(shadow_depth, uv, 0.0).x * params.sampling.w;
+}
+
+void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, vec2 uv, float zReceiver)
+{
+    float searchWidth = (params.light.w * (zReceiver - params.light.z)) / zReceiver;
+    float blockerSum = 0.0;
+    numBlockers = 0.0;
+    for (int i = 0; i < 16; i++)
+    {
+        vec2 param = uv + (POISSON_DISK[i] * searchWidth);
+        float shadowMapDepth = shadow_depth_point(param);
+        if (shadowMapDepth < (zReceiver - params.sampling.y))
+        {
+            blockerSum += shadowMapDepth;
+            numBlockers += 1.0;
+        }
+    }
+    float _215;
+    if (numBlockers > 0.0)
+    {
+        _215 = blockerSum / numBlockers;
+    }
+    else
+    {
+        _215 = zReceiver;
+    }
+    avgBlockerDepth = _215;
+}
+
+float PenumbraSize(float zReceiver, float zBlocker)
+{
+    return (zReceiver - zBlocker) / zBlocker;
+}
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+float shadow_compare_bilinear(vec2 uv, float z_receiver)
+{
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    vec3 _98 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_98.xy, _98.z), 0.0);
+}
+
+float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
+{
+    float sum = 0.0;
+    for (int i = 0; i < 16; i++)
+    {
+        vec2 offset = POISSON_DISK[i] * filterRadiusUV;
+        vec2 param = uv + offset;
+        float param_1 = zReceiver;
+        sum += shadow_compare_bilinear(param, param_1);
+    }
+    return sum / 16.0;
+}
+
+float PCSS(vec3 coords)
+{
+    vec2 uv = coords.xy;
+    float zReceiver = coords.z;
+    float avgBlockerDepth = 0.0;
+    float numBlockers = 0.0;
+    vec2 param_2 = uv;
+    float param_3 = zReceiver;
+    float param;
+    float param_1;
+    FindBlocker(param, param_1, param_2, param_3);
+    avgBlockerDepth = param;
+    numBlockers = param_1;
+    if (numBlockers < 1.0)
+    {
+        return 1.0;
+    }
+    float param_4 = zReceiver;
+    float param_5 = avgBlockerDepth;
+    float penumbraRatio = PenumbraSize(param_4, param_5);
+    float filterRadiusUV = ((penumbraRatio * params.light.w) * params.light.z) / coords.z;
+    vec2 param_6 = uv;
+    float param_7 = zReceiver;
+    float param_8 = filterRadiusUV;
+    return PCF_Filter(param_6, param_7, param_8);
+}
+
+float shadow_visibility(vec3 query)
+{
+    vec3 param = query;
+    return PCSS(param);
+}
+
+void main()
+{
+    vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
+    vec3 param = query;
+    visibility = vec4(shadow_visibility(param));
+}
+
