@@ -36,6 +36,23 @@ Result<SceneRun> check_scene(const Context& ctx, const FloatImage& gpu, const Va
   return SceneRun{fixture.scene.name, *comparison};
 }
 
+// Runs `render` on every scene of the target's fixtures and compares each
+// image with the reference.
+template <typename Render>
+Status run_scenes(Context& ctx, const LibraryVariant& entry, TargetRun& run, Render render) {
+  run.executed = true;
+  run.pass = true;
+  for (const SceneFixture& fixture : ctx.fixtures.at(run.target).scenes) {
+    Result<FloatImage> gpu = render(fixture);
+    if (!gpu) return gpu.error();
+    auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
+    if (!scene) return scene.error();
+    run.pass = run.pass && scene->comparison.pass;
+    run.scenes.push_back(std::move(*scene));
+  }
+  return {};
+}
+
 Result<TargetRun> run_vulkan(Context& ctx, const LibraryVariant& entry, Target target) {
   TargetRun run;
   run.target = target;
@@ -43,17 +60,9 @@ Result<TargetRun> run_vulkan(Context& ctx, const LibraryVariant& entry, Target t
   auto query = load_executable(ctx.library, entry, PassKind::query, target);
   if (!query) return query.error();
   run.execution = query->execution;
-  run.executed = true;
-  run.pass = true;
-  for (const SceneFixture& fixture : ctx.fixtures.at(target).scenes) {
-    auto gpu =
-        ctx.engine.run_query(query->program, *fixture.map, fixture.receivers, fixture.params);
-    if (!gpu) return gpu.error();
-    auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
-    if (!scene) return scene.error();
-    run.pass = run.pass && scene->comparison.pass;
-    run.scenes.push_back(std::move(*scene));
-  }
+  PENUMBRA_TRY(run_scenes(ctx, entry, run, [&](const SceneFixture& fixture) {
+    return ctx.engine.run_query(query->program, *fixture.map, fixture.receivers, fixture.params);
+  }));
   return run;
 }
 
@@ -73,17 +82,10 @@ Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target targe
   if (!vert) return vert.error();
   auto frag = read_pass_file(ctx.library, entry, PassKind::query, target, ShaderStage::fragment);
   if (!frag) return frag.error();
-  run.executed = true;
-  run.pass = true;
-  for (const SceneFixture& fixture : ctx.fixtures.at(target).scenes) {
-    auto gpu = ctx.gl->run_query(*vert, *frag, fixture.normalized_depth, fixture.receivers,
-                                 fixture.params);
-    if (!gpu) return gpu.error();
-    auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
-    if (!scene) return scene.error();
-    run.pass = run.pass && scene->comparison.pass;
-    run.scenes.push_back(std::move(*scene));
-  }
+  PENUMBRA_TRY(run_scenes(ctx, entry, run, [&](const SceneFixture& fixture) {
+    return ctx.gl->run_query(*vert, *frag, fixture.normalized_depth, fixture.receivers,
+                             fixture.params);
+  }));
   return run;
 }
 
