@@ -23,6 +23,11 @@ int main(int argc, char** argv) {
     // Help and version are successes; every other parse error is bad usage.
     const int code = app.exit(e);
     return code == 0 ? 0 : penumbra::cli::kExitBadInput;
+  } catch (const std::exception& e) {
+    // Libraries report errors as values; anything thrown below them (out of
+    // memory, a filesystem race) still ends with a message, not an abort.
+    return penumbra::cli::report(
+        penumbra::make_error(penumbra::Error::Kind::internal, "", e.what()));
   }
   return exit_code;
 }

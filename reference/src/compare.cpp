@@ -45,7 +45,8 @@ Result<Comparison> compare(const FloatImage& gpu, const FloatImage& reference,
     }
   }
   if (result.compared > 0) result.mean_abs_error = error_sum / double(result.compared);
-  result.pass = result.over_tolerance == 0 &&
+  // Nothing compared is nothing checked: an empty or all-ambiguous run fails.
+  result.pass = result.compared > 0 && result.over_tolerance == 0 &&
                 double(result.ambiguous) <= kMaxAmbiguousFraction * double(result.pixels);
   return result;
 }

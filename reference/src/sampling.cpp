@@ -32,10 +32,6 @@ AxisCandidates axis_candidates(double coord, int size, double window) {
 
 }  // namespace
 
-Texel nearest_texel(const ShadowMapView& map, double u, double v) {
-  return {texel_index(u * map.width(), map.width()), texel_index(v * map.height(), map.height())};
-}
-
 TexelCandidates candidate_texels(const ShadowMapView& map, double u, double v, double window) {
   const AxisCandidates columns = axis_candidates(u * map.width(), map.width(), window);
   const AxisCandidates rows = axis_candidates(v * map.height(), map.height(), window);

@@ -1,5 +1,5 @@
-// The built-in scenes. Both use the whitepaper's light (L = 0.5, Fw = 3.75,
-// n = 9.5), for which u = 0.5 + x * 2.533 / z: the map spans |x| < 2.07 at
+// The built-in scenes. The first two use the whitepaper's light (L = 0.5,
+// Fw = 3.75, n = 9.5), for which u = 0.5 + x * 2.533 / z: the map spans |x| < 2.07 at
 // z = 10.5 and |x| < 3.4 at z = 17. Occluders sit at several heights so that
 // penumbrae of several widths appear, and each scene has an occluder that
 // leaves the map, whose shadow then depends on clamp-to-edge reads.
@@ -42,10 +42,33 @@ Scene tilted_overlap() {
   return scene;
 }
 
+// Every light parameter away from its default, so a shader that ignores one
+// fails: a wider light nearer the map (L = 1, Fw = 4, n = 6: u = 0.5 + 1.5 x / z),
+// a pcf_poisson radius of 3 texels, and a bias of 0.05 with a decal 0.01 above
+// the receiver, which only the bias keeps from shadowing it.
+Scene custom_light() {
+  Scene scene;
+  scene.name = "custom_light";
+  scene.light.light_world_size = 1.0;
+  scene.light.frustum_width = 4.0;
+  scene.light.near_plane = 6.0;
+  scene.light.bias = 0.05;
+  scene.light.filter_radius_uv = 3.0 / 256.0;
+  scene.occluders = {
+      {-2.0, -2.0, -0.5, -0.5, 7.5},  // u, v ~ [0.10, 0.40]
+      {0.5, -2.5, 2.5, -0.7, 9.0},    // u, v ~ [0.58, 0.92] x [0.08, 0.38]
+      {-3.0, 0.5, -0.5, 2.5, 11.0},   // u, v ~ [0.09, 0.43] x [0.57, 0.84]
+      {1.0, 1.0, 5.0, 2.5, 12.5},     // u ~ [0.62, 1.10]: crosses the right edge
+      {-0.6, -0.6, 0.6, 0.6, 13.99},  // the decal: within the bias of the receiver
+  };
+  scene.plane_z0 = 14.0;
+  return scene;
+}
+
 }  // namespace
 
 std::vector<Scene> builtin_scenes() {
-  return {steps(), tilted_overlap()};
+  return {steps(), tilted_overlap(), custom_light()};
 }
 
 }  // namespace penumbra::reference

@@ -65,6 +65,11 @@ class StageResolver {
     for (const SeparateImage& image : iface_.separate_images) {
       auto name = known_image("image", image.name);
       if (!name) return name.error();
+      if (image.depth != (*name == kShadowCmp)) {
+        return fail("image '" + image.name + "' must be " +
+                    (*name == kShadowCmp ? "read with comparisons (SampleCmp)"
+                                         : "read without comparisons"));
+      }
       out.push_back({image.name, *name, image.set, image.binding, role(*name),
                      VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
     }
@@ -99,6 +104,11 @@ class StageResolver {
                   "named _<image>_sampler after the image it samples (SPIRV-Cross's HLSL "
                   "naming); allowed names: _shadow_depth_sampler, _shadow_cmp_sampler, "
                   "_receivers_sampler");
+    }
+    if (!sampler.comparison && *image == kShadowCmp) {
+      return fail("sampler '" + sampler.name + "' (" + stage_name(iface_) +
+                  " stage) must be a comparison sampler (SamplerComparisonState): shadow_cmp "
+                  "is only read with comparisons");
     }
     if (sampler.comparison && *image != kShadowCmp) {
       return fail("sampler '" + sampler.name + "' (" + stage_name(iface_) +

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -98,9 +99,15 @@ Result<FloatImage> read_pfm(const std::filesystem::path& path) {
   }
   const bool little_endian = scale < 0.0;
 
-  // Compare in 64 bits: width * height * channels * 4 can exceed size_t on
-  // 32-bit hosts and cannot overflow here (each factor < 2^31).
-  const std::uint64_t expected = std::uint64_t(width) * std::uint64_t(height) * channels * 4;
+  // width * height fits in 64 bits (each < 2^31); times 4 * channels it may
+  // not, and a wrapped product could match a small file.
+  const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+  const std::uint64_t texel_bytes = std::uint64_t(channels) * 4;
+  if (pixels > std::numeric_limits<std::uint64_t>::max() / texel_bytes) {
+    return bad_file(
+        path, "the size " + std::to_string(width) + "x" + std::to_string(height) + " is too large");
+  }
+  const std::uint64_t expected = pixels * texel_bytes;
   const std::uint64_t available =
       header.data_offset() <= bytes->size() ? bytes->size() - header.data_offset() : 0;
   if (available < expected) {

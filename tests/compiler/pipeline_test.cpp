@@ -147,6 +147,7 @@ TEST(BuildLibrary, AShaderThatFailsToCompileLeavesThePreviousOutput) {
   TempDir dir("fail");
   const auto out = dir.path / "out";
   std::filesystem::create_directories(out);
+  std::ofstream(out / "index.json") << "{}";  // a previous library
   std::ofstream(out / "keep.txt") << "previous";
   Variant broken = make_variant(Technique::pcf_poisson);
   broken.keys.pcf_samples = 0;  // an array of size 0 does not compile
@@ -162,7 +163,30 @@ TEST(BuildLibrary, AShaderThatFailsToCompileLeavesThePreviousOutput) {
   for ([[maybe_unused]] const auto& e : std::filesystem::recursive_directory_iterator(dir.path)) {
     ++entries;
   }
-  EXPECT_EQ(entries, 2u) << "staging directory left behind";
+  EXPECT_EQ(entries, 3u) << "staging directory left behind";
+}
+
+TEST(BuildLibrary, RefusesToReplaceAnythingButALibrary) {
+  TempDir dir("refuse");
+  const Variant hard = make_variant(Technique::hard);
+  std::ofstream(dir.path / "notes.txt") << "mine";
+  auto over_file =
+      build_library(std::span(&hard, 1), dir.path / "notes.txt", {}, ignore_diagnostics());
+  ASSERT_FALSE(over_file.ok());
+  EXPECT_THAT(over_file.error().to_string(), HasSubstr("not a directory"));
+  EXPECT_EQ(slurp(dir.path / "notes.txt"), "mine");
+  std::filesystem::create_directories(dir.path / "docs");
+  std::ofstream(dir.path / "docs" / "thesis.tex") << "mine";
+  auto over_dir = build_library(std::span(&hard, 1), dir.path / "docs", {}, ignore_diagnostics());
+  ASSERT_FALSE(over_dir.ok());
+  EXPECT_THAT(over_dir.error().to_string(), HasSubstr("without index.json"));
+  EXPECT_EQ(slurp(dir.path / "docs" / "thesis.tex"), "mine");
+  // An empty directory and an earlier library are fine.
+  std::filesystem::create_directories(dir.path / "empty");
+  EXPECT_TRUE(
+      build_library(std::span(&hard, 1), dir.path / "empty", {}, ignore_diagnostics()).ok());
+  EXPECT_TRUE(
+      build_library(std::span(&hard, 1), dir.path / "empty", {}, ignore_diagnostics()).ok());
 }
 
 TEST(BuildLibrary, OutputIsIdenticalAcrossRunsAndThreadCounts) {

@@ -34,18 +34,20 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
   return jobs;
 }
 
-// Runs all jobs on `threads` workers. Returns the error of the first failing
-// job in plan order, so the message does not depend on thread timing.
+// Runs all jobs on `threads` workers and stops early after a failure. Returns
+// the error of the first failing job in plan order among those that ran.
 Status run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int threads) {
   std::vector<std::optional<Error>> errors(jobs.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   auto worker = [&] {
     for (std::size_t i = next++; i < jobs.size() && !failed; i = next++) {
-      if (Status status = pipeline.run(jobs[i]); !status) {
-        errors[i] = status.error();
-        failed = true;
+      try {
+        if (Status status = pipeline.run(jobs[i]); !status) errors[i] = status.error();
+      } catch (const std::exception& e) {  // a library below us threw: report, never terminate
+        errors[i] = make_error(Error::Kind::internal, jobs[i].describe(), e.what());
       }
+      if (errors[i]) failed = true;
     }
   };
   {
@@ -55,6 +57,25 @@ Status run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int thre
   }
   for (auto& error : errors) {
     if (error) return *error;
+  }
+  return {};
+}
+
+// OUT is replaced wholesale, so it must be absent, empty, or a library that
+// an earlier build wrote (it has index.json): never a user's file or folder.
+Status check_replaceable(const std::filesystem::path& out) {
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(out, ec);
+  if (ec || !std::filesystem::exists(status)) return {};
+  if (!std::filesystem::is_directory(status)) {
+    return make_error(Error::Kind::bad_input, out.string(),
+                      "exists and is not a directory; refusing to replace it with a library");
+  }
+  const bool empty = std::filesystem::is_empty(out, ec);
+  if (!ec && !empty && !std::filesystem::exists(out / "index.json", ec)) {
+    return make_error(Error::Kind::bad_input, out.string(),
+                      "is a non-empty directory without index.json (not a penumbra library); "
+                      "refusing to replace it");
   }
   return {};
 }
@@ -72,6 +93,7 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
   if (variants.empty()) {
     return make_error(Error::Kind::bad_input, out_dir.string(), "no variants to build");
   }
+  PENUMBRA_TRY(check_replaceable(out_dir));
   auto staged = StagedDirectory::create(out_dir);
   if (!staged) return staged.error();
 

@@ -25,8 +25,8 @@ class MesaGlBackend final : public GlBackend {
 
 }  // namespace
 
-std::unique_ptr<GlBackend> GlBackend::create(std::string& why_not) {
-  auto engine = GlEngine::create(GlEngineOptions{}, ignore_diagnostics());
+std::unique_ptr<GlBackend> GlBackend::create(const std::string& device, std::string& why_not) {
+  auto engine = GlEngine::create(GlEngineOptions{.device = device}, ignore_diagnostics());
   if (!engine) {
     why_not = "no OpenGL context: " + engine.error().to_string();
     return nullptr;
@@ -36,7 +36,7 @@ std::unique_ptr<GlBackend> GlBackend::create(std::string& why_not) {
 
 #else
 
-std::unique_ptr<GlBackend> GlBackend::create(std::string& why_not) {
+std::unique_ptr<GlBackend> GlBackend::create(const std::string& /*device*/, std::string& why_not) {
   why_not = "built without OpenGL (PENUMBRA_BUILD_GL=OFF or EGL/GL not found at configure time)";
   return nullptr;
 }

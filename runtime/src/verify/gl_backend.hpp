@@ -15,8 +15,10 @@ namespace penumbra {
 
 class GlBackend {
  public:
-  // Null when there is no GL path; `why_not` then says why.
-  static std::unique_ptr<GlBackend> create(std::string& why_not);
+  // Null when there is no GL path; `why_not` then says why. `device` selects
+  // the GL device like penumbra::GlEngineOptions (verify passes "llvmpipe"
+  // when Vulkan runs on lavapipe, so both paths use one rasterizer).
+  static std::unique_ptr<GlBackend> create(const std::string& device, std::string& why_not);
   virtual ~GlBackend() = default;
 
   virtual std::string device() const = 0;

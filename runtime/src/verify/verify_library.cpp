@@ -23,6 +23,8 @@ struct Context {
   std::map<Target, TargetFixtures> fixtures;
   std::unique_ptr<GlBackend> gl;
   std::string gl_missing;  // why there is no GL path
+  // Targets whose depth pass could not run: every run on them fails with this.
+  std::map<Target, Error> broken_targets;
 };
 
 Result<SceneRun> check_scene(const Context& ctx, const FloatImage& gpu, const Variant& variant,
@@ -89,9 +91,11 @@ Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target targe
   return run;
 }
 
-// Renders every scene with `target`'s depth pass (shared by all variants).
-Status prepare_target(Context& ctx, Target target, VerifyReport& report) {
-  auto depth = load_executable(ctx.library, ctx.library.variants.front(), PassKind::depth, target);
+// Renders every scene with `target`'s depth pass (shared by all variants),
+// taken from `entry`, a variant that has the target.
+Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
+                      VerifyReport& report) {
+  auto depth = load_executable(ctx.library, entry, PassKind::depth, target);
   if (!depth) return depth.error();
   TargetFixtures fixtures{depth->execution, {}};
   for (const reference::Scene& scene : reference::builtin_scenes()) {
@@ -158,9 +162,11 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   report.device = engine.device_info();
   Context ctx{
       library, engine,  {static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))},
-      {},      nullptr, {}};
+      {},      nullptr, {},
+      {}};
   if (options.gl) {
-    ctx.gl = GlBackend::create(ctx.gl_missing);
+    const bool lavapipe = report.device.name.find("llvmpipe") != std::string::npos;
+    ctx.gl = GlBackend::create(lavapipe ? "llvmpipe" : "", ctx.gl_missing);
     if (ctx.gl) report.gl_device = ctx.gl->device();
   } else {
     ctx.gl_missing = "not requested (--no-gl)";
@@ -173,7 +179,17 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
     variant_run.technique = entry.variant.technique;
     for (Target target : entry.variant.targets) {
       if (!wanted(options.targets, target)) continue;
-      if (!ctx.fixtures.contains(target)) PENUMBRA_TRY(prepare_target(ctx, target, report));
+      if (!ctx.fixtures.contains(target) && !ctx.broken_targets.contains(target)) {
+        // A depth pass that cannot run fails every run of its target, not verify.
+        if (Status s = prepare_target(ctx, entry, target, report); !s) {
+          ctx.broken_targets.emplace(target, s.error());
+        }
+      }
+      if (auto broken = ctx.broken_targets.find(target); broken != ctx.broken_targets.end()) {
+        variant_run.runs.push_back(failed_run(target, "vulkan", broken->second));
+        count(report, variant_run.runs.back());
+        continue;
+      }
       auto run = run_vulkan(ctx, entry, target);
       variant_run.runs.push_back(run ? std::move(*run) : failed_run(target, "vulkan", run.error()));
       count(report, variant_run.runs.back());

@@ -21,7 +21,8 @@ struct Comparison {
   double max_abs_error = 0.0;      // over compared pixels; infinity for a NaN
   double mean_abs_error = 0.0;     // over compared pixels
   double tolerance = 0.0;
-  bool pass = false;  // over_tolerance == 0 and ambiguous <= kMaxAmbiguousFraction * pixels
+  bool pass =
+      false;  // compared > 0, over_tolerance == 0, ambiguous <= kMaxAmbiguousFraction * pixels
 };
 
 // Compares channel 0 of `gpu` and `reference` pixel by pixel, skipping the

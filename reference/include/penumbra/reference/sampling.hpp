@@ -19,9 +19,6 @@ struct Texel {
   int j = 0;
 };
 
-// The texel a point sample at (u, v) reads: floor(u W), floor(v H), clamped.
-Texel nearest_texel(const ShadowMapView& map, double u, double v);
-
 // The texels a point sample at (u, v) may read on a GPU whose texel
 // coordinates can be off by up to `window` texels (0 <= window < 1): the
 // nearest texel first, then the others across any texel boundary within

@@ -11,12 +11,12 @@
 
 namespace penumbra::reference {
 
-// PCSS(shadowMapTex, coords) for coords = (u, v, z_receiver), z in linear
-// light-view z, with the whitepaper's #defines (16 + 16 samples, L = 0.5,
-// Fw = 3.75, n = 9.5, no bias).
 // The whitepaper's poissonDisk[16] as float32, point for point.
 const std::array<Point2, 16>& whitepaper_poisson_disk();
 
+// PCSS(shadowMapTex, coords) for coords = (u, v, z_receiver), z in linear
+// light-view z, with the whitepaper's #defines (16 + 16 samples, L = 0.5,
+// Fw = 3.75, n = 9.5, no bias).
 double whitepaper_pcss(const ShadowMapView& map, double u, double v, double z_receiver);
 
 }  // namespace penumbra::reference

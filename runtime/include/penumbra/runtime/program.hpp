@@ -26,11 +26,12 @@ struct StageCode {
 struct PassProgram {
   StageCode vert;
   StageCode frag;
-  bool d3d_viewport = false;   // the vertex stage flips y for Direct3D: the runtime flips the
-  bool gl_clip_depth = false;  // the vertex stage writes OpenGL clip z in [-w, w]: the runtime
-                               // clips there too (VK_EXT_depth_clip_control)
-                               // viewport (negative height, Vulkan 1.1 / VK_KHR_maintenance1)
-                               // so row 0 stays first
+  // The vertex stage flips y for Direct3D: the runtime flips the viewport
+  // (negative height, Vulkan 1.1) so row 0 stays first.
+  bool d3d_viewport = false;
+  // The vertex stage writes OpenGL clip z in [-w, w]: the runtime clips there
+  // too (VK_EXT_depth_clip_control).
+  bool gl_clip_depth = false;
 };
 
 // ShadowParams member name -> its vec4 value, e.g. "light" -> {L, Fw, n, L/Fw}.

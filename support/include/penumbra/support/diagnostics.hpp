@@ -16,8 +16,8 @@ struct Diagnostic {
   std::string message;  // one line
 };
 
-// Receives diagnostics. Must be safe to call from several threads when the
-// producer documents parallel use (the build pipeline does).
+// Receives diagnostics. Producers call it from the thread that called them
+// unless they document otherwise.
 using DiagnosticConsumer = std::function<void(const Diagnostic&)>;
 
 // A consumer that drops everything (for tests and quiet callers).
