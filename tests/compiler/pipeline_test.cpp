@@ -189,6 +189,26 @@ TEST(BuildLibrary, RefusesToReplaceAnythingButALibrary) {
       build_library(std::span(&hard, 1), dir.path / "empty", {}, ignore_diagnostics()).ok());
 }
 
+TEST(LoadLibrary, UnknownPassesAndSchemasAreErrorsNamingTheJsonPath) {
+  TempDir dir("load");
+  const Variant hard = make_variant(Technique::hard);
+  ASSERT_TRUE(build_library(std::span(&hard, 1), dir.path / "out", {}, ignore_diagnostics()).ok());
+  const auto index = dir.path / "out" / "index.json";
+  const std::string text = slurp(index);
+  std::string renamed = text;
+  renamed.replace(renamed.find("\"query\": {"), 7, "\"blurry\"");
+  std::ofstream(index) << renamed;
+  auto bad_pass = load_library(dir.path / "out");
+  ASSERT_FALSE(bad_pass.ok());
+  EXPECT_THAT(bad_pass.error().to_string(), HasSubstr("/variants/0/passes/blurry"));
+  std::string schema = text;
+  schema.replace(schema.find("\"schema\": 1"), 11, "\"schema\": 7");
+  std::ofstream(index) << schema;
+  auto bad_schema = load_library(dir.path / "out");
+  ASSERT_FALSE(bad_schema.ok());
+  EXPECT_THAT(bad_schema.error().to_string(), HasSubstr("/schema"));
+}
+
 TEST(BuildLibrary, OutputIsIdenticalAcrossRunsAndThreadCounts) {
   TempDir dir("stable");
   const std::vector<Variant> variants = {make_variant(Technique::pcss),

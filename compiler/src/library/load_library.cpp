@@ -58,6 +58,10 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     v.targets.push_back(*target);
   }
   for (auto& [pass_name, by_target] : j.at("passes").items()) {
+    if (pass_name != "depth" && pass_name != "query") {
+      return index_error(file, path + "/passes/" + pass_name,
+                         "unknown pass; this penumbra knows: depth, query");
+    }
     const PassKind pass = pass_name == "depth" ? PassKind::depth : PassKind::query;
     for (auto& [target_name, files] : by_target.items()) {
       auto target = parse_target(target_name);
@@ -89,6 +93,9 @@ Result<Library> load_library(const std::filesystem::path& root) {
   try {
     const json j = json::parse(in);
     library.generator = j.at("generator").get<std::string>();
+    if (j.value("schema", 0) != 1) {
+      return index_error(file, "/schema", "unsupported index schema; this penumbra reads 1");
+    }
     const json& variants = j.at("variants");
     for (std::size_t i = 0; i < variants.size(); ++i) {
       auto v = read_variant(file, variants[i], "/variants/" + std::to_string(i));
