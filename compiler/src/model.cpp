@@ -2,6 +2,8 @@
 
 #include <cstddef>
 
+#include "penumbra/support/text.hpp"
+
 namespace penumbra {
 namespace {
 
@@ -18,16 +20,6 @@ std::optional<Enum> parse_name(const std::array<std::string_view, N>& names,
     if (names[i] == name) return values[i];
   }
   return std::nullopt;
-}
-
-template <std::size_t N>
-std::string join(const std::array<std::string_view, N>& names) {
-  std::string out;
-  for (std::string_view name : names) {
-    if (!out.empty()) out += ", ";
-    out += name;
-  }
-  return out;
 }
 
 }  // namespace
@@ -49,11 +41,11 @@ std::optional<Target> parse_target(std::string_view name) {
 }
 
 std::string allowed_techniques() {
-  return join(kTechniqueNames);
+  return join(kTechniqueNames, ", ");
 }
 
 std::string allowed_targets() {
-  return join(kTargetNames);
+  return join(kTargetNames, ", ");
 }
 
 // Keys are appended in a fixed order (k, b, p, disk) and only when set, so the

@@ -1,5 +1,8 @@
 #include "penumbra/compiler/stage.hpp"
 
+#include <string>
+#include <string_view>
+
 namespace penumbra {
 
 std::string_view to_string(PassKind pass) {
@@ -12,13 +15,19 @@ std::string_view to_string(ShaderStage stage) {
 
 namespace {
 
+std::string value_text(int value) {
+  return std::to_string(value);
+}
+
+std::string value_text(const std::string& value) {
+  return value;
+}
+
 std::string keys_text(const Variant& variant) {
-  const VariantKeys& keys = variant.keys;
   std::string out = "technique " + std::string(to_string(variant.technique));
-  if (keys.kernel) out += ", kernel " + std::to_string(*keys.kernel);
-  if (keys.blocker_samples) out += ", blocker_samples " + std::to_string(*keys.blocker_samples);
-  if (keys.pcf_samples) out += ", pcf_samples " + std::to_string(*keys.pcf_samples);
-  if (keys.disk) out += ", disk " + *keys.disk;
+  for_each_key(variant.keys, [&out](std::string_view name, const auto& key) {
+    if (key) out += ", " + std::string(name) + " " + value_text(*key);
+  });
   return out;
 }
 

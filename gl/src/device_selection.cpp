@@ -2,13 +2,12 @@
 
 #include <EGL/eglext.h>
 
-#include <algorithm>
-#include <cctype>
 #include <utility>
 #include <vector>
 
 #include "context_info.hpp"
 #include "egl_error.hpp"
+#include "penumbra/support/device_selector.hpp"
 
 namespace penumbra::gl {
 namespace {
@@ -80,33 +79,26 @@ std::string describe(Result<EglContext>& context) {
   return current_context_info().renderer;
 }
 
-bool contains_ignoring_case(std::string_view text, std::string_view part) {
-  const auto lower = [](char c) { return std::tolower(static_cast<unsigned char>(c)); };
-  return std::search(text.begin(), text.end(), part.begin(), part.end(),
-                     [&](char a, char b) { return lower(a) == lower(b); }) != text.end();
-}
-
-bool all_digits(const std::string& text) {
-  return std::all_of(text.begin(), text.end(),
-                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
-}
-
 }  // namespace
 
 Result<OpenedContext> open_context(const std::string& selector) {
   if (selector.empty()) return open_default();
   auto devices = egl_devices();
   if (!devices) return devices.error();
-  std::string listing;
+  // Devices open one at a time, up to the first match: matching the devices
+  // seen so far finds the newest one exactly when it is the first match. A
+  // name matches only a device whose context opened.
+  std::vector<std::string> renderers;  // what the error lists
+  std::vector<std::string> names;      // what a selector matches: "" where no context
   for (std::size_t index = 0; index < devices->size(); ++index) {
     auto context = context_on_device((*devices)[index], index);
-    const std::string renderer = describe(context);
-    const bool match = all_digits(selector) ? selector == std::to_string(index)
-                                            : context && contains_ignoring_case(renderer, selector);
-    if (match && !context) return context.error();
-    if (match) return OpenedContext{std::move(*context), "EGL device " + std::to_string(index)};
-    listing += (listing.empty() ? "" : ", ") + std::to_string(index) + ": " + renderer;
+    renderers.push_back(describe(context));
+    names.push_back(context ? renderers.back() : std::string());
+    if (!match_selector(names, selector)) continue;
+    if (!context) return context.error();
+    return OpenedContext{std::move(*context), "EGL device " + std::to_string(index)};
   }
+  const std::string listing = list_choices(renderers);
   return make_error(Error::Kind::bad_input, "GL device '" + selector + "'",
                     "no EGL device matches; give an index or part of a renderer of one of: " +
                         (listing.empty() ? "(no EGL devices)" : listing));

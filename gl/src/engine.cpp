@@ -53,8 +53,7 @@ const GlInfo& GlEngine::info() const {
 
 Result<FloatImage> GlEngine::run_query(std::string_view vertex_text, std::string_view fragment_text,
                                        const FloatImage& normalized_depth,
-                                       const FloatImage& receivers,
-                                       const std::map<std::string, std::array<float, 4>>& params) {
+                                       const FloatImage& receivers, const ParamBlock& params) {
   auto current = context_->egl.make_current();
   if (!current) return current.error();
   return gl::run_query_pass(context_->samplers,

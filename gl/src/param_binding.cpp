@@ -1,18 +1,20 @@
 #include "param_binding.hpp"
 
+#include <array>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace penumbra::gl {
 namespace {
 
-std::string given(const ParamValues& params) {
+std::string given(const ParamBlock& params) {
   std::string names;
   for (const auto& [name, value] : params) names += (names.empty() ? "" : ", ") + name;
   return names.empty() ? "nothing" : names;
 }
 
-Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamValues& params) {
+Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamBlock& params) {
   const auto found = params.find(member.member);
   if (found == params.end()) {
     return make_error(Error::Kind::bad_input, "query pass",
@@ -25,7 +27,7 @@ Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamValu
 }  // namespace
 
 Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface,
-                           const ParamValues& params) {
+                           const ParamBlock& params) {
   if (!iface.block) {
     for (const ParamMember& member : iface.members) {
       auto value = value_of(member, params);

@@ -2,24 +2,18 @@
 // the forms the GLSL targets emit.
 #pragma once
 
-#include <array>
-#include <map>
-#include <string>
-
 #include "gl_names.hpp"
+#include "penumbra/support/param_block.hpp"
 #include "penumbra/support/result.hpp"
 #include "program_interface.hpp"
 
 namespace penumbra::gl {
-
-using ParamValues = std::map<std::string, std::array<float, 4>>;
 
 // Plain uniforms (GLSL 3.30's `uniform ShadowParams params;`): each member is
 // set at its location. Uniform block (GLSL 4.50): a uniform buffer of the
 // block's size is filled at each member's queried offset and bound at the
 // block's binding. Returns that buffer (empty for plain uniforms); keep it
 // until the draw. Errors (bad_input): a member without a value in `params`.
-Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface,
-                           const ParamValues& params);
+Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface, const ParamBlock& params);
 
 }  // namespace penumbra::gl

@@ -4,6 +4,8 @@
 #include <array>
 #include <string_view>
 
+#include "penumbra/support/param_block.hpp"
+
 namespace penumbra::gl {
 namespace {
 
@@ -54,11 +56,16 @@ Result<std::optional<ParamBlockInfo>> find_block(GLuint program) {
 }
 
 // GL names block members "ShadowParams.member" and struct members
-// "params.member"; anything else is not a ShadowParams member.
+// "params.member", which param_block_key turns into their ParamBlock key;
+// anything else is not a ShadowParams member.
 std::optional<std::string> member_name(std::string_view name, bool in_block) {
-  const std::string_view prefix = in_block ? "ShadowParams." : "params.";
-  if (!name.starts_with(prefix)) return std::nullopt;
-  return std::string(name.substr(prefix.size()));
+  if (in_block) {
+    constexpr std::string_view block_prefix = "ShadowParams.";
+    if (!name.starts_with(block_prefix)) return std::nullopt;
+    return std::string(name.substr(block_prefix.size()));
+  }
+  if (!name.starts_with("params.")) return std::nullopt;
+  return std::string(param_block_key(name));
 }
 
 Status add_sampler(ProgramInterface& iface, const std::string& name, GLenum type, GLint location) {

@@ -1,20 +1,17 @@
 #include "query_pass.hpp"
 
-#include <array>
 #include <cstdio>
 #include <vector>
 
 #include "gl_check.hpp"
 #include "gl_program.hpp"
+#include "penumbra/support/full_screen_triangle.hpp"
 #include "program_interface.hpp"
 #include "sampler_units.hpp"
 #include "textures.hpp"
 
 namespace penumbra::gl {
 namespace {
-
-// The one triangle that covers the screen (docs/shader-interface.md).
-constexpr std::array<float, 6> kFullScreenTriangle = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
 
 struct Geometry {
   Buffer vertices;

@@ -16,7 +16,7 @@ struct QueryInputs {
   std::string_view fragment_text;
   const FloatImage& normalized_depth;
   const FloatImage& receivers;
-  const ParamValues& params;
+  const ParamBlock& params;
 };
 
 // Builds the program, binds everything by name, draws the full-screen

@@ -1,10 +1,10 @@
 #include "textures.hpp"
 
-#include <cmath>
 #include <string>
 #include <vector>
 
 #include "gl_check.hpp"
+#include "penumbra/support/image_checks.hpp"
 
 namespace penumbra::gl {
 namespace {
@@ -40,25 +40,10 @@ Result<Texture> create_texture(GLenum internal_format, int width, int height, GL
 }  // namespace
 
 Status check_query_inputs(const FloatImage& normalized_depth, const FloatImage& receivers) {
-  if (normalized_depth.channels != 1) {
-    return input_error("shadow map", "expected one channel of normalized depth, got " +
-                                         std::to_string(normalized_depth.channels));
-  }
-  if (receivers.channels != 3 && receivers.channels != 4) {
-    return input_error("receivers", "expected 3 or 4 channels (u, v, z_r), got " +
-                                        std::to_string(receivers.channels));
-  }
+  PENUMBRA_TRY(check_normalized_depth(normalized_depth));
+  PENUMBRA_TRY(check_receivers(receivers));
   PENUMBRA_TRY(check_size("shadow map", normalized_depth));
   PENUMBRA_TRY(check_size("receivers", receivers));
-  for (int j = 0; j < normalized_depth.height; ++j) {
-    for (int i = 0; i < normalized_depth.width; ++i) {
-      const float d = normalized_depth.at(i, j);
-      if (std::isfinite(d) && d >= 0.0f && d <= 1.0f) continue;
-      return input_error("shadow map", "texel (" + std::to_string(i) + ", " + std::to_string(j) +
-                                           ") holds " + std::to_string(d) +
-                                           "; normalized depth must be finite and in [0, 1]");
-    }
-  }
   return {};
 }
 
@@ -69,12 +54,7 @@ Result<Texture> upload_depth(const FloatImage& normalized_depth) {
 }
 
 Result<Texture> upload_receivers(const FloatImage& receivers) {
-  std::vector<float> rgba(receivers.pixel_count() * 4, 0.0f);
-  for (std::size_t p = 0; p < receivers.pixel_count(); ++p) {
-    for (int c = 0; c < receivers.channels; ++c) {
-      rgba[p * 4 + c] = receivers.data[p * receivers.channels + c];
-    }
-  }
+  const std::vector<float> rgba = receivers_to_rgba(receivers);
   return create_texture(GL_RGBA32F, receivers.width, receivers.height, GL_RGBA, rgba.data(),
                         "uploading the receivers (GL_RGBA32F)");
 }

@@ -10,9 +10,9 @@
 
 namespace penumbra::gl {
 
-// Errors (bad_input): the map is not one channel of finite depth in [0, 1]
-// (GL clamps DEPTH_COMPONENT32F uploads to it), the receivers are not 3 or 4
-// channels, or either is empty or larger than GL_MAX_TEXTURE_SIZE.
+// Errors (bad_input): those of check_normalized_depth and check_receivers
+// (penumbra/support/image_checks.hpp), or either image is empty or larger
+// than GL_MAX_TEXTURE_SIZE.
 Status check_query_inputs(const FloatImage& normalized_depth, const FloatImage& receivers);
 
 // One immutable level; the sampler objects decide filtering.

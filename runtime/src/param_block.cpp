@@ -4,18 +4,7 @@
 #include <cstring>
 #include <string>
 
-namespace penumbra {
-
-std::string_view param_block_key(std::string_view member_name) {
-  constexpr std::string_view instance = "params";
-  if (member_name.size() > instance.size() + 1 && member_name.starts_with(instance)) {
-    const char separator = member_name[instance.size()];
-    if (separator == '.' || separator == '_') return member_name.substr(instance.size() + 1);
-  }
-  return member_name;
-}
-
-namespace detail {
+namespace penumbra::detail {
 namespace {
 
 std::string given_names(const ParamBlock& params) {
@@ -60,5 +49,4 @@ Result<std::vector<std::byte>> pack_params(const ParamsLayout& layout, const Par
   return bytes;
 }
 
-}  // namespace detail
-}  // namespace penumbra
+}  // namespace penumbra::detail

@@ -1,43 +1,12 @@
 #include "query_pass.hpp"
 
-#include <string>
-#include <vector>
-
 #include "formats.hpp"
 #include "image_transfer.hpp"
 #include "pass.hpp"
+#include "penumbra/support/full_screen_triangle.hpp"
+#include "penumbra/support/image_checks.hpp"
 
 namespace penumbra::detail {
-namespace {
-
-// One triangle covering the whole clip-space square [-1, 1]^2.
-constexpr float kFullScreenTriangle[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
-
-Status check_receivers(const FloatImage& receivers) {
-  const bool channels_ok = receivers.channels == 3 || receivers.channels == 4;
-  if (channels_ok && receivers.data.size() == receivers.pixel_count() * receivers.channels) {
-    return {};
-  }
-  const std::string got = "; got " + std::to_string(receivers.channels) + " channels and " +
-                          std::to_string(receivers.data.size()) + " values for " +
-                          std::to_string(receivers.width) + "x" + std::to_string(receivers.height);
-  return make_error(
-      Error::Kind::bad_input, "receivers",
-      "expected 3 or 4 channels (u, v, z_r) and width * height * channels values" + got);
-}
-
-// Sampling RGB32F is optional in Vulkan and RGBA32F is not, so a fourth channel pads.
-std::vector<float> to_rgba(const FloatImage& receivers) {
-  std::vector<float> rgba(receivers.pixel_count() * 4, 0.0f);
-  for (std::size_t p = 0; p < receivers.pixel_count(); ++p) {
-    for (int c = 0; c < receivers.channels; ++c) {
-      rgba[p * 4 + c] = receivers.data[p * receivers.channels + c];
-    }
-  }
-  return rgba;
-}
-
-}  // namespace
 
 Result<FloatImage> run_query(Context& context, const PassProgram& program,
                              const ShadowMapImages& map, const FloatImage& receivers,
@@ -54,7 +23,7 @@ Result<FloatImage> run_query(Context& context, const PassProgram& program,
       "the receivers image");
   if (!receivers_image) return receivers_image.error();
   PENUMBRA_TRY(upload_image(*context.device, *context.commands, *receivers_image,
-                            to_rgba(receivers), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                            receivers_to_rgba(receivers), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                             "the receivers image"));
   auto visibility =
       vk::Image::create(*context.device,

@@ -1,36 +1,11 @@
 #include "shadow_map_transfer.hpp"
 
-#include <cmath>
-#include <string>
 #include <utility>
 
 #include "image_transfer.hpp"
+#include "penumbra/support/image_checks.hpp"
 
 namespace penumbra::detail {
-namespace {
-
-// Vulkan leaves D32_SFLOAT copies of values outside [0, 1] undefined (without
-// VK_EXT_depth_range_unrestricted), so they are refused, not clamped.
-Status check_normalized_depth(const FloatImage& image) {
-  if (image.channels != 1 || image.data.size() != image.pixel_count()) {
-    return make_error(Error::Kind::bad_input, "shadow map",
-                      "expected one channel of width * height values; got " +
-                          std::to_string(image.channels) + " channels and " +
-                          std::to_string(image.data.size()) + " values");
-  }
-  for (int j = 0; j < image.height; ++j) {
-    for (int i = 0; i < image.width; ++i) {
-      const float d = image.at(i, j);
-      if (std::isfinite(d) && d >= 0.0f && d <= 1.0f) continue;
-      return make_error(Error::Kind::bad_input, "shadow map",
-                        "texel (" + std::to_string(i) + ", " + std::to_string(j) + ") is " +
-                            std::to_string(d) + "; normalized depth must be in [0, 1]");
-    }
-  }
-  return {};
-}
-
-}  // namespace
 
 Result<std::unique_ptr<ShadowMapImages>> upload_shadow_map(Context& context,
                                                            const FloatImage& normalized_depth) {

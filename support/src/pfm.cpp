@@ -8,14 +8,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <string_view>
 
 #include "penumbra/support/atomic_file.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra {
 namespace {
@@ -59,18 +58,10 @@ bool parse_number(std::string_view token, T& value) {
   return ec == std::errc() && ptr == end;
 }
 
-Result<std::string> read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(Error::Kind::io, path.string(), "cannot open file for reading");
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) return make_error(Error::Kind::io, path.string(), "cannot read file");
-  return bytes;
-}
-
 }  // namespace
 
 Result<FloatImage> read_pfm(const std::filesystem::path& path) {
-  auto bytes = read_bytes(path);
+  auto bytes = read_file(path);
   if (!bytes) return bytes.error();
   HeaderReader header(*bytes);
 

@@ -2,26 +2,10 @@
 
 #include "build/pass_plan.hpp"
 #include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/disk.hpp"
 
 namespace penumbra {
 namespace {
-
-nlohmann::json points_json(const Disk& disk) {
-  nlohmann::json points = nlohmann::json::array();
-  // float -> double is exact: the JSON holds the baked float32 values.
-  for (const Point2& p : disk.points) {
-    points.push_back({static_cast<double>(p[0]), static_cast<double>(p[1])});
-  }
-  return points;
-}
-
-nlohmann::json disk_info_json(const Disk& disk) {
-  return {{"name", disk.name},
-          {"method", disk.method},
-          {"seed", disk.seed},
-          {"count", disk.points.size()},
-          {"normalized_min_distance", disk.normalized_min_distance}};
-}
 
 // The job that produced `source` for `target` (shared or this variant's).
 const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant, Target target,
@@ -42,11 +26,11 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
   nlohmann::json disks = nlohmann::json::object();
   nlohmann::json disk_info = nlohmann::json::object();
   if (variant.blocker_disk) {
-    disks["blocker"] = points_json(*variant.blocker_disk);
+    disks["blocker"] = disk_points_json(*variant.blocker_disk);
     disk_info["blocker"] = disk_info_json(*variant.blocker_disk);
   }
   if (variant.pcf_disk) {
-    disks["pcf"] = points_json(*variant.pcf_disk);
+    disks["pcf"] = disk_points_json(*variant.pcf_disk);
     disk_info["pcf"] = disk_info_json(*variant.pcf_disk);
   }
   out["disks"] = disks;
@@ -80,10 +64,9 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
 
 nlohmann::json variant_keys_json(const VariantKeys& keys) {
   nlohmann::json out = nlohmann::json::object();
-  if (keys.kernel) out["kernel"] = *keys.kernel;
-  if (keys.blocker_samples) out["blocker_samples"] = *keys.blocker_samples;
-  if (keys.pcf_samples) out["pcf_samples"] = *keys.pcf_samples;
-  if (keys.disk) out["disk"] = *keys.disk;
+  for_each_key(keys, [&out](std::string_view name, const auto& key) {
+    if (key) out[std::string(name)] = *key;
+  });
   return out;
 }
 

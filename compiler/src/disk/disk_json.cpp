@@ -6,17 +6,39 @@ namespace penumbra {
 
 // Each float widens to double exactly and nlohmann writes doubles in their
 // shortest round-trip form, so reading a value back into float restores its bits.
-nlohmann::json disk_to_json(const Disk& disk) {
+nlohmann::json disk_points_json(const Disk& disk) {
   nlohmann::json points = nlohmann::json::array();
   for (const Point2& p : disk.points) {
     points.push_back({static_cast<double>(p[0]), static_cast<double>(p[1])});
   }
+  return points;
+}
+
+nlohmann::json disk_info_json(const Disk& disk) {
   return {{"name", disk.name},
           {"method", disk.method},
           {"seed", disk.seed},
           {"count", disk.points.size()},
-          {"normalized_min_distance", disk.normalized_min_distance},
-          {"points", std::move(points)}};
+          {"normalized_min_distance", disk.normalized_min_distance}};
+}
+
+nlohmann::json disk_to_json(const Disk& disk) {
+  nlohmann::json out = disk_info_json(disk);
+  out["points"] = disk_points_json(disk);
+  return out;
+}
+
+// "count" is not read: the points are the count.
+Disk disk_from_json(const nlohmann::json& points, const nlohmann::json& info) {
+  Disk disk;
+  disk.name = info.value("name", "");
+  disk.method = info.value("method", "");
+  disk.seed = info.value("seed", std::uint64_t{0});
+  disk.normalized_min_distance = info.value("normalized_min_distance", 0.0);
+  for (const nlohmann::json& p : points) {
+    disk.points.push_back({p.at(0).get<float>(), p.at(1).get<float>()});
+  }
+  return disk;
 }
 
 }  // namespace penumbra

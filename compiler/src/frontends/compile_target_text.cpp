@@ -3,10 +3,10 @@
 
 #include "frontends/front_end_setup.hpp"
 #include "frontends/shims.hpp"
-#include "frontends/spirv_validation.hpp"
 #include "glsl/glslang_setup.hpp"
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
+#include "spirv/validation.hpp"
 
 namespace penumbra {
 namespace {

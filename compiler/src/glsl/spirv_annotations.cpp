@@ -7,24 +7,14 @@
 #include <spirv/unified1/spirv.hpp>
 #include <string>
 
+#include "spirv/module.hpp"
+
 namespace penumbra {
 namespace {
 
-struct Instruction {
-  std::size_t offset;  // index of the first word
-  spv::Op op;
-  std::uint32_t count;
-};
-
-std::vector<Instruction> instructions(const std::vector<std::uint32_t>& words) {
-  std::vector<Instruction> out;
-  for (std::size_t i = 5; i < words.size();) {
-    const std::uint32_t count = words[i] >> spv::WordCountShift;
-    if (count == 0 || i + count > words.size()) break;
-    out.push_back({i, static_cast<spv::Op>(words[i] & spv::OpCodeMask), count});
-    i += count;
-  }
-  return out;
+// Index of an instruction's first word in `spirv`, the words `module` views.
+std::size_t offset_of(const SpvInstruction& in, const std::vector<std::uint32_t>& spirv) {
+  return static_cast<std::size_t>(in.words.data() - spirv.data());
 }
 
 // An instruction with `operands` followed by a literal string.
@@ -42,50 +32,75 @@ std::vector<std::uint32_t> with_string(spv::Op op, std::vector<std::uint32_t> op
   return out;
 }
 
+// Index of the first word of the debug section, which starts with OpString /
+// OpSource*, then OpName; nullopt for a module without one.
+std::optional<std::size_t> debug_section_start(const std::vector<std::uint32_t>& spirv) {
+  const SpirvModule module(spirv);
+  for (const SpvInstruction& in : module.instructions()) {
+    switch (in.op) {
+      case spv::OpString:
+      case spv::OpSourceContinued:
+      case spv::OpSource:
+      case spv::OpSourceExtension:
+      case spv::OpName:
+      case spv::OpMemberName:
+        return offset_of(in, spirv);
+      default:
+        break;
+    }
+  }
+  return std::nullopt;
+}
+
 bool same_points(const std::vector<Point2>& a, const std::optional<Disk>& disk) {
   return disk && disk->points == a;
 }
 
-}  // namespace
+// The OpNames to add and where: after the last OpName (0: there is none).
+struct DiskNames {
+  std::size_t insert_at = 0;
+  std::vector<std::pair<std::uint32_t, std::string>> names;
+};
 
-void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& variant) {
-  if (!variant.blocker_disk && !variant.pcf_disk) return;
-  const auto list = instructions(spirv);
+// Reads the module without changing it: the view borrows the words, so all
+// reading is done before name_disk_constants inserts.
+DiskNames find_disk_names(const std::vector<std::uint32_t>& spirv, const Variant& variant) {
+  const SpirvModule module(spirv);
   std::set<std::uint32_t> float_types, named;
   std::map<std::uint32_t, float> scalars;
   std::map<std::uint32_t, Point2> pairs;
-  std::size_t insert_at = 0;
-  std::vector<std::pair<std::uint32_t, std::string>> names;
-  for (const Instruction& in : list) {
-    const std::uint32_t* w = &spirv[in.offset];
+  DiskNames found;
+  for (const SpvInstruction& in : module.instructions()) {
     switch (in.op) {
       case spv::OpName:
-        named.insert(w[1]);
-        insert_at = in.offset + in.count;
+        named.insert(in.operand(0));
+        found.insert_at = offset_of(in, spirv) + in.words.size();
         break;
       case spv::OpTypeFloat:
-        if (w[2] == 32) float_types.insert(w[1]);
+        if (in.operand(0) == 32) float_types.insert(in.result_id);
         break;
       case spv::OpConstant:
-        if (float_types.contains(w[1])) scalars[w[2]] = std::bit_cast<float>(w[3]);
+        if (float_types.contains(in.type_id)) {
+          scalars[in.result_id] = std::bit_cast<float>(in.operand(0));
+        }
         break;
       case spv::OpConstantComposite: {
-        const std::uint32_t parts = in.count - 3;
-        if (parts == 2 && scalars.contains(w[3]) && scalars.contains(w[4])) {
-          pairs[w[2]] = {scalars[w[3]], scalars[w[4]]};
+        const std::size_t parts = in.operand_count();
+        if (parts == 2 && scalars.contains(in.operand(0)) && scalars.contains(in.operand(1))) {
+          pairs[in.result_id] = {scalars[in.operand(0)], scalars[in.operand(1)]};
           break;
         }
         std::vector<Point2> points;
-        for (std::uint32_t k = 0; k < parts && pairs.contains(w[3 + k]); ++k) {
-          points.push_back(pairs[w[3 + k]]);
+        for (std::size_t k = 0; k < parts && pairs.contains(in.operand(k)); ++k) {
+          points.push_back(pairs[in.operand(k)]);
         }
-        if (points.size() != parts || named.contains(w[2])) break;
+        if (points.size() != parts || named.contains(in.result_id)) break;
         const bool blocker = same_points(points, variant.blocker_disk);
         const bool pcf = same_points(points, variant.pcf_disk);
         if (blocker || pcf) {
-          names.emplace_back(w[2], blocker && pcf ? "POISSON_DISK"
-                                   : blocker      ? "BLOCKER_DISK"
-                                                  : "PCF_DISK");
+          found.names.emplace_back(in.result_id, blocker && pcf ? "POISSON_DISK"
+                                                 : blocker      ? "BLOCKER_DISK"
+                                                                : "PCF_DISK");
         }
         break;
       }
@@ -93,6 +108,14 @@ void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& varia
         break;
     }
   }
+  return found;
+}
+
+}  // namespace
+
+void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& variant) {
+  if (!variant.blocker_disk && !variant.pcf_disk) return;
+  const auto [insert_at, names] = find_disk_names(spirv, variant);
   if (insert_at == 0) return;  // a module without debug names: leave it as is
   std::vector<std::uint32_t> added;
   for (const auto& [id, name] : names) {
@@ -103,26 +126,13 @@ void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& varia
 }
 
 void add_banner_string(std::vector<std::uint32_t>& spirv, const std::string& text) {
-  // The debug section starts with OpString / OpSource*, then OpName.
-  for (const Instruction& in : instructions(spirv)) {
-    switch (in.op) {
-      case spv::OpString:
-      case spv::OpSourceContinued:
-      case spv::OpSource:
-      case spv::OpSourceExtension:
-      case spv::OpName:
-      case spv::OpMemberName: {
-        const std::uint32_t id = spirv[3];  // header word 3, the bound: the next free id
-        const auto instruction = with_string(spv::OpString, {id}, text);
-        spirv[3] = id + 1;
-        spirv.insert(spirv.begin() + static_cast<std::ptrdiff_t>(in.offset), instruction.begin(),
-                     instruction.end());
-        return;
-      }
-      default:
-        break;
-    }
-  }
+  const auto insert_at = debug_section_start(spirv);
+  if (!insert_at) return;
+  const std::uint32_t id = spirv[3];  // header word 3, the bound: the next free id
+  const auto instruction = with_string(spv::OpString, {id}, text);
+  spirv[3] = id + 1;
+  spirv.insert(spirv.begin() + static_cast<std::ptrdiff_t>(*insert_at), instruction.begin(),
+               instruction.end());
 }
 
 }  // namespace penumbra

@@ -1,20 +1,12 @@
 #include "glsl/variant_header.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <charconv>
 
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra {
 namespace {
-
-std::string upper(std::string_view text) {
-  std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return out;
-}
 
 std::string disk_array(std::string_view name, const Disk& disk) {
   std::string out =
@@ -44,7 +36,7 @@ std::string variant_header(const Variant* variant, Target target) {
   out += target_defines(target);
   if (!variant) return out;
 
-  out += "#define PENUMBRA_TECHNIQUE_" + upper(to_string(variant->technique)) + " 1\n";
+  out += "#define PENUMBRA_TECHNIQUE_" + ascii_upper(to_string(variant->technique)) + " 1\n";
   const VariantKeys& keys = variant->keys;
   if (keys.kernel) out += "#define KERNEL_SIZE " + std::to_string(*keys.kernel) + "\n";
   if (keys.blocker_samples) {

@@ -1,9 +1,10 @@
 #include <cstring>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <type_traits>
 
+#include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra {
 namespace {
@@ -13,18 +14,6 @@ using nlohmann::json;
 Error index_error(const std::filesystem::path& file, const std::string& path,
                   const std::string& message) {
   return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
-}
-
-Disk read_disk(const json& points, const json& info) {
-  Disk disk;
-  disk.name = info.value("name", "");
-  disk.method = info.value("method", "");
-  disk.seed = info.value("seed", std::uint64_t{0});
-  disk.normalized_min_distance = info.value("normalized_min_distance", 0.0);
-  for (const json& p : points) {
-    disk.points.push_back({p.at(0).get<float>(), p.at(1).get<float>()});
-  }
-  return disk;
 }
 
 Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,
@@ -39,17 +28,19 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
   }
   v.technique = *technique;
   const json& keys = j.at("keys");
-  if (keys.contains("kernel")) v.keys.kernel = keys["kernel"].get<int>();
-  if (keys.contains("blocker_samples")) v.keys.blocker_samples = keys["blocker_samples"].get<int>();
-  if (keys.contains("pcf_samples")) v.keys.pcf_samples = keys["pcf_samples"].get<int>();
-  if (keys.contains("disk")) v.keys.disk = keys["disk"].get<std::string>();
+  for_each_key(v.keys, [&keys](std::string_view name, auto& key) {
+    using Value = typename std::decay_t<decltype(key)>::value_type;
+    const std::string member(name);
+    if (keys.contains(member)) key = keys[member].get<Value>();
+  });
   const json& disks = j.at("disks");
   const json info = j.value("disk_info", json::object());
   if (disks.contains("blocker")) {
-    v.blocker_disk = read_disk(disks["blocker"], info.value("blocker", json::object()));
+    v.blocker_disk = disk_from_json(disks["blocker"], info.value("blocker", json::object()));
   }
-  if (disks.contains("pcf"))
-    v.pcf_disk = read_disk(disks["pcf"], info.value("pcf", json::object()));
+  if (disks.contains("pcf")) {
+    v.pcf_disk = disk_from_json(disks["pcf"], info.value("pcf", json::object()));
+  }
   for (const json& t : j.at("targets")) {
     auto target = parse_target(t.get<std::string>());
     if (!target) {
@@ -83,15 +74,15 @@ const LibraryVariant* Library::find(std::string_view name) const {
 
 Result<Library> load_library(const std::filesystem::path& root) {
   const std::filesystem::path file = root / "index.json";
-  std::ifstream in(file);
-  if (!in) {
+  const Result<std::string> text = read_file(file);
+  if (!text) {
     return make_error(Error::Kind::io, file.string(),
                       "cannot open the library index (run `penumbra build` first)");
   }
   Library library;
   library.root = root;
   try {
-    const json j = json::parse(in);
+    const json j = json::parse(*text);
     library.generator = j.at("generator").get<std::string>();
     if (j.value("schema", 0) != 1) {
       return index_error(file, "/schema", "unsupported index schema; this penumbra reads 1");
@@ -110,11 +101,9 @@ Result<Library> load_library(const std::filesystem::path& root) {
 }
 
 Result<std::vector<std::uint32_t>> read_spirv_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(Error::Kind::io, path.string(), "cannot open the SPIR-V file");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  const std::string data = bytes.str();
+  const Result<std::string> bytes = read_file(path);
+  if (!bytes) return make_error(Error::Kind::io, path.string(), "cannot open the SPIR-V file");
+  const std::string& data = *bytes;
   if (data.size() < 20 || data.size() % 4 != 0) {
     return make_error(Error::Kind::bad_input, path.string(), "not a SPIR-V module (bad size)");
   }

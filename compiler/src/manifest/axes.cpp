@@ -1,5 +1,7 @@
 #include "manifest/axes.hpp"
 
+#include <cstddef>
+
 #include "penumbra/compiler/disk.hpp"
 
 namespace penumbra::manifest_detail {
@@ -64,18 +66,9 @@ Result<std::string> read_disk(const JsonNode& node,
 
 }  // namespace
 
+// Axis lists the keys in kVariantKeyNames order.
 std::string_view axis_name(Axis axis) {
-  switch (axis) {
-    case Axis::kernel:
-      return "kernel";
-    case Axis::blocker_samples:
-      return "blocker_samples";
-    case Axis::pcf_samples:
-      return "pcf_samples";
-    case Axis::disk:
-      return "disk";
-  }
-  return {};
+  return kVariantKeyNames[static_cast<std::size_t>(axis)];
 }
 
 bool uses(Technique technique, Axis axis) {

@@ -17,7 +17,8 @@ namespace penumbra::manifest_detail {
 inline constexpr std::array<std::string_view, 6> kAxisKeys = {
     "technique", "blocker_samples", "pcf_samples", "kernel", "disk", "target"};
 
-// The keys a technique may need; every variant has targets.
+// The keys a technique may need, in kVariantKeyNames order; every variant has
+// targets.
 enum class Axis { kernel, blocker_samples, pcf_samples, disk };
 inline constexpr std::array kKeyAxes = {Axis::kernel, Axis::blocker_samples, Axis::pcf_samples,
                                         Axis::disk};

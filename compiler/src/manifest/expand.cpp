@@ -1,7 +1,10 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <tuple>
+#include <utility>
 
 #include "manifest/axes.hpp"
 #include "penumbra/compiler/disk.hpp"
@@ -63,7 +66,22 @@ Result<Disk> resolve_disk(const Manifest& manifest, const std::string& family, i
   return disk;
 }
 
-Result<Variant> make_variant(const Manifest& manifest, Technique technique,
+// Disks already made in this expansion, by (family, count): every variant
+// with the same disk and sample count gets the same points, generated once.
+using DiskCache = std::map<std::pair<std::string, int>, Disk>;
+
+// Only successes are kept: an error stops the expansion, and its message
+// names the sample axis that asked.
+Result<Disk> cached_disk(DiskCache& cache, const Manifest& manifest, const std::string& family,
+                         int count, std::string_view key) {
+  const auto found = cache.find({family, count});
+  if (found != cache.end()) return found->second;
+  Result<Disk> disk = resolve_disk(manifest, family, count, key);
+  if (disk) cache.emplace(std::pair{family, count}, *disk);
+  return disk;
+}
+
+Result<Variant> make_variant(DiskCache& cache, const Manifest& manifest, Technique technique,
                              const VariantKeys& keys) {
   Variant variant;
   variant.name = variant_name(technique, keys);
@@ -71,12 +89,12 @@ Result<Variant> make_variant(const Manifest& manifest, Technique technique,
   variant.keys = keys;
   if (keys.blocker_samples && keys.disk) {
     Result<Disk> disk =
-        resolve_disk(manifest, *keys.disk, *keys.blocker_samples, "blocker_samples");
+        cached_disk(cache, manifest, *keys.disk, *keys.blocker_samples, "blocker_samples");
     if (!disk) return disk.error();
     variant.blocker_disk = std::move(*disk);
   }
   if (keys.pcf_samples && keys.disk) {
-    Result<Disk> disk = resolve_disk(manifest, *keys.disk, *keys.pcf_samples, "pcf_samples");
+    Result<Disk> disk = cached_disk(cache, manifest, *keys.disk, *keys.pcf_samples, "pcf_samples");
     if (!disk) return disk.error();
     variant.pcf_disk = std::move(*disk);
   }
@@ -126,13 +144,14 @@ bool variant_less(const Variant& a, const Variant& b) {
 // once and gets the union of their targets.
 Result<std::vector<Variant>> expand(const Manifest& manifest) {
   std::map<std::string, Variant> by_name;
+  DiskCache disks;
   for (const VariantSet& set : manifest.sets) {
     for (Technique technique : set.axes.technique) {
       for (const VariantKeys& keys : key_product(technique, set.axes)) {
         const std::string name = variant_name(technique, keys);
         auto it = by_name.find(name);
         if (it == by_name.end()) {
-          Result<Variant> variant = make_variant(manifest, technique, keys);
+          Result<Variant> variant = make_variant(disks, manifest, technique, keys);
           if (!variant) {
             return make_error(variant.error().kind, manifest.source + ": " + set.json_path,
                               "variant " + name + ": " + variant.error().message);

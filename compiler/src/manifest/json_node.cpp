@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "penumbra/support/text.hpp"
+
 namespace penumbra::manifest_detail {
 namespace {
 
@@ -28,15 +30,6 @@ std::string describe(const nlohmann::json& value) {
 }
 
 }  // namespace
-
-std::string join(std::span<const std::string_view> names) {
-  std::string out;
-  for (std::string_view name : names) {
-    if (!out.empty()) out += ", ";
-    out += name;
-  }
-  return out;
-}
 
 bool JsonNode::has(std::string_view key) const {
   return value_->is_object() && value_->contains(key);
@@ -74,7 +67,7 @@ Status JsonNode::expect_keys(std::span<const std::string_view> allowed) const {
     bool known = false;
     for (std::string_view name : allowed) known = known || name == key;
     if (!known) {
-      return member(key).error("unknown key '" + key + "'; allowed keys: " + join(allowed));
+      return member(key).error("unknown key '" + key + "'; allowed keys: " + join(allowed, ", "));
     }
   }
   return {};

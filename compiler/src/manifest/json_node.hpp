@@ -55,7 +55,4 @@ class JsonNode {
   std::string path_;
 };
 
-// "a, b, c", for messages that list what is allowed.
-std::string join(std::span<const std::string_view> names);
-
 }  // namespace penumbra::manifest_detail

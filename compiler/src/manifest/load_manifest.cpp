@@ -1,7 +1,5 @@
-#include <fstream>
-#include <iterator>
-
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra {
 
@@ -14,11 +12,9 @@ Result<Manifest> load_manifest(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return io_error("no such file");
   if (std::filesystem::is_directory(path, ec)) return io_error("it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return io_error("the file could not be opened");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) return io_error("reading failed");
-  return parse_manifest(text, name);
+  Result<std::string> text = read_file(path);
+  if (!text) return io_error(text.error().message);
+  return parse_manifest(*text, name);
 }
 
 Result<std::vector<Variant>> load_variants(const std::filesystem::path& path) {

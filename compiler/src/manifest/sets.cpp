@@ -2,6 +2,7 @@
 
 #include "manifest/axes.hpp"
 #include "manifest/sections.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra::manifest_detail {
 namespace {
@@ -49,7 +50,8 @@ Result<Exclusion> read_exclusion(const JsonNode& node, const Manifest& manifest)
       match.technique.empty() && match.target.empty() &&
       std::ranges::none_of(kKeyAxes, [&](Axis axis) { return is_given(match, axis); });
   if (empty) {
-    return node.error("an exclusion needs at least one key; allowed keys: " + join(kAxisKeys));
+    return node.error("an exclusion needs at least one key; allowed keys: " +
+                      join(kAxisKeys, ", "));
   }
   return exclusion;
 }

@@ -3,7 +3,7 @@
 // instruction table). Calls, loops and branches are costed by the caller.
 #pragma once
 
-#include "targets/spirv_module.hpp"
+#include "spirv/module.hpp"
 
 namespace penumbra {
 

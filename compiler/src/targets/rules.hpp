@@ -4,7 +4,7 @@
 #pragma once
 
 #include "penumbra/compiler/stage.hpp"
-#include "targets/spirv_module.hpp"
+#include "spirv/module.hpp"
 
 namespace penumbra {
 

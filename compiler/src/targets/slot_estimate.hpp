@@ -4,7 +4,7 @@
 // unrolls the loops that ps_3_0 cannot keep rolled.
 #pragma once
 
-#include "targets/spirv_module.hpp"
+#include "spirv/module.hpp"
 
 namespace penumbra {
 

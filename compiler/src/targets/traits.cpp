@@ -1,7 +1,5 @@
-#include <algorithm>
-#include <cctype>
-
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra {
 
@@ -23,10 +21,7 @@ TargetTraits traits(Target target) {
 }
 
 std::string target_defines(Target target) {
-  std::string name(to_string(target));
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  std::string out = "#define PENUMBRA_TARGET_" + name + " 1\n";
+  std::string out = "#define PENUMBRA_TARGET_" + ascii_upper(to_string(target)) + " 1\n";
   out += "#define PENUMBRA_HAS_COMPARISON_SAMPLER ";
   out += traits(target).comparison_sampler ? "1\n" : "0\n";
   return out;

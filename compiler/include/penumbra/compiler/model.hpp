@@ -3,10 +3,12 @@
 #pragma once
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "penumbra/support/result.hpp"
@@ -50,6 +52,21 @@ struct VariantKeys {
   std::optional<int> pcf_samples;      // pcf_poisson, pcss
   std::optional<std::string> disk;     // disk family name: pcf_poisson, pcss
 };
+
+// The keys' names, in the one order every listing of keys follows.
+inline constexpr std::array<std::string_view, 4> kVariantKeyNames = {"kernel", "blocker_samples",
+                                                                     "pcf_samples", "disk"};
+
+// Calls f(name, key) for each key in kVariantKeyNames order, set or not; `key`
+// is the std::optional member, const when `keys` is.
+template <typename Keys, typename F>
+requires std::same_as<std::remove_const_t<Keys>, VariantKeys>
+void for_each_key(Keys& keys, F&& f) {
+  f(kVariantKeyNames[0], keys.kernel);
+  f(kVariantKeyNames[1], keys.blocker_samples);
+  f(kVariantKeyNames[2], keys.pcf_samples);
+  f(kVariantKeyNames[3], keys.disk);
+}
 
 // One fully specified permutation: what gets compiled and verified.
 struct Variant {

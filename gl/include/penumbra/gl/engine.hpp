@@ -9,14 +9,13 @@
 // Every failure is a returned Error, never an exception.
 #pragma once
 
-#include <array>
-#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/image.hpp"
+#include "penumbra/support/param_block.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {
@@ -59,14 +58,13 @@ class GlEngine {
   // full-screen triangle into an R32F target of the receivers' size and reads
   // it back (one channel, row 0 first). `normalized_depth` is one channel of
   // depth in [0, 1]; `receivers` holds (u, v, z_r) in 3 or 4 channels.
-  // `params` maps ShadowParams member names to vec4 values (the runtime's
-  // ParamBlock): every member the program uses must be present; extra
-  // entries are ignored.
+  // `params` maps ShadowParams member names to vec4 values: every member the
+  // program uses must be present; extra entries are ignored.
   // Errors: compile (a stage's or the link's log), bad_input (inputs, or a
   // name outside the shader interface, or a missing parameter), device.
   Result<FloatImage> run_query(std::string_view vertex_text, std::string_view fragment_text,
                                const FloatImage& normalized_depth, const FloatImage& receivers,
-                               const std::map<std::string, std::array<float, 4>>& params);
+                               const ParamBlock& params);
 
  private:
   explicit GlEngine(std::unique_ptr<gl::Context> context);

@@ -1,4 +1,4 @@
-#include "frontends/spirv_validation.hpp"
+#include "spirv/validation.hpp"
 
 #include <spirv-tools/libspirv.hpp>
 #include <string>

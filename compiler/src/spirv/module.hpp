@@ -1,6 +1,7 @@
-// A read-only view of a SPIR-V module for the target rules: instructions
-// with their result ids, definitions by id, and each function's blocks with
-// their structured-control-flow merges. It borrows the words it is given.
+// A read-only view of a SPIR-V module for the target rules and the debug
+// annotations: instructions with their result ids, definitions by id, and
+// each function's blocks with their structured-control-flow merges. It
+// borrows the words it is given.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,5 @@
-// spirv-val with Vulkan 1.0 rules for a front end's SPIR-V.
+// spirv-val with Vulkan 1.0 rules: the one validator wrapper for the
+// pipeline's SPIR-V and for a front end's SPIR-V.
 #pragma once
 
 #include <cstdint>

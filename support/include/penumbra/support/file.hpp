@@ -1,0 +1,15 @@
+// Reading a whole file.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "penumbra/support/result.hpp"
+
+namespace penumbra {
+
+// The file's bytes, unchanged (binary mode). An Error of kind io, located at
+// `path`, when the file cannot be opened or read.
+Result<std::string> read_file(const std::filesystem::path& path);
+
+}  // namespace penumbra
