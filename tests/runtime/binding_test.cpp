@@ -11,30 +11,12 @@ namespace {
 
 const test::TestLight kLight;
 
-class BindingTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    engine_ = test::make_engine();
-    ASSERT_NE(engine_, nullptr);
-    auto map = engine_->upload_shadow_map(FloatImage(2, 2, 1, 0.5f));
-    ASSERT_TRUE(map) << map.error().to_string();
-    map_ = *map;
-  }
-
-  Error query_error(const PassProgram& program, const ParamBlock& params) {
-    auto result = engine_->run_query(program, *map_, FloatImage(2, 2, 3), params);
-    EXPECT_FALSE(result);
-    return result ? Error{} : result.error();
-  }
-
-  std::unique_ptr<Engine> engine_;
-  std::shared_ptr<ShadowMap> map_;
-};
+class BindingTest : public test::EngineWithMapTest {};
 
 TEST_F(BindingTest, MissingParamBlockMemberIsNamed) {
   ParamBlock params = test::make_params(kLight, 2, 2, 2, 2);
   params.erase("sampling");
-  const Error error = query_error(test::compare_program(), params);
+  const Error error = failed_query(test::compare_program(), params);
   EXPECT_EQ(error.kind, Error::Kind::bad_input);
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
@@ -50,7 +32,7 @@ TEST_F(BindingTest, ExtraParamBlockEntriesAreIgnored) {
 
 TEST_F(BindingTest, UnknownSamplerIsNamedWithTheAllowedNames) {
   const Error error =
-      query_error(test::unknown_sampler_program(), test::make_params(kLight, 2, 2, 2, 2));
+      failed_query(test::unknown_sampler_program(), test::make_params(kLight, 2, 2, 2, 2));
   EXPECT_EQ(error.kind, Error::Kind::bad_input);
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
@@ -61,21 +43,21 @@ TEST_F(BindingTest, UnknownSamplerIsNamedWithTheAllowedNames) {
 TEST_F(BindingTest, UnknownUniformBlockIsNamed) {
   PassProgram program = test::compare_program();
   program.frag.iface.uniform_blocks[0].type_name = "Globals";
-  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
   EXPECT_NE(error.message.find("uniform block 'Globals'"), std::string::npos) << error.message;
 }
 
 TEST_F(BindingTest, SamplerOfTheWrongKindIsNamed) {
   PassProgram program = test::compare_program();
   program.frag.iface.sampled_images[1].comparison = false;  // shadow_cmp as a plain sampler2D
-  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
   EXPECT_EQ(error.message, "sampler 'shadow_cmp' must be a sampler2DShadow (comparison sampler)");
 }
 
 TEST_F(BindingTest, TwoResourcesOnOneBindingAreNamed) {
   PassProgram program = test::compare_program();
   program.frag.iface.sampled_images[1].binding = 1;  // shadow_cmp onto shadow_depth's binding
-  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
   EXPECT_EQ(error.message, "'shadow_depth' and 'shadow_cmp' share set 0 binding 1");
 }
 
@@ -92,7 +74,7 @@ TEST_F(BindingTest, TheDepthPassBindsOnlyShadowParams) {
 TEST_F(BindingTest, VertexInputMustMatchThePass) {
   PassProgram program = test::compare_program();
   program.vert.iface.inputs[0].components = 3;
-  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
   EXPECT_EQ(error.message,
             "vertex input 'position' has 3 components; the query pass supplies position (2 "
             "floats) at location 0");
@@ -112,7 +94,7 @@ TEST(ParamBlockKeyTest, MembersReadTheKeyWithoutTheInstancePrefix) {
 TEST_F(BindingTest, NonSpirvIsRefused) {
   PassProgram program = test::compare_program();
   program.frag.spirv = {1, 2, 3, 4, 5, 6};
-  const Error error = query_error(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
   EXPECT_EQ(error.where, "query pass fragment shader");
   EXPECT_NE(error.message.find("is not a SPIR-V module"), std::string::npos);
 }

@@ -136,4 +136,18 @@ FloatImage receivers_row(const std::vector<std::array<float, 3>>& points) {
   return image;
 }
 
+void EngineWithMapTest::SetUp() {
+  engine_ = make_engine();
+  ASSERT_NE(engine_, nullptr);
+  auto map = engine_->upload_shadow_map(FloatImage(2, 2, 1, 0.5f));
+  ASSERT_TRUE(map) << map.error().to_string();
+  map_ = *map;
+}
+
+Error EngineWithMapTest::failed_query(const PassProgram& program, const ParamBlock& params) {
+  auto result = engine_->run_query(program, *map_, FloatImage(2, 2, 3), params);
+  EXPECT_FALSE(result);
+  return result ? Error{} : result.error();
+}
+
 }  // namespace penumbra::test

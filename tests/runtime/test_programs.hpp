@@ -2,6 +2,8 @@
 // with reflection records written by hand to match the GLSL.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -43,5 +45,18 @@ void add_caster_quad(std::vector<std::array<float, 3>>& triangles, const TestLig
 
 // A receivers image of one row holding the (u, v, z_r) points in order.
 FloatImage receivers_row(const std::vector<std::array<float, 3>>& points);
+
+// A fixture for binding errors: an engine and a 2 x 2 shadow map to query.
+class EngineWithMapTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+
+  // Runs `program` over a 2 x 2 receivers image; expects it to fail and
+  // returns the error (an empty Error, with a test failure, if it ran).
+  Error failed_query(const PassProgram& program, const ParamBlock& params);
+
+  std::unique_ptr<Engine> engine_;
+  std::shared_ptr<ShadowMap> map_;
+};
 
 }  // namespace penumbra::test

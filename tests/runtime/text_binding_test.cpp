@@ -12,22 +12,13 @@ namespace {
 
 const test::TestLight kLight;
 
-class TextBindingTest : public ::testing::Test {
+class TextBindingTest : public test::EngineWithMapTest {
  protected:
-  void SetUp() override {
-    engine_ = test::make_engine();
-    ASSERT_NE(engine_, nullptr);
-    auto map = engine_->upload_shadow_map(FloatImage(2, 2, 1, 0.5f));
-    ASSERT_TRUE(map) << map.error().to_string();
-    map_ = *map;
-  }
-
-  std::string query_error(const PassProgram& program, ParamBlock params) {
-    auto result = engine_->run_query(program, *map_, FloatImage(2, 2, 3), params);
-    EXPECT_FALSE(result);
-    if (result) return "";
-    EXPECT_EQ(result.error().where, "query pass");
-    return result.error().message;
+  std::string query_error(const PassProgram& program, const ParamBlock& params) {
+    const Error error = failed_query(program, params);
+    if (error.message.empty()) return "";
+    EXPECT_EQ(error.where, "query pass");
+    return error.message;
   }
 
   std::string depth_error(const PassProgram& program) {
@@ -36,8 +27,6 @@ class TextBindingTest : public ::testing::Test {
     return result ? "" : result.error().message;
   }
 
-  std::unique_ptr<Engine> engine_;
-  std::shared_ptr<ShadowMap> map_;
   ParamBlock params_ = test::make_params(kLight, 2, 2, 2, 2);
 };
 
