@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra {
 namespace {
@@ -27,14 +26,22 @@ Result<const PassFiles*> pass_files(const LibraryVariant& variant, PassKind pass
   return &by_pass->second.at(target);
 }
 
+// Where one stage of a pass lives in the library.
+Result<std::filesystem::path> stage_path(const Library& library, const LibraryVariant& variant,
+                                         PassKind pass, Target target, ShaderStage stage) {
+  auto files = pass_files(variant, pass, target);
+  if (!files) return files.error();
+  return library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
+}
+
 // Compiles one stage's emitted text with the target's front end.
 Result<StageCode> text_stage(const Library& library, const LibraryVariant& variant, PassKind pass,
                              Target target, ShaderStage stage, Execution& execution) {
-  auto text = read_pass_file(library, variant, pass, target, stage);
+  auto path = stage_path(library, variant, pass, target, stage);
+  if (!path) return path.error();
+  auto text = read_file(*path);
   if (!text) return text.error();
-  auto files = pass_files(variant, pass, target);
-  const std::string& rel = stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag;
-  auto compiled = compile_target_text(target, stage, *text, (library.root / rel).string());
+  auto compiled = compile_target_text(target, stage, *text, path->string());
   if (!compiled) return compiled.error();
   execution.front_end = compiled->front_end;
   for (const std::string& shim : compiled->shims) {
@@ -42,35 +49,28 @@ Result<StageCode> text_stage(const Library& library, const LibraryVariant& varia
       execution.shims.push_back(shim);
     }
   }
-  return reflected(std::move(compiled->spirv), (library.root / rel).string());
+  return reflected(std::move(compiled->spirv), path->string());
 }
 
 }  // namespace
 
 Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
                                    PassKind pass, Target target, ShaderStage stage) {
-  auto files = pass_files(variant, pass, target);
-  if (!files) return files.error();
-  const auto path = library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(Error::Kind::io, path.string(), "cannot open the shader file");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
+  auto path = stage_path(library, variant, pass, target, stage);
+  if (!path) return path.error();
+  return read_file(*path);
 }
 
 Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
                                           PassKind pass, Target target) {
   ExecutableProgram out;
   if (target == Target::spirv) {
-    auto files = pass_files(variant, pass, target);
-    if (!files) return files.error();
     for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
-      const auto path =
-          library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
-      auto words = read_spirv_file(path);
+      auto path = stage_path(library, variant, pass, target, stage);
+      if (!path) return path.error();
+      auto words = read_spirv_file(*path);
       if (!words) return words.error();
-      auto code = reflected(std::move(*words), path.string());
+      auto code = reflected(std::move(*words), path->string());
       if (!code) return code.error();
       (stage == ShaderStage::vertex ? out.program.vert : out.program.frag) = std::move(*code);
     }
