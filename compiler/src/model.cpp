@@ -9,7 +9,7 @@ namespace {
 
 // Indexed by the enum values, so the order must follow the enum declarations.
 constexpr std::array<std::string_view, kAllTechniques.size()> kTechniqueNames = {
-    "hard", "pcf_grid", "pcf_poisson", "pcss"};
+    "hard", "pcf_grid", "pcf_poisson", "pcss", "minmax_pcf", "backprojection", "pcss_minmax"};
 constexpr std::array<std::string_view, kAllTargets.size()> kTargetNames = {
     "spirv", "glsl450", "glsl330", "essl300", "hlsl_dx10", "hlsl_dx9"};
 
@@ -48,7 +48,12 @@ std::string allowed_targets() {
   return join(kTargetNames, ", ");
 }
 
-// Keys are appended in a fixed order (k, b, p, disk) and only when set, so the
+bool uses_minmax_mip(Technique technique) {
+  return technique == Technique::minmax_pcf || technique == Technique::backprojection ||
+         technique == Technique::pcss_minmax;
+}
+
+// Keys are appended in a fixed order (k, b, p, disk, traversal, n) and only when set, so the
 // name is total over any VariantKeys and stays stable across runs.
 std::string variant_name(Technique technique, const VariantKeys& keys) {
   std::string name(to_string(technique));
@@ -56,6 +61,8 @@ std::string variant_name(Technique technique, const VariantKeys& keys) {
   if (keys.blocker_samples) name += "_b" + std::to_string(*keys.blocker_samples);
   if (keys.pcf_samples) name += "_p" + std::to_string(*keys.pcf_samples);
   if (keys.disk) name += "_" + *keys.disk;
+  if (keys.traversal) name += "_" + *keys.traversal;
+  if (keys.max_nodes) name += "_n" + std::to_string(*keys.max_nodes);
   return name;
 }
 

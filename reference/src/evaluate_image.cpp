@@ -43,6 +43,10 @@ Status check_variant(const Variant& variant) {
       PENUMBRA_TRY(check_disk(variant, variant.blocker_disk, "blocker", keys.blocker_samples,
                               "blocker_samples"));
       return check_disk(variant, variant.pcf_disk, "pcf", keys.pcf_samples, "pcf_samples");
+    case Technique::minmax_pcf:
+    case Technique::backprojection:
+    case Technique::pcss_minmax:
+      return bad_variant(variant, "TRANSITIONAL: reference not written yet");
   }
   return bad_variant(variant, "unknown technique");
 }

@@ -15,9 +15,16 @@ double tolerance(Technique technique, const SamplingPrecision& precision) {
       // Point samples give exactly 0 or 1; the GPU can only differ by reading
       // another texel, and those pixels are marked ambiguous and skipped.
       return kFloatSlack;
+    case Technique::minmax_pcf:
+      // An integer count of point compares, 1 - C / K^2 in float: bit-exact.
+      return 0.0;
+    case Technique::backprojection:
+      // Exact compares; only float32 sums of patch areas differ (issue 4).
+      return 1e-4;
     case Technique::pcf_grid:
     case Technique::pcf_poisson:
     case Technique::pcss:
+    case Technique::pcss_minmax:
       // A bilinear comparison is w . c with c in {0, 1}^4. If each axis
       // weight is off by at most one step e, the blend moves by at most
       // |da| + |db| <= 2e, and a mean of such samples by no more.

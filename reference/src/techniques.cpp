@@ -92,6 +92,10 @@ Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightPar
     case Technique::pcss:
       return pcss(map, light, query, z_ref, variant.blocker_disk.value(), variant.pcf_disk.value(),
                   precision);
+    case Technique::minmax_pcf:
+    case Technique::backprojection:
+    case Technique::pcss_minmax:
+      return {};  // TRANSITIONAL
   }
   return {};
 }

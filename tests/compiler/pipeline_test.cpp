@@ -39,6 +39,16 @@ Variant make_variant(Technique technique) {
       v.blocker_disk = whitepaper16();
       v.pcf_disk = whitepaper16();
       break;
+    case Technique::minmax_pcf:
+      v.keys.kernel = 12;
+      break;
+    case Technique::backprojection:
+      break;
+    case Technique::pcss_minmax:
+      v.keys.pcf_samples = 16;
+      v.keys.disk = "whitepaper16";
+      v.pcf_disk = whitepaper16();
+      break;
   }
   v.name = variant_name(technique, v.keys);
   return v;

@@ -49,11 +49,13 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     v.targets.push_back(*target);
   }
   for (auto& [pass_name, by_target] : j.at("passes").items()) {
-    if (pass_name != "depth" && pass_name != "query") {
+    const std::optional<PassKind> parsed = parse_pass(pass_name);
+    if (!parsed) {
       return index_error(file, path + "/passes/" + pass_name,
-                         "unknown pass; this penumbra knows: depth, query");
+                         "unknown pass; this penumbra knows: depth, minmax_init, minmax_reduce, "
+                         "query");
     }
-    const PassKind pass = pass_name == "depth" ? PassKind::depth : PassKind::query;
+    const PassKind pass = *parsed;
     for (auto& [target_name, files] : by_target.items()) {
       auto target = parse_target(target_name);
       if (!target) continue;

@@ -81,6 +81,12 @@ bool uses(Technique technique, Axis axis) {
       return axis == Axis::pcf_samples || axis == Axis::disk;
     case Technique::pcss:
       return axis != Axis::kernel;
+    case Technique::minmax_pcf:
+      return axis == Axis::kernel;
+    case Technique::backprojection:
+      return false;
+    case Technique::pcss_minmax:
+      return axis == Axis::pcf_samples || axis == Axis::disk;
   }
   return false;
 }

@@ -32,7 +32,7 @@ std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes
          axis_values(technique, Axis::blocker_samples, axes.blocker_samples)) {
       for (const auto& pcf : axis_values(technique, Axis::pcf_samples, axes.pcf_samples)) {
         for (const auto& disk : axis_values(technique, Axis::disk, axes.disk)) {
-          out.push_back({kernel, blocker, pcf, disk});
+          out.push_back({kernel, blocker, pcf, disk, std::nullopt, std::nullopt});
         }
       }
     }

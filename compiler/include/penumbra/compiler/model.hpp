@@ -15,11 +15,20 @@
 
 namespace penumbra {
 
-enum class Technique { hard, pcf_grid, pcf_poisson, pcss };
+enum class Technique {
+  hard,
+  pcf_grid,
+  pcf_poisson,
+  pcss,
+  minmax_pcf,
+  backprojection,
+  pcss_minmax,
+};
 enum class Target { spirv, glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9 };
 
-inline constexpr std::array kAllTechniques = {Technique::hard, Technique::pcf_grid,
-                                              Technique::pcf_poisson, Technique::pcss};
+inline constexpr std::array kAllTechniques = {
+    Technique::hard,       Technique::pcf_grid,       Technique::pcf_poisson, Technique::pcss,
+    Technique::minmax_pcf, Technique::backprojection, Technique::pcss_minmax};
 inline constexpr std::array kAllTargets = {Target::spirv,   Target::glsl450,   Target::glsl330,
                                            Target::essl300, Target::hlsl_dx10, Target::hlsl_dx9};
 
@@ -30,6 +39,10 @@ std::optional<Target> parse_target(std::string_view name);
 // "hard, pcf_grid, ..." for messages that list what is allowed.
 std::string allowed_techniques();
 std::string allowed_targets();
+
+// Whether the technique reads the min-max depth mip (seed 002), so its
+// variants need the mip build passes.
+bool uses_minmax_mip(Technique technique);
 
 // Largest sample count / kernel size any variant may use.
 inline constexpr int kMaxSamples = 128;
@@ -47,15 +60,17 @@ struct Disk {
 
 // The keys that select a variant of a technique. Unused keys stay empty.
 struct VariantKeys {
-  std::optional<int> kernel;           // pcf_grid: odd K
-  std::optional<int> blocker_samples;  // pcss
-  std::optional<int> pcf_samples;      // pcf_poisson, pcss
-  std::optional<std::string> disk;     // disk family name: pcf_poisson, pcss
+  std::optional<int> kernel;              // pcf_grid: odd K; minmax_pcf: any K
+  std::optional<int> blocker_samples;     // pcss
+  std::optional<int> pcf_samples;         // pcf_poisson, pcss, pcss_minmax
+  std::optional<std::string> disk;        // disk family name: pcf_poisson, pcss, pcss_minmax
+  std::optional<std::string> traversal;   // minmax_pcf, backprojection: "brute_force"; unset = mip
+  std::optional<int> max_nodes;           // backprojection: traversal work bound; unset = default
 };
 
 // The keys' names, in the one order every listing of keys follows.
-inline constexpr std::array<std::string_view, 4> kVariantKeyNames = {"kernel", "blocker_samples",
-                                                                     "pcf_samples", "disk"};
+inline constexpr std::array<std::string_view, 6> kVariantKeyNames = {
+    "kernel", "blocker_samples", "pcf_samples", "disk", "traversal", "max_nodes"};
 
 // Calls f(name, key) for each key in kVariantKeyNames order, set or not; `key`
 // is the std::optional member, const when `keys` is.
@@ -66,6 +81,8 @@ void for_each_key(Keys& keys, F&& f) {
   f(kVariantKeyNames[1], keys.blocker_samples);
   f(kVariantKeyNames[2], keys.pcf_samples);
   f(kVariantKeyNames[3], keys.disk);
+  f(kVariantKeyNames[4], keys.traversal);
+  f(kVariantKeyNames[5], keys.max_nodes);
 }
 
 // One fully specified permutation: what gets compiled and verified.
@@ -79,7 +96,8 @@ struct Variant {
 };
 
 // Builds the stable variant name from technique and keys:
-// hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16.
+// hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16,
+// minmax_pcf_k16_brute_force, backprojection_n4096.
 std::string variant_name(Technique technique, const VariantKeys& keys);
 
 }  // namespace penumbra

@@ -4,7 +4,9 @@
 // its own product, like a SPIRV-Tools Pass.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,8 +19,16 @@
 namespace penumbra {
 
 // A pass of the shadow pipeline; each is a vertex + fragment pair.
-enum class PassKind { depth, query };
+enum class PassKind {
+  depth,          // the shadow map (the whitepaper's step 1)
+  minmax_init,    // min-max mip level 1 from the map (seed 002)
+  minmax_reduce,  // min-max mip level l + 1 from level l
+  query,          // a technique's visibility per receiver
+};
+inline constexpr std::array kAllPassKinds = {PassKind::depth, PassKind::minmax_init,
+                                             PassKind::minmax_reduce, PassKind::query};
 std::string_view to_string(PassKind pass);
+std::optional<PassKind> parse_pass(std::string_view name);
 std::string_view to_string(ShaderStage stage);
 
 // One shader stage of one pass, for one target, of one variant (or shared by
