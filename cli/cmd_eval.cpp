@@ -1,4 +1,9 @@
+#include <unistd.h>
+
+#include <filesystem>
 #include <iostream>
+#include <string>
+#include <system_error>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -8,6 +13,8 @@
 namespace penumbra::cli {
 namespace {
 
+namespace fs = std::filesystem;
+
 struct EvalArgs {
   std::string library;
   std::string variant;
@@ -15,13 +22,32 @@ struct EvalArgs {
   std::string shadow_map;
   std::string receivers;
   std::string output;
+  std::string texel_reads;  // optional Pf of the query's per-pixel texel reads
   std::string device;
   bool reference = false;
   reference::LightParams light;
   double filter_radius = 0.0;  // 0: the default, 2 texels
 };
 
-Result<FloatImage> run_eval(const EvalArgs& args) {
+// Whether `a` and `b` name the same file, however spelled (neither need exist).
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code a_error, b_error;
+  const fs::path a_path = fs::weakly_canonical(a, a_error);
+  const fs::path b_path = fs::weakly_canonical(b, b_error);
+  return !a_error && !b_error && a_path == b_path;
+}
+
+Result<QueryOutput> run_eval(const EvalArgs& args) {
+  if (args.reference && !args.texel_reads.empty()) {
+    return make_error(Error::Kind::bad_input, "--texel-reads",
+                      "texel reads are counted by the shaders on the device; they are not "
+                      "available with --reference");
+  }
+  if (!args.texel_reads.empty() && same_file(args.output, args.texel_reads)) {
+    return make_error(
+        Error::Kind::bad_input, "--texel-reads " + args.texel_reads,
+        "is the same file as -o " + args.output + "; the texel reads need a file of their own");
+  }
   auto library = load_library(args.library);
   if (!library) return library.error();
   const LibraryVariant* variant = library->find(args.variant);
@@ -44,10 +70,57 @@ Result<FloatImage> run_eval(const EvalArgs& args) {
   inputs.light = args.light;
   if (args.filter_radius > 0.0) inputs.light.filter_radius_uv = args.filter_radius;
 
-  if (args.reference) return eval_reference(*variant, inputs);
+  if (args.reference) {
+    auto visibility = eval_reference(*variant, inputs);
+    if (!visibility) return visibility.error();
+    return QueryOutput{std::move(*visibility), {}, std::nullopt};
+  }
   auto engine = Engine::create(EngineOptions{.device = args.device}, stderr_diagnostics(false));
   if (!engine) return engine.error();
   return eval_on_device(*library, *variant, *target, inputs, **engine);
+}
+
+// `path`'s temporary for write_outputs, beside it so a rename moves it in.
+fs::path staged(const fs::path& path) {
+  return path.parent_path() /
+         ("." + path.filename().string() + ".eval-" + std::to_string(::getpid()));
+}
+
+Error io_error(const fs::path& path, std::string message) {
+  return make_error(Error::Kind::io, path.string(), std::move(message));
+}
+
+// Writes the visibility and, with --texel-reads, the texel reads as a pair:
+// each into a temporary beside its path, renamed into place once both are
+// written, so that a failure leaves neither file.
+Status write_outputs(const EvalArgs& args, const QueryOutput& output) {
+  if (args.texel_reads.empty()) return write_pfm(args.output, output.visibility);
+  const fs::path visibility = args.output;
+  const fs::path reads = args.texel_reads;
+  const fs::path visibility_temp = staged(visibility);
+  const fs::path reads_temp = staged(reads);
+  std::error_code ignored;
+  if (Status written = write_pfm(visibility_temp, output.visibility); !written) {
+    return io_error(visibility, written.error().message);
+  }
+  if (Status written = write_pfm(reads_temp, output.texel_reads); !written) {
+    fs::remove(visibility_temp, ignored);
+    return io_error(reads, written.error().message);
+  }
+  std::error_code renamed;
+  fs::rename(reads_temp, reads, renamed);
+  if (renamed) {
+    fs::remove(visibility_temp, ignored);
+    fs::remove(reads_temp, ignored);
+    return io_error(reads, "cannot replace file: " + renamed.message());
+  }
+  fs::rename(visibility_temp, visibility, renamed);
+  if (renamed) {
+    fs::remove(visibility_temp, ignored);
+    fs::remove(reads, ignored);
+    return io_error(visibility, "cannot replace file: " + renamed.message());
+  }
+  return {};
 }
 
 }  // namespace
@@ -62,6 +135,8 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--shadow-map", args->shadow_map, "Pf image of linear light-view z")->required();
   cmd->add_option("--receivers", args->receivers, "PF image of (u, v, z_r)")->required();
   cmd->add_option("-o,--out", args->output, "Visibility image to write (Pf)")->required();
+  cmd->add_option("--texel-reads", args->texel_reads,
+                  "Also write the shadow-map and min-max texels each pixel read (Pf; device only)");
   cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--frustum-width", args->light.frustum_width,
@@ -74,16 +149,17 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
   cmd->add_flag("--reference", args->reference, "Run the CPU reference instead of the device");
   cmd->callback([args, &exit_code] {
-    auto image = run_eval(*args);
-    if (!image) {
-      exit_code = report(image.error());
+    auto output = run_eval(*args);
+    if (!output) {
+      exit_code = report(output.error());
       return;
     }
-    if (Status written = write_pfm(args->output, *image); !written) {
+    if (Status written = write_outputs(*args, *output); !written) {
       exit_code = report(written.error());
       return;
     }
     std::cout << "wrote " << args->output << "\n";
+    if (!args->texel_reads.empty()) std::cout << "wrote " << args->texel_reads << "\n";
   });
 }
 

@@ -29,6 +29,16 @@ void print_summary(const VerifyReport& report) {
     std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass [" << to_string(c.target) << "] on "
               << c.scene << ": " << c.mismatched << " of " << c.texels << " texels off\n";
   }
+  for (const MinmaxCheck& c : report.minmax_checks) {
+    std::cout << (c.pass ? "PASS " : "FAIL ") << "min-max mip [" << to_string(c.target) << "] on "
+              << c.scene << ": ";
+    if (!c.error.empty()) {
+      std::cout << c.error << "\n";
+    } else {
+      std::cout << c.mismatched << " of " << c.texels << " nodes off, " << c.levels << " of "
+                << c.expected_levels << " levels\n";
+    }
+  }
   for (const VariantRun& v : report.variants) {
     for (const TargetRun& t : v.runs) {
       if (!t.executed) continue;

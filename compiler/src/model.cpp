@@ -53,6 +53,20 @@ bool uses_minmax_mip(Technique technique) {
          technique == Technique::pcss_minmax;
 }
 
+// The walk visits the 4 roots and the 4 children of every node it descends.
+// It descends only nodes at levels 1..s that intersect the window, where the
+// start level s is at most the smallest l with 2^l >= K - 1 (the window
+// then spans at most two nodes per axis). A window of K texels meets at most
+// floor((K - 1) / 2^l) + 2 nodes of level l per axis.
+int minmax_max_visits(int kernel) {
+  int visits = 4;
+  for (int span = 2; span / 2 < kernel - 1; span *= 2) {
+    const int per_axis = (kernel - 1) / span + 2;
+    visits += 4 * per_axis * per_axis;
+  }
+  return visits;
+}
+
 // Keys are appended in a fixed order (k, b, p, disk, traversal, n) and only when set, so the
 // name is total over any VariantKeys and stays stable across runs.
 std::string variant_name(Technique technique, const VariantKeys& keys) {

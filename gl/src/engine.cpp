@@ -4,7 +4,9 @@
 
 #include "context_info.hpp"
 #include "device_selection.hpp"
+#include "minmax_mip.hpp"
 #include "query_pass.hpp"
+#include "textures.hpp"
 
 namespace penumbra {
 
@@ -51,13 +53,26 @@ const GlInfo& GlEngine::info() const {
   return context_->info;
 }
 
-Result<FloatImage> GlEngine::run_query(std::string_view vertex_text, std::string_view fragment_text,
-                                       const FloatImage& normalized_depth,
-                                       const FloatImage& receivers, const ParamBlock& params) {
+Result<GlQueryOutput> GlEngine::run_query(const GlQueryPasses& passes,
+                                          const FloatImage& normalized_depth,
+                                          const FloatImage& receivers, const ParamBlock& params) {
   auto current = context_->egl.make_current();
   if (!current) return current.error();
-  return gl::run_query_pass(context_->samplers,
-                            {vertex_text, fragment_text, normalized_depth, receivers, params});
+  return gl::run_query_pass(context_->samplers, {passes, normalized_depth, receivers, params});
+}
+
+Result<std::vector<FloatImage>> GlEngine::build_minmax(const GlMinmaxPasses& passes,
+                                                       const FloatImage& normalized_depth,
+                                                       const ParamBlock& params) {
+  auto current = context_->egl.make_current();
+  if (!current) return current.error();
+  PENUMBRA_TRY(gl::check_shadow_map(normalized_depth));
+  auto depth = gl::upload_depth(normalized_depth);
+  if (!depth) return depth.error();
+  auto mip = gl::build_minmax_mip(context_->samplers, passes, *depth,
+                                  {normalized_depth.width, normalized_depth.height}, params);
+  if (!mip) return mip.error();
+  return gl::read_minmax_mip(*mip);
 }
 
 }  // namespace penumbra

@@ -14,10 +14,11 @@ std::string given(const ParamBlock& params) {
   return names.empty() ? "nothing" : names;
 }
 
-Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamBlock& params) {
+Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamBlock& params,
+                                      const PassRole& role) {
   const auto found = params.find(member.member);
   if (found == params.end()) {
-    return make_error(Error::Kind::bad_input, "query pass",
+    return make_error(Error::Kind::bad_input, std::string(role.where),
                       "ShadowParams member '" + member.member +
                           "' has no value in the params (given: " + given(params) + ")");
   }
@@ -26,11 +27,11 @@ Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamBloc
 
 }  // namespace
 
-Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface,
-                           const ParamBlock& params) {
+Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface, const ParamBlock& params,
+                           const PassRole& role) {
   if (!iface.block) {
     for (const ParamMember& member : iface.members) {
-      auto value = value_of(member, params);
+      auto value = value_of(member, params, role);
       if (!value) return value.error();
       glProgramUniform4fv(program, member.location, 1, value->data());
     }
@@ -39,11 +40,11 @@ Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface,
   // Offsets come from the driver, so no std140 arithmetic is assumed here.
   std::vector<std::byte> bytes(static_cast<std::size_t>(iface.block->size));
   for (const ParamMember& member : iface.members) {
-    auto value = value_of(member, params);
+    auto value = value_of(member, params, role);
     if (!value) return value.error();
     const std::size_t offset = static_cast<std::size_t>(member.offset);
     if (offset + sizeof(*value) > bytes.size()) {
-      return make_error(Error::Kind::internal, "query pass",
+      return make_error(Error::Kind::internal, std::string(role.where),
                         "ShadowParams member '" + member.member + "' lies outside its block");
     }
     std::memcpy(bytes.data() + offset, value->data(), sizeof(*value));

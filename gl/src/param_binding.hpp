@@ -13,7 +13,9 @@ namespace penumbra::gl {
 // set at its location. Uniform block (GLSL 4.50): a uniform buffer of the
 // block's size is filled at each member's queried offset and bound at the
 // block's binding. Returns that buffer (empty for plain uniforms); keep it
-// until the draw. Errors (bad_input): a member without a value in `params`.
-Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface, const ParamBlock& params);
+// until the draw. Errors (bad_input, `where` = role.where): a member without
+// a value in `params`.
+Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface, const ParamBlock& params,
+                           const PassRole& role);
 
 }  // namespace penumbra::gl

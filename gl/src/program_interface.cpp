@@ -1,7 +1,6 @@
 #include "program_interface.hpp"
 
 #include <algorithm>
-#include <array>
 #include <string_view>
 
 #include "penumbra/support/param_block.hpp"
@@ -10,23 +9,18 @@ namespace penumbra::gl {
 namespace {
 
 constexpr std::string_view kBlock = "ShadowParams";
-constexpr std::string_view kAllowedUniforms =
-    "the members of ShadowParams (block ShadowParams or struct uniform 'params'), "
-    "shadow_depth, shadow_cmp, receivers";
 
-struct SamplerRole {
-  std::string_view name;
-  GLenum type;
-  std::string_view type_name;
-};
-constexpr std::array kSamplerRoles = {
-    SamplerRole{"shadow_depth", GL_SAMPLER_2D, "sampler2D"},
-    SamplerRole{"shadow_cmp", GL_SAMPLER_2D_SHADOW, "sampler2DShadow"},
-    SamplerRole{"receivers", GL_SAMPLER_2D, "sampler2D"},
-};
+// "a, b, c": the images `role` binds.
+std::string image_list(const PassRole& role) {
+  std::string names;
+  for (std::string_view name : role.images) {
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  return names;
+}
 
-Error interface_error(std::string message) {
-  return make_error(Error::Kind::bad_input, "query pass", std::move(message));
+Error interface_error(const PassRole& role, std::string message) {
+  return make_error(Error::Kind::bad_input, std::string(role.where), std::move(message));
 }
 
 GLint uniform_property(GLuint program, GLuint index, GLenum property) {
@@ -35,7 +29,7 @@ GLint uniform_property(GLuint program, GLuint index, GLenum property) {
   return value;
 }
 
-Result<std::optional<ParamBlockInfo>> find_block(GLuint program) {
+Result<std::optional<ParamBlockInfo>> find_block(GLuint program, const PassRole& role) {
   GLint blocks = 0;
   glGetProgramiv(program, GL_ACTIVE_UNIFORM_BLOCKS, &blocks);
   std::optional<ParamBlockInfo> found;
@@ -44,8 +38,9 @@ Result<std::optional<ParamBlockInfo>> find_block(GLuint program) {
     GLchar name[256];
     glGetActiveUniformBlockName(program, index, sizeof name, nullptr, name);
     if (name != kBlock) {
-      return interface_error("uniform block '" + std::string(name) +
-                             "' is not part of the shader interface; allowed: ShadowParams");
+      return interface_error(role,
+                             "uniform block '" + std::string(name) +
+                                 "' is not part of the shader interface; allowed: ShadowParams");
     }
     ParamBlockInfo block;
     glGetActiveUniformBlockiv(program, index, GL_UNIFORM_BLOCK_BINDING, &block.binding);
@@ -68,25 +63,30 @@ std::optional<std::string> member_name(std::string_view name, bool in_block) {
   return std::string(param_block_key(name));
 }
 
-Status add_sampler(ProgramInterface& iface, const std::string& name, GLenum type, GLint location) {
-  for (const SamplerRole& role : kSamplerRoles) {
-    if (role.name != name) continue;
-    if (type != role.type) {
-      return interface_error("sampler '" + name + "' must be a " + std::string(role.type_name));
-    }
-    iface.samplers.push_back({name, location});
-    return {};
+Status add_sampler(ProgramInterface& iface, const PassRole& role, const std::string& name,
+                   GLenum type, GLint location) {
+  const ImageSlot* slot = find_image_slot(name);
+  const bool bound = std::find(role.images.begin(), role.images.end(), name) != role.images.end();
+  if (slot == nullptr || !bound) {
+    return interface_error(
+        role, "sampler '" + name +
+                  (slot == nullptr ? "' is not part of the shader interface"
+                                   : "' is not bound by the " + std::string(role.where)) +
+                  "; allowed names: " + image_list(role));
   }
-  return interface_error("sampler '" + name +
-                         "' is not part of the shader interface; allowed names: shadow_depth, "
-                         "shadow_cmp, receivers");
+  if (type != slot->type) {
+    return interface_error(role,
+                           "sampler '" + name + "' must be a " + std::string(slot->type_name));
+  }
+  iface.samplers.push_back({name, location});
+  return {};
 }
 
 }  // namespace
 
-Result<ProgramInterface> reflect_program(GLuint program) {
+Result<ProgramInterface> reflect_program(GLuint program, const PassRole& role) {
   ProgramInterface iface;
-  auto block = find_block(program);
+  auto block = find_block(program, role);
   if (!block) return block.error();
   iface.block = *block;
   GLint uniforms = 0;
@@ -101,27 +101,29 @@ Result<ProgramInterface> reflect_program(GLuint program) {
     const bool in_block = uniform_property(program, index, GL_UNIFORM_BLOCK_INDEX) >= 0;
     const GLint location = in_block ? -1 : glGetUniformLocation(program, name.c_str());
     if (type == GL_SAMPLER_2D || type == GL_SAMPLER_2D_SHADOW) {
-      PENUMBRA_TRY(add_sampler(iface, name, type, location));
+      PENUMBRA_TRY(add_sampler(iface, role, name, type, location));
       continue;
     }
     const auto member = member_name(name, in_block);
     if (!member) {
-      return interface_error(
-          "uniform '" + name +
-          "' is not part of the shader interface; allowed: " + std::string(kAllowedUniforms));
+      return interface_error(role, "uniform '" + name +
+                                       "' is not part of the shader interface; allowed: the "
+                                       "members of ShadowParams (block ShadowParams or struct "
+                                       "uniform 'params'), " +
+                                       image_list(role));
     }
     if (type != GL_FLOAT_VEC4 || size != 1) {
-      return interface_error("ShadowParams member '" + *member + "' must be a vec4");
+      return interface_error(role, "ShadowParams member '" + *member + "' must be a vec4");
     }
     const GLint offset = in_block ? uniform_property(program, index, GL_UNIFORM_OFFSET) : -1;
     iface.members.push_back({*member, location, offset});
   }
-  const bool has_receivers = std::any_of(iface.samplers.begin(), iface.samplers.end(),
-                                         [](const auto& s) { return s.name == "receivers"; });
-  if (!has_receivers) {
-    return interface_error(
-        "the fragment stage has no active sampler 'receivers'; the query "
-        "pass reads each pixel's (u, v, z_r) through it");
+  const std::string_view input = role.images.front();
+  const bool has_input = std::any_of(iface.samplers.begin(), iface.samplers.end(),
+                                     [&](const auto& s) { return s.name == input; });
+  if (!has_input) {
+    return interface_error(role, "the fragment stage has no active sampler '" + std::string(input) +
+                                     "'; " + std::string(role.input_use));
   }
   return iface;
 }

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "gl_api.hpp"
+#include "pass_role.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra::gl {
 
-// An active sampler: shadow_depth (sampler2D), shadow_cmp (sampler2DShadow)
-// or receivers (sampler2D).
+// An active sampler: one of kImageSlots' names, with its type.
 struct SamplerUniform {
   std::string name;
   GLint location = -1;
@@ -41,10 +41,10 @@ struct ProgramInterface {
 };
 
 // Lists the program's active uniforms and blocks. Errors (bad_input, `where`
-// = "query pass") name anything outside the interface and what is allowed: a
+// = role.where) name anything outside the interface and what is allowed: a
 // block other than ShadowParams, a uniform other than its members and the
-// three samplers, a sampler of the wrong type, a member that is not a vec4,
-// or no `receivers` (the query pass reads it).
-Result<ProgramInterface> reflect_program(GLuint program);
+// role's images, a sampler of the wrong type, a member that is not a vec4,
+// or no active input image (role.images[0]).
+Result<ProgramInterface> reflect_program(GLuint program, const PassRole& role);
 
 }  // namespace penumbra::gl

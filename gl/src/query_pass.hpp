@@ -1,27 +1,24 @@
-// One query pass on the current context: from GLSL text and images to the
-// visibility image.
+// One query pass on the current context, after the min-max mip when the
+// query reads it: from GLSL text and images to the query's output.
 #pragma once
 
-#include <string_view>
-
-#include "param_binding.hpp"
+#include "penumbra/gl/engine.hpp"
 #include "penumbra/support/image.hpp"
+#include "penumbra/support/param_block.hpp"
 #include "penumbra/support/result.hpp"
 #include "sampler_objects.hpp"
 
 namespace penumbra::gl {
 
 struct QueryInputs {
-  std::string_view vertex_text;
-  std::string_view fragment_text;
+  const GlQueryPasses& passes;
   const FloatImage& normalized_depth;
   const FloatImage& receivers;
   const ParamBlock& params;
 };
 
-// Builds the program, binds everything by name, draws the full-screen
-// triangle into an R32F target of the receivers' size and reads it back.
-// Every object it creates is deleted before it returns.
-Result<FloatImage> run_query_pass(const SamplerObjects& samplers, const QueryInputs& inputs);
+// See GlEngine::run_query. Every object it creates is deleted before it
+// returns.
+Result<GlQueryOutput> run_query_pass(const SamplerObjects& samplers, const QueryInputs& inputs);
 
 }  // namespace penumbra::gl

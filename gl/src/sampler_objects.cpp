@@ -5,12 +5,11 @@
 namespace penumbra::gl {
 namespace {
 
-GLuint create_sampler(GLint filter) {
+GLuint create_sampler(GLint min_filter, GLint mag_filter) {
   GLuint sampler = 0;
   glCreateSamplers(1, &sampler);
-  // A non-mipmap minification filter: the single-level textures are complete.
-  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
-  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, min_filter);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, mag_filter);
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   return sampler;
@@ -20,11 +19,18 @@ GLuint create_sampler(GLint filter) {
 
 Result<SamplerObjects> create_sampler_objects() {
   SamplerObjects samplers;
-  samplers.point = create_sampler(GL_NEAREST);
+  // A non-mipmap minification filter: the single-level textures are complete.
+  samplers.point = create_sampler(GL_NEAREST, GL_NEAREST);
   glSamplerParameteri(samplers.point, GL_TEXTURE_COMPARE_MODE, GL_NONE);
-  samplers.compare = create_sampler(GL_LINEAR);
+  samplers.compare = create_sampler(GL_LINEAR, GL_LINEAR);
   glSamplerParameteri(samplers.compare, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(samplers.compare, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  // shadow_minmax is read with textureLod at LOD l - 1 = 0 .. N - 1: an exact
+  // integer LOD selects that level (LOD 0 magnifies, from the base level),
+  // and the LOD range stays GL's default upper bound, not clamped to 0.
+  samplers.mip = create_sampler(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
+  glSamplerParameteri(samplers.mip, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glSamplerParameterf(samplers.mip, GL_TEXTURE_MIN_LOD, 0.0f);
   PENUMBRA_TRY(check_gl("creating the sampler objects"));
   return samplers;
 }

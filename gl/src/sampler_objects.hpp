@@ -1,7 +1,8 @@
-// The two sampler objects every query pass binds with the one depth texture
-// (docs/shader-interface.md): `point` for shadow_depth and receivers
-// (nearest, no comparison) and `compare` for shadow_cmp (linear, LEQUAL
-// comparison); both clamp to the edge.
+// The sampler objects every pass binds (docs/shader-interface.md): `point`
+// for shadow_depth, receivers and minmax_source (nearest, no comparison),
+// `compare` for shadow_cmp (linear, LEQUAL comparison) and `mip` for
+// shadow_minmax (nearest texel of the nearest level, every level reachable);
+// all clamp to the edge.
 #pragma once
 
 #include "gl_api.hpp"
@@ -14,9 +15,10 @@ namespace penumbra::gl {
 struct SamplerObjects {
   GLuint point = 0;
   GLuint compare = 0;
+  GLuint mip = 0;
 };
 
-// Creates both in the current context. Errors (device): a GL error.
+// Creates all three in the current context. Errors (device): a GL error.
 Result<SamplerObjects> create_sampler_objects();
 
 }  // namespace penumbra::gl

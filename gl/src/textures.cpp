@@ -27,7 +27,7 @@ Status check_size(const char* where, const FloatImage& image) {
 // A width x height texture of one level, filled from `data` (rows of floats
 // in `format`, row 0 first) unless it is null.
 Result<Texture> create_texture(GLenum internal_format, int width, int height, GLenum format,
-                               const float* data, const char* what) {
+                               const float* data, const std::string& what) {
   Texture texture = create_texture_2d();
   glTextureStorage2D(texture.get(), 1, internal_format, width, height);
   if (data != nullptr) {
@@ -39,12 +39,15 @@ Result<Texture> create_texture(GLenum internal_format, int width, int height, GL
 
 }  // namespace
 
-Status check_query_inputs(const FloatImage& normalized_depth, const FloatImage& receivers) {
+Status check_shadow_map(const FloatImage& normalized_depth) {
   PENUMBRA_TRY(check_normalized_depth(normalized_depth));
+  return check_size("shadow map", normalized_depth);
+}
+
+Status check_query_inputs(const FloatImage& normalized_depth, const FloatImage& receivers) {
+  PENUMBRA_TRY(check_shadow_map(normalized_depth));
   PENUMBRA_TRY(check_receivers(receivers));
-  PENUMBRA_TRY(check_size("shadow map", normalized_depth));
-  PENUMBRA_TRY(check_size("receivers", receivers));
-  return {};
+  return check_size("receivers", receivers);
 }
 
 Result<Texture> upload_depth(const FloatImage& normalized_depth) {
@@ -59,9 +62,31 @@ Result<Texture> upload_receivers(const FloatImage& receivers) {
                         "uploading the receivers (GL_RGBA32F)");
 }
 
-Result<Texture> create_visibility_target(int width, int height) {
-  return create_texture(GL_R32F, width, height, GL_RED, nullptr,
-                        "creating the visibility target (GL_R32F)");
+Result<Texture> create_rg_target(int width, int height, const std::string& what) {
+  return create_texture(GL_RG32F, width, height, GL_RG, nullptr,
+                        "creating " + what + " (GL_RG32F)");
+}
+
+Result<Texture> create_rg_chain(int side, int levels, const std::string& what) {
+  Texture texture = create_texture_2d();
+  glTextureStorage2D(texture.get(), levels, GL_RG32F, side, side);
+  // Immutable storage already limits sampling to these levels; said here too.
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAX_LEVEL, levels - 1);
+  const float far[2] = {1.0f, 1.0f};
+  for (int level = 0; level < levels; ++level) {
+    glClearTexImage(texture.get(), level, GL_RG, GL_FLOAT, far);
+  }
+  PENUMBRA_TRY(check_gl("creating " + what + " (GL_RG32F, " + std::to_string(levels) + " levels)"));
+  return texture;
+}
+
+Result<FloatImage> read_rg(const Texture& texture, int level, int width, int height,
+                           const std::string& what) {
+  FloatImage image(width, height, 2);
+  glGetTextureSubImage(texture.get(), level, 0, 0, 0, width, height, 1, GL_RG, GL_FLOAT,
+                       static_cast<GLsizei>(image.data.size() * sizeof(float)), image.data.data());
+  PENUMBRA_TRY(check_gl("reading back " + what));
+  return image;
 }
 
 }  // namespace penumbra::gl

@@ -25,6 +25,16 @@ Status check_disk(const Variant& variant, const std::optional<Disk>& disk, const
   return {};
 }
 
+// The only traversal besides the default (the min-max mip) is a brute-force loop.
+Status check_traversal(const Variant& variant) {
+  const auto& traversal = variant.keys.traversal;
+  if (traversal && *traversal != kBruteForceTraversal) {
+    return bad_variant(variant, "traversal is \"" + *traversal + "\" but must be \"" +
+                                    std::string(kBruteForceTraversal) + "\"");
+  }
+  return {};
+}
+
 }  // namespace
 
 Status check_variant(const Variant& variant) {
@@ -44,9 +54,19 @@ Status check_variant(const Variant& variant) {
                               "blocker_samples"));
       return check_disk(variant, variant.pcf_disk, "pcf", keys.pcf_samples, "pcf_samples");
     case Technique::minmax_pcf:
+      if (!keys.kernel || *keys.kernel < 1 || *keys.kernel > kMaxSamples) {
+        return bad_variant(variant,
+                           "minmax_pcf needs a kernel from 1 to " + std::to_string(kMaxSamples));
+      }
+      return check_traversal(variant);
     case Technique::backprojection:
+      if (keys.max_nodes && (*keys.max_nodes < 1 || *keys.max_nodes > kMaxMaxNodes)) {
+        return bad_variant(variant, "max_nodes is " + std::to_string(*keys.max_nodes) +
+                                        " but must be from 1 to " + std::to_string(kMaxMaxNodes));
+      }
+      return check_traversal(variant);
     case Technique::pcss_minmax:
-      return bad_variant(variant, "TRANSITIONAL: reference not written yet");
+      return check_disk(variant, variant.pcf_disk, "pcf", keys.pcf_samples, "pcf_samples");
   }
   return bad_variant(variant, "unknown technique");
 }
@@ -67,12 +87,16 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
   }
 
   const ShadowMapView map(shadow_map);
+  // Built once for the image, and only for a technique whose reference reads it.
+  std::optional<MinMaxMip> mip;
+  if (reference_reads_mip(variant.technique)) mip.emplace(map);
   ReferenceImage result{FloatImage(receivers.width, receivers.height, 1),
                         FloatImage(receivers.width, receivers.height, 1)};
   for (int j = 0; j < receivers.height; ++j) {
     for (int i = 0; i < receivers.width; ++i) {
       const Query query{receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2)};
-      const Sample sample = evaluate(variant, map, light, query, precision);
+      const Sample sample = mip ? evaluate(variant, map, *mip, light, query, precision)
+                                : evaluate(variant, map, light, query, precision);
       result.visibility.at(i, j) = float(sample.visibility);
       result.ambiguous.at(i, j) = sample.ambiguous ? 1.0f : 0.0f;
     }

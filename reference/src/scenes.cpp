@@ -25,7 +25,8 @@ Scene steps() {
 
 // A receiver tilted in x and y (z ~ 16.3 to 17.8), two occluders whose
 // footprints overlap (the nearer one wins in the map), and one that leaves
-// the map across a corner.
+// the map across a corner. Its map is neither square nor a power of two, so
+// the min-max mip's partial nodes at the right and top edges are exercised.
 Scene tilted_overlap() {
   Scene scene;
   scene.name = "tilted_overlap";
@@ -39,6 +40,8 @@ Scene tilted_overlap() {
   scene.plane_z0 = 17.0;
   scene.plane_dzdx = 0.12;
   scene.plane_dzdy = 0.08;
+  scene.map_width = 250;
+  scene.map_height = 190;
   return scene;
 }
 

@@ -1,25 +1,18 @@
-// The techniques of contract section 2, each a direct reading of its row.
-// Every comparison uses z_r - bias; geometry (search width, penumbra, filter
-// radius) uses the unbiased z_r, as in the whitepaper.
+// The techniques of contract section 2, each a direct reading of its row:
+// the first four here, the min-max mip ones in their own files
+// (technique_parts.hpp). Every comparison uses z_r - bias; geometry (search
+// width, penumbra, filter radius) uses the unbiased z_r, as in the whitepaper.
 #include "penumbra/reference/techniques.hpp"
 
 #include <optional>
-#include <vector>
 
 #include "penumbra/reference/sampling.hpp"
+#include "technique_parts.hpp"
 
 namespace penumbra::reference {
 namespace {
 
-// The mean of bilinear comparisons at uv + d * radius over the disk's points.
-double poisson_pcf(const ShadowMapView& map, const Query& q, double z_ref,
-                   const std::vector<Point2>& disk, double radius) {
-  double sum = 0.0;
-  for (const Point2& d : disk) {
-    sum += bilinear_compare(map, q.u + d[0] * radius, q.v + d[1] * radius, z_ref);
-  }
-  return sum / double(disk.size());
-}
+using detail::poisson_pcf;
 
 Sample hard(const ShadowMapView& map, const Query& q, double z_ref,
             const SamplingPrecision& precision) {
@@ -75,10 +68,9 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   return {poisson_pcf(map, q, z_ref, pcf_disk.points, filter_radius_uv), ambiguous};
 }
 
-}  // namespace
-
-Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
-                const Query& query, const SamplingPrecision& precision) {
+// `mip` may be null for the techniques whose reference does not read it.
+Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMip* mip,
+                const LightParams& light, const Query& query, const SamplingPrecision& precision) {
   const double z_ref = query.z - light.bias;
   switch (variant.technique) {
     case Technique::hard:
@@ -93,11 +85,32 @@ Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightPar
       return pcss(map, light, query, z_ref, variant.blocker_disk.value(), variant.pcf_disk.value(),
                   precision);
     case Technique::minmax_pcf:
+      return detail::minmax_pcf(map, light, query, variant.keys.kernel.value());
     case Technique::backprojection:
+      return detail::backprojection(map, *mip, light, query);
     case Technique::pcss_minmax:
-      return {};  // TRANSITIONAL
+      return detail::pcss_minmax(map, *mip, light, query, variant.pcf_disk.value(), precision);
   }
   return {};
+}
+
+}  // namespace
+
+bool reference_reads_mip(Technique technique) {
+  return technique == Technique::backprojection || technique == Technique::pcss_minmax;
+}
+
+Sample evaluate(const Variant& variant, const ShadowMapView& map, const MinMaxMip& mip,
+                const LightParams& light, const Query& query, const SamplingPrecision& precision) {
+  return dispatch(variant, map, &mip, light, query, precision);
+}
+
+Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
+                const Query& query, const SamplingPrecision& precision) {
+  if (!reference_reads_mip(variant.technique))
+    return dispatch(variant, map, nullptr, light, query, precision);
+  const MinMaxMip mip(map);
+  return dispatch(variant, map, &mip, light, query, precision);
 }
 
 }  // namespace penumbra::reference

@@ -22,6 +22,8 @@ inline constexpr std::string_view kParamsBlock = "ShadowParams";
 inline constexpr std::string_view kShadowDepth = "shadow_depth";
 inline constexpr std::string_view kShadowCmp = "shadow_cmp";
 inline constexpr std::string_view kReceivers = "receivers";
+inline constexpr std::string_view kShadowMinmax = "shadow_minmax";
+inline constexpr std::string_view kMinmaxSource = "minmax_source";
 // glslang's global uniform blocks, holding ShadowParams' members when the
 // source declares them outside a block: GLSL's loose uniforms under Vulkan's
 // relaxed rules (glslang's default name, or the one compile_target_text
@@ -35,6 +37,8 @@ enum class BindingRole {
   map_colour,      // shadow_depth in a program without shadow_cmp: the R32F image, nearest
   map_comparison,  // shadow_cmp: the map's depth image, comparison sampler
   receivers,       // receivers: the RGBA32F receivers image, nearest sampler
+  minmax_mip,      // shadow_minmax: the map's RG32F min-max mip, every level, nearest sampler
+  minmax_source,   // minmax_source: the RG32F level a minmax_reduce pass reads, nearest
 };
 
 // A uniform block as every stage declaring it at one binding does: the

@@ -8,7 +8,8 @@
 namespace penumbra::detail {
 namespace {
 
-constexpr std::string_view kImages[] = {kShadowDepth, kShadowCmp, kReceivers};
+constexpr std::string_view kImages[] = {kShadowDepth, kShadowCmp, kReceivers, kShadowMinmax,
+                                        kMinmaxSource};
 
 const char* stage_name(const ShaderInterface& iface) {
   return iface.stage == ShaderStage::vertex ? "vertex" : "fragment";
@@ -30,7 +31,18 @@ bool is_params_block(std::string_view name) {
 BindingRole image_role(std::string_view image, bool has_comparison) {
   if (image == kShadowCmp) return BindingRole::map_comparison;
   if (image == kReceivers) return BindingRole::receivers;
+  if (image == kShadowMinmax) return BindingRole::minmax_mip;
+  if (image == kMinmaxSource) return BindingRole::minmax_source;
   return has_comparison ? BindingRole::map_depth : BindingRole::map_colour;
+}
+
+// "_shadow_depth_sampler, ...": the separate samplers the interface's images pair with.
+std::string sampler_names() {
+  std::string text;
+  for (std::string_view image : kImages) {
+    text += (text.empty() ? "_" : ", _") + std::string(image) + "_sampler";
+  }
+  return text;
 }
 
 class StageResolver {
@@ -102,8 +114,8 @@ class StageResolver {
       return fail("sampler '" + sampler.name + "' (" + stage_name(iface_) +
                   " stage) pairs with no image of the shader interface: a separate sampler is "
                   "named _<image>_sampler after the image it samples (SPIRV-Cross's HLSL "
-                  "naming); allowed names: _shadow_depth_sampler, _shadow_cmp_sampler, "
-                  "_receivers_sampler");
+                  "naming); allowed names: " +
+                  sampler_names());
     }
     if (!sampler.comparison && *image == kShadowCmp) {
       return fail("sampler '" + sampler.name + "' (" + stage_name(iface_) +
@@ -124,10 +136,10 @@ class StageResolver {
   std::string_view pass_;
 };
 
-bool stage_declares_comparison(const ShaderInterface& iface) {
-  const auto is_cmp = [](const auto& image) { return image.name == kShadowCmp; };
-  return std::any_of(iface.sampled_images.begin(), iface.sampled_images.end(), is_cmp) ||
-         std::any_of(iface.separate_images.begin(), iface.separate_images.end(), is_cmp);
+bool stage_declares(const ShaderInterface& iface, std::string_view image_name) {
+  const auto named = [image_name](const auto& image) { return image.name == image_name; };
+  return std::any_of(iface.sampled_images.begin(), iface.sampled_images.end(), named) ||
+         std::any_of(iface.separate_images.begin(), iface.separate_images.end(), named);
 }
 
 }  // namespace
@@ -138,9 +150,13 @@ std::string joined(std::span<const std::string_view> names) {
   return text;
 }
 
+bool declares_image(const PassProgram& program, std::string_view image_name) {
+  return stage_declares(program.vert.iface, image_name) ||
+         stage_declares(program.frag.iface, image_name);
+}
+
 bool declares_comparison(const PassProgram& program) {
-  return stage_declares_comparison(program.vert.iface) ||
-         stage_declares_comparison(program.frag.iface);
+  return declares_image(program, kShadowCmp);
 }
 
 Result<std::vector<ResolvedResource>> resolve_stage(const ShaderInterface& iface,

@@ -25,6 +25,10 @@ struct ResolvedResource {
 // "a, b, c": the names in order, for messages.
 std::string joined(std::span<const std::string_view> names);
 
+// True when either stage declares the image `image_name` (as a sampler2D or
+// a separate image).
+bool declares_image(const PassProgram& program, std::string_view image_name);
+
 // True when either stage declares shadow_cmp (as a sampler2DShadow or a
 // separate image): then shadow_depth reads the map's depth image, else the
 // R32F image (the Direct3D 9 style, comparing in the shader).

@@ -78,6 +78,9 @@ Result<std::unique_ptr<Context>> create_context(const EngineOptions& options,
   auto commands = vk::CommandContext::create(*context->device);
   if (!commands) return commands.error();
   context->commands.emplace(std::move(*commands));
+  auto timestamps = vk::TimestampQueries::create(*context->device);
+  if (!timestamps) return timestamps.error();
+  context->timestamps = std::move(*timestamps);
 
   context->diagnostics({Severity::note, "vulkan",
                         "using " + context->info.name + ", driver " + context->info.driver});

@@ -12,6 +12,7 @@
 #include "vk/device.hpp"
 #include "vk/instance.hpp"
 #include "vk/sampler.hpp"
+#include "vk/timestamp_queries.hpp"
 
 namespace penumbra::detail {
 
@@ -27,6 +28,7 @@ struct Context {
   vk::Sampler nearest;
   vk::Sampler comparison;
   std::optional<vk::CommandContext> commands;
+  std::optional<vk::TimestampQueries> timestamps;  // none when the queue writes no timestamps
 
   // A bad_input Error unless 1 <= width, height <= maxImageDimension2D.
   Status check_extent(int width, int height, std::string_view what) const;

@@ -26,7 +26,7 @@ Result<std::unique_ptr<ShadowMapImages>> render_depth(
 
   PassDraw draw;
   draw.program = &program;
-  draw.shape = {"depth pass", kDepthPositionFormat, 3, true, true};
+  draw.shape = {"depth pass", kMapColourTarget, kDepthPositionFormat, 3, true, true};
   draw.resources.params = &params;
   draw.positions = positions;
   // The output 0 and the fragment depth both hold normalized depth; each

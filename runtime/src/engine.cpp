@@ -5,6 +5,7 @@
 
 #include "context.hpp"
 #include "depth_pass.hpp"
+#include "minmax_build.hpp"
 #include "query_pass.hpp"
 #include "shadow_map_images.hpp"
 #include "shadow_map_transfer.hpp"
@@ -63,12 +64,35 @@ Result<FloatImage> Engine::read_shadow_map(const ShadowMap& map) {
   });
 }
 
-Result<FloatImage> Engine::run_query(const PassProgram& query, const ShadowMap& map,
-                                     const FloatImage& receivers, const ParamBlock& params) {
-  return detail::run_validated(*context_->validation, [&]() -> Result<FloatImage> {
+Result<MinmaxBuild> Engine::build_minmax(ShadowMap& map, const PassProgram& init,
+                                         const PassProgram& reduce, const ParamBlock& params) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<MinmaxBuild> {
+    PENUMBRA_TRY(check_owner(*map.images_, *context_));
+    return detail::build_minmax(*context_, *map.images_, init, reduce, params);
+  });
+}
+
+Result<std::vector<FloatImage>> Engine::read_minmax(const ShadowMap& map) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<std::vector<FloatImage>> {
+    PENUMBRA_TRY(check_owner(*map.images_, *context_));
+    return detail::read_minmax(*context_, *map.images_);
+  });
+}
+
+Result<QueryOutput> Engine::run_query_output(const PassProgram& query, const ShadowMap& map,
+                                             const FloatImage& receivers,
+                                             const ParamBlock& params) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<QueryOutput> {
     PENUMBRA_TRY(check_owner(*map.images_, *context_));
     return detail::run_query(*context_, query, *map.images_, receivers, params);
   });
+}
+
+Result<FloatImage> Engine::run_query(const PassProgram& query, const ShadowMap& map,
+                                     const FloatImage& receivers, const ParamBlock& params) {
+  auto output = run_query_output(query, map, receivers, params);
+  if (!output) return output.error();
+  return std::move(output->visibility);
 }
 
 }  // namespace penumbra

@@ -28,13 +28,21 @@ constexpr Requirement kRequirements[] = {
     {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
      "shadow map uploads"},
     {kMapColourFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
-     "the depth and query passes"},
+     "the depth pass"},
     {kMapColourFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",
      "shadow_depth without shadow_cmp"},
     {kMapColourFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
-     "shadow map and visibility readbacks"},
+     "shadow map readbacks"},
     {kMapColourFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
      "shadow map uploads"},
+    {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
+     "the query pass and the min-max mip build"},
+    {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",
+     "shadow_minmax and minmax_source"},
+    {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
+     "visibility and min-max readbacks, min-max level copies"},
+    {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
+     "min-max level copies"},
     {kReceiversFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE", "receivers"},
     {kReceiversFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
      "receiver uploads"},
@@ -74,7 +82,7 @@ FormatFeatures features_of(const vk::Device& device, VkFormat format) {
 }  // namespace
 
 Status check_format_support(const vk::Device& device) {
-  static_assert(kVisibilityFormat == kMapColourFormat, "one R32F requirement list serves both");
+  static_assert(kVisibilityFormat == kMinmaxFormat, "one RG32F requirement list serves both");
   for (const Requirement& requirement : kRequirements) {
     const FormatFeatures features = features_of(device, requirement.format);
     const VkFormatFeatureFlags2 supported =

@@ -3,6 +3,9 @@
 
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
+#include <string_view>
+
 #include "penumbra/support/result.hpp"
 #include "vk/device.hpp"
 
@@ -11,12 +14,24 @@ namespace penumbra::detail {
 // Shadow map: depth image and its colour twin (docs/shader-interface.md).
 inline constexpr VkFormat kMapDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kMapColourFormat = VK_FORMAT_R32_SFLOAT;
-// Query pass: receivers in, visibility out.
+// Query pass: receivers in; out (visibility, texel reads).
 inline constexpr VkFormat kReceiversFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-inline constexpr VkFormat kVisibilityFormat = VK_FORMAT_R32_SFLOAT;
+inline constexpr VkFormat kVisibilityFormat = VK_FORMAT_R32G32_SFLOAT;
+// The min-max mip's levels: (min, max) of normalized depth.
+inline constexpr VkFormat kMinmaxFormat = VK_FORMAT_R32G32_SFLOAT;
 // Vertex positions: light-view xyz (depth pass), clip-space xy (query pass).
 inline constexpr VkFormat kDepthPositionFormat = VK_FORMAT_R32G32B32_SFLOAT;
 inline constexpr VkFormat kQueryPositionFormat = VK_FORMAT_R32G32_SFLOAT;
+
+// A pass's colour target as its checks see it: its format's name, for
+// messages, and the components output 0 must have to fill it.
+struct ColourTarget {
+  std::string_view format;
+  std::uint32_t components = 0;
+};
+inline constexpr ColourTarget kMapColourTarget{"R32_SFLOAT", 1};      // kMapColourFormat
+inline constexpr ColourTarget kVisibilityTarget{"R32G32_SFLOAT", 2};  // kVisibilityFormat
+inline constexpr ColourTarget kMinmaxTarget{"R32G32_SFLOAT", 2};      // kMinmaxFormat
 
 // An Error naming the first format and feature the device lacks.
 Status check_format_support(const vk::Device& device);

@@ -9,11 +9,11 @@
 namespace penumbra::detail {
 namespace {
 
-VkBufferImageCopy whole_image(const vk::Image& image) {
+VkBufferImageCopy image_region(const vk::Image& image, std::uint32_t level, VkExtent2D extent) {
   VkBufferImageCopy region{};
   // Zero row length and height: the buffer is tightly packed, row 0 first.
-  region.imageSubresource = {image.desc().aspect, 0, 0, 1};
-  region.imageExtent = {image.desc().width, image.desc().height, 1};
+  region.imageSubresource = {image.desc().aspect, level, 0, 1};
+  region.imageExtent = {extent.width, extent.height, 1};
   return region;
 }
 
@@ -26,7 +26,7 @@ Status upload_image(const vk::Device& device, vk::CommandContext& commands, cons
                                     "the staging buffer for " + std::string(what));
   if (!staging) return staging.error();
   std::memcpy(staging->bytes().data(), texels.data(), texels.size_bytes());
-  const VkBufferImageCopy region = whole_image(image);
+  const VkBufferImageCopy region = image_region(image, 0, image.extent());
   return commands.submit(
       [&](VkCommandBuffer cmd) {
         vk::transition(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
@@ -40,13 +40,19 @@ Status upload_image(const vk::Device& device, vk::CommandContext& commands, cons
 Result<std::vector<float>> read_image(const vk::Device& device, vk::CommandContext& commands,
                                       const vk::Image& image, VkImageLayout layout,
                                       std::uint32_t components, std::string_view what) {
-  std::vector<float> texels(static_cast<std::size_t>(image.desc().width) * image.desc().height *
-                            components);
+  return read_image_region(device, commands, image, layout, 0, image.extent(), components, what);
+}
+
+Result<std::vector<float>> read_image_region(const vk::Device& device, vk::CommandContext& commands,
+                                             const vk::Image& image, VkImageLayout layout,
+                                             std::uint32_t level, VkExtent2D extent,
+                                             std::uint32_t components, std::string_view what) {
+  std::vector<float> texels(static_cast<std::size_t>(extent.width) * extent.height * components);
   auto staging =
       vk::Buffer::create(device, texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                          "the readback buffer for " + std::string(what));
   if (!staging) return staging.error();
-  const VkBufferImageCopy region = whole_image(image);
+  const VkBufferImageCopy region = image_region(image, level, extent);
   PENUMBRA_TRY(commands.submit(
       [&](VkCommandBuffer cmd) {
         vk::transition(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);

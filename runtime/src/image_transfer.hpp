@@ -21,10 +21,16 @@ Status upload_image(const vk::Device& device, vk::CommandContext& commands, cons
                     std::span<const float> texels, VkImageLayout final_layout,
                     std::string_view what);
 
-// Reads `image`, which is in `layout` and is left in it, as `components`
-// floats per texel, row 0 first.
+// Reads `image`'s level 0, which is in `layout` and is left in it, as
+// `components` floats per texel, row 0 first.
 Result<std::vector<float>> read_image(const vk::Device& device, vk::CommandContext& commands,
                                       const vk::Image& image, VkImageLayout layout,
                                       std::uint32_t components, std::string_view what);
+
+// The same for the texels [0, extent) of mip level `level`.
+Result<std::vector<float>> read_image_region(const vk::Device& device, vk::CommandContext& commands,
+                                             const vk::Image& image, VkImageLayout layout,
+                                             std::uint32_t level, VkExtent2D extent,
+                                             std::uint32_t components, std::string_view what);
 
 }  // namespace penumbra::detail

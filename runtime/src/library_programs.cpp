@@ -1,11 +1,13 @@
 #include "penumbra/runtime/library_programs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
 #include "penumbra/support/file.hpp"
+#include "penumbra/support/minmax_levels.hpp"
 
 namespace penumbra {
 namespace {
@@ -98,18 +100,19 @@ float depth_scale_for(double max_z) {
 ParamBlock shadow_params(const reference::LightParams& light, const ParamSizes& sizes,
                          float depth_scale) {
   const auto f = [](double value) { return static_cast<float>(value); };
-  const float map_w = static_cast<float>(sizes.map_width);
-  const float map_h = static_cast<float>(sizes.map_height);
-  const float screen_w = static_cast<float>(sizes.screen_width);
-  const float screen_h = static_cast<float>(sizes.screen_height);
+  const std::array<float, 4> map_size = size_vec4(sizes.map_width, sizes.map_height);
   return {
-      {"shadow_map_size", {map_w, map_h, 1.0f / map_w, 1.0f / map_h}},
+      {"shadow_map_size", map_size},
       {"light",
        {f(light.light_world_size), f(light.frustum_width), f(light.near_plane),
         f(light.light_size_uv())}},
       {"sampling",
        {f(light.filter_radius(sizes.map_width)), f(light.bias), depth_scale, 1.0f / depth_scale}},
-      {"screen_size", {screen_w, screen_h, 1.0f / screen_w, 1.0f / screen_h}},
+      {"screen_size", size_vec4(sizes.screen_width, sizes.screen_height)},
+      // The min-max build passes set source_size per level (Engine::build_minmax).
+      {"source_size", map_size},
+      {"minmax_info",
+       {static_cast<float>(minmax_top_level(sizes.map_width, sizes.map_height)), 0.0f, 0.0f, 0.0f}},
   };
 }
 

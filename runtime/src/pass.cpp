@@ -78,6 +78,7 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
   begin.renderArea = {{0, 0}, extent};
   begin.clearValueCount = draw.target.depth ? 2 : 1;
   begin.pClearValues = clears;
+  if (draw.timer) draw.timer->begin(cmd);
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
   const auto& sets = descriptors.sets();
@@ -98,6 +99,7 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
     vkCmdDraw(cmd, count, 1, 0, 0);
   }
   vkCmdEndRenderPass(cmd);
+  if (draw.timer) draw.timer->end(cmd);
 }
 
 }  // namespace

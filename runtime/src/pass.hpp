@@ -10,13 +10,14 @@
 #include "pass_descriptors.hpp"
 #include "pass_pipeline.hpp"
 #include "vk/image.hpp"
+#include "vk/timestamp_queries.hpp"
 
 namespace penumbra::detail {
 
 // The images a pass draws into (all attachments are cleared to 1.0 first),
 // the layouts it leaves them in, and where they are used next.
 struct PassTarget {
-  const vk::Image* colour = nullptr;  // R32_SFLOAT, output location 0
+  const vk::Image* colour = nullptr;  // single-level, output location 0
   VkImageLayout colour_final = VK_IMAGE_LAYOUT_UNDEFINED;
   const vk::Image* depth = nullptr;  // D32_SFLOAT or none
   VkImageLayout depth_final = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -30,11 +31,14 @@ struct PassDraw {
   PassResources resources;
   std::span<const float> positions;  // shape.position_components floats per vertex
   PassTarget target;
+  // When set, brackets the render pass with its timestamps.
+  const vk::TimestampQueries* timer = nullptr;
 };
 
 // Binds the program's resources by reflection, draws the positions as a
 // triangle list over the whole target (through a flipped viewport for a
-// program with d3d_viewport), and waits for the result.
+// program with d3d_viewport), and waits for the result; then draw.timer, if
+// any, holds the render pass's GPU time.
 Status draw_pass(Context& context, const PassDraw& draw);
 
 }  // namespace penumbra::detail

@@ -52,6 +52,11 @@ RoleImage role_image(const Context& context, const PassResources& resources, Bin
     case BindingRole::receivers:
       return {resources.receivers->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
               context.nearest.get()};
+    case BindingRole::minmax_mip:
+      return {resources.minmax_mip->view(), kMinmaxLayout, context.nearest.get()};
+    case BindingRole::minmax_source:
+      return {resources.minmax_source->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+              context.nearest.get()};
     case BindingRole::params:
       break;
   }
@@ -79,11 +84,11 @@ void write_separate(VkDevice device, VkDescriptorSet set, const PlannedBinding& 
 std::vector<std::string_view> PassResources::available() const {
   std::vector<std::string_view> names;
   if (params) names.push_back(kParamsBlock);
-  if (shadow_map) {
-    names.push_back(kShadowDepth);
-    names.push_back(kShadowCmp);
-  }
+  if (shadow_map) names.push_back(kShadowDepth);
+  if (shadow_map && map_comparison) names.push_back(kShadowCmp);
   if (receivers) names.push_back(kReceivers);
+  if (minmax_mip) names.push_back(kShadowMinmax);
+  if (minmax_source) names.push_back(kMinmaxSource);
   return names;
 }
 

@@ -21,7 +21,10 @@ namespace penumbra::detail {
 struct PassResources {
   const ParamBlock* params = nullptr;
   const ShadowMapImages* shadow_map = nullptr;  // in its resting layouts
-  const vk::Image* receivers = nullptr;         // in SHADER_READ_ONLY_OPTIMAL
+  bool map_comparison = true;  // offer shadow_map as shadow_cmp too, not only shadow_depth
+  const vk::Image* receivers = nullptr;      // in SHADER_READ_ONLY_OPTIMAL
+  const vk::Image* minmax_mip = nullptr;     // shadow_minmax, in kMinmaxLayout
+  const vk::Image* minmax_source = nullptr;  // in SHADER_READ_ONLY_OPTIMAL
 
   // The interface names these resources serve, for plan_bindings().
   std::vector<std::string_view> available() const;

@@ -54,18 +54,25 @@ Status check_vertex_stage(const ShaderInterface& vert, const PassShape& shape) {
 // Direct3D 9's DEPTH semantic, which glslang makes a plain output.
 Status check_fragment_stage(const ShaderInterface& frag, const PassShape& shape) {
   const std::string pass(shape.name);
+  const std::string target(shape.target.format);
   bool has_output = false;
   for (const StageVariable& output : frag.outputs) {
     if (output.location != 0) {
       return fail(pass, "fragment output '" + output.name + "' at location " +
                             std::to_string(output.location) + " has no attachment; the " + pass +
-                            " has one R32_SFLOAT target, at location 0");
+                            " has one " + target + " target, at location 0");
+    }
+    if (output.components < shape.target.components) {
+      return fail(pass, "fragment output '" + output.name + "' has " +
+                            std::to_string(output.components) + " component(s); the " + pass +
+                            "'s " + target + " target takes " +
+                            std::to_string(shape.target.components));
     }
     has_output = true;
   }
   if (!has_output) {
-    return fail(pass,
-                "the fragment shader writes no output at location 0, the pass's R32_SFLOAT target");
+    return fail(pass, "the fragment shader writes no output at location 0, the pass's " + target +
+                          " target");
   }
   if (shape.fragment_depth && !declares_builtin(frag, "FragDepth")) {
     return fail(pass,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "binding_plan.hpp"
+#include "formats.hpp"
 #include "penumbra/runtime/program.hpp"
 #include "vk/descriptor_set_layout.hpp"
 #include "vk/graphics_pipeline.hpp"
@@ -19,6 +20,7 @@ namespace penumbra::detail {
 // What a pass feeds its program and how it draws.
 struct PassShape {
   std::string_view name;                           // "depth pass", "query pass": names errors
+  ColourTarget target;                             // what output 0 is drawn into
   VkFormat position_format = VK_FORMAT_UNDEFINED;  // the vertex data at location 0
   std::uint32_t position_components = 0;           // floats per vertex
   bool depth_test = false;
@@ -29,7 +31,8 @@ class PassPipeline {
  public:
   // Checks the program's stages against `shape`: vertex input (location 0
   // only, of the shape's width), a clip-space position, fragment output
-  // (location 0 only) and, where the shape asks, the fragment depth. Then
+  // (location 0 only, with at least the target's components) and, where the
+  // shape asks, the fragment depth. Then
   // builds one descriptor set layout per set of `plan`.
   static Result<PassPipeline> create(VkDevice device, const PassProgram& program,
                                      const BindingPlan& plan, const PassShape& shape,

@@ -1,5 +1,8 @@
 #include "query_pass.hpp"
 
+#include <string>
+
+#include "binding_roles.hpp"
 #include "formats.hpp"
 #include "image_transfer.hpp"
 #include "pass.hpp"
@@ -8,9 +11,18 @@
 
 namespace penumbra::detail {
 
-Result<FloatImage> run_query(Context& context, const PassProgram& program,
-                             const ShadowMapImages& map, const FloatImage& receivers,
-                             const ParamBlock& params) {
+Result<QueryOutput> run_query(Context& context, const PassProgram& program,
+                              const ShadowMapImages& map, const FloatImage& receivers,
+                              const ParamBlock& params) {
+  // Said here rather than as "nothing to bind": the map could have one.
+  if (!map.minmax && declares_image(program, kShadowMinmax)) {
+    return make_error(Error::Kind::bad_input, "query pass",
+                      "the program reads shadow_minmax, the shadow map's min-max mip, but this " +
+                          std::to_string(map.colour.desc().width) + "x" +
+                          std::to_string(map.colour.desc().height) +
+                          " map has none; build it first (Engine::build_minmax with the "
+                          "variant's minmax_init and minmax_reduce passes)");
+  }
   PENUMBRA_TRY(check_receivers(receivers));
   PENUMBRA_TRY(context.check_extent(receivers.width, receivers.height, "receivers"));
   const auto width = static_cast<std::uint32_t>(receivers.width);
@@ -35,21 +47,35 @@ Result<FloatImage> run_query(Context& context, const PassProgram& program,
 
   PassDraw draw;
   draw.program = &program;
-  draw.shape = {"query pass", kQueryPositionFormat, 2, false, false};
-  draw.resources = {&params, &map, &*receivers_image};
+  draw.shape = {"query pass", kVisibilityTarget, kQueryPositionFormat, 2, false, false};
+  draw.resources.params = &params;
+  draw.resources.shadow_map = &map;
+  draw.resources.receivers = &*receivers_image;
+  draw.resources.minmax_mip = map.minmax ? &map.minmax->image : nullptr;
   draw.positions = kFullScreenTriangle;
   draw.target.colour = &*visibility;
   draw.target.colour_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   draw.target.next_stages = VK_PIPELINE_STAGE_TRANSFER_BIT;
   draw.target.next_access = VK_ACCESS_TRANSFER_READ_BIT;
+  draw.timer = context.timestamps ? &*context.timestamps : nullptr;
   PENUMBRA_TRY(draw_pass(context, draw));
 
+  QueryOutput output;
+  if (context.timestamps) {
+    auto ms = context.timestamps->elapsed_ms();
+    if (!ms) return ms.error();
+    output.gpu_ms = *ms;
+  }
   auto texels = read_image(*context.device, *context.commands, *visibility,
-                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 1, "the visibility image");
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 2, "the visibility image");
   if (!texels) return texels.error();
-  FloatImage result(receivers.width, receivers.height, 1);
-  result.data = std::move(*texels);
-  return result;
+  output.visibility = FloatImage(receivers.width, receivers.height, 1);
+  output.texel_reads = FloatImage(receivers.width, receivers.height, 1);
+  for (std::size_t p = 0; p < output.visibility.pixel_count(); ++p) {
+    output.visibility.data[p] = (*texels)[2 * p];
+    output.texel_reads.data[p] = (*texels)[2 * p + 1];
+  }
+  return output;
 }
 
 }  // namespace penumbra::detail

@@ -1,5 +1,6 @@
 #include "penumbra/runtime/shadow_map.hpp"
 
+#include <optional>
 #include <utility>
 
 #include "formats.hpp"
@@ -27,7 +28,7 @@ Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context&
   auto colour = vk::Image::create(*context.device, colour_desc, "the shadow map's colour image");
   if (!colour) return colour.error();
   return std::unique_ptr<ShadowMapImages>(
-      new ShadowMapImages{context.device, std::move(*depth), std::move(*colour)});
+      new ShadowMapImages{context.device, std::move(*depth), std::move(*colour), std::nullopt});
 }
 
 }  // namespace detail
@@ -43,6 +44,10 @@ int ShadowMap::width() const {
 
 int ShadowMap::height() const {
   return static_cast<int>(images_->colour.desc().height);
+}
+
+int ShadowMap::minmax_levels() const {
+  return images_->minmax ? static_cast<int>(images_->minmax->sizes.size()) : 0;
 }
 
 }  // namespace penumbra

@@ -4,8 +4,11 @@
 #include <vulkan/vulkan.h>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "context.hpp"
+#include "penumbra/support/minmax_levels.hpp"
 #include "vk/image.hpp"
 
 namespace penumbra::detail {
@@ -14,13 +17,23 @@ namespace penumbra::detail {
 // every operation on them starts and ends there.
 inline constexpr VkImageLayout kMapDepthLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
 inline constexpr VkImageLayout kMapColourLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+inline constexpr VkImageLayout kMinmaxLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
+// The min-max mip (docs/runtime.md, "The min-max mip"): hierarchy level l
+// (1..N) in mip level l - 1 of a 2^(N-1) x 2^(N-1) RG32F image, at texels
+// [0, sizes[l - 1]); the rest of each level is padding.
+struct MinmaxMip {
+  vk::Image image;
+  std::vector<LevelSize> sizes;  // minmax_level_sizes of the map
+};
 
 struct ShadowMapImages {
   // First, so it is released after both images. Also identifies the only
   // Context that may use them: the one with the same device.
   std::shared_ptr<const vk::Device> device;
-  vk::Image depth;   // D32_SFLOAT
-  vk::Image colour;  // R32_SFLOAT, the same values
+  vk::Image depth;                  // D32_SFLOAT
+  vk::Image colour;                 // R32_SFLOAT, the same values
+  std::optional<MinmaxMip> minmax;  // once built (Engine::build_minmax)
 };
 
 // Both images, uninitialized (layout UNDEFINED), usable as attachments,

@@ -1,4 +1,4 @@
-# Sourced by scripts/run.sh and scripts/test.sh: installs the Debian 12
+# Sourced by scripts/run.sh, test.sh and bench.sh: installs the Debian 12
 # packages that are missing, then configures and builds with CMake + Ninja.
 
 PENUMBRA_PACKAGES=(

@@ -8,6 +8,8 @@ layout(set = 0, binding = 0, std140) uniform ShadowParams {
   vec4 light;            // light_world_size, light_frustum_width, near_plane, light size in uv
   vec4 sampling;         // filter_radius_uv, bias, depth_scale, 1/depth_scale
   vec4 screen_size;      // output width, height, 1/width, 1/height
+  vec4 source_size;      // min-max build passes: the level they read: W, H, 1/W, 1/H
+  vec4 minmax_info;      // x: the min-max mip's top level N (1x1); y, z, w: 0
 } params;
 
 // The whitepaper's names for the same quantities.
@@ -20,5 +22,6 @@ layout(set = 0, binding = 0, std140) uniform ShadowParams {
 #define DEPTH_SCALE (params.sampling.z)
 #define INV_DEPTH_SCALE (params.sampling.w)
 #define TEXEL_SIZE (params.shadow_map_size.zw)
+#define MINMAX_TOP_LEVEL (params.minmax_info.x)
 
 #endif

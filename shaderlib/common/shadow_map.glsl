@@ -11,9 +11,14 @@ layout(set = 0, binding = 1) uniform sampler2D shadow_depth;
 #if PENUMBRA_HAS_COMPARISON_SAMPLER
 layout(set = 0, binding = 2) uniform sampler2DShadow shadow_cmp;
 #endif
+// Shadow-map and mip texels read so far (the query pass's debug output .y):
+// a point read or a min-max node counts 1, a bilinear comparison 4. The
+// query pass zeroes it first.
+float penumbra_texel_reads;
 
 // Linear light-view z of the texel nearest to uv (point sampling).
 float shadow_depth_point(vec2 uv) {
+  penumbra_texel_reads += 1.0;
   return textureLod(shadow_depth, uv, 0.0).r * INV_DEPTH_SCALE;
 }
 
@@ -24,12 +29,14 @@ float shadow_reference(float z_receiver) {
 
 // 1 when the nearest texel lets the receiver see the light (z_r <= depth).
 float shadow_compare_point(vec2 uv, float z_receiver) {
+  penumbra_texel_reads += 1.0;
   return shadow_reference(z_receiver) <= textureLod(shadow_depth, uv, 0.0).r ? 1.0 : 0.0;
 }
 
 // Bilinear comparison: the four texels around uv, each compared, blended
 // with bilinear weights (SampleCmpLevelZero with a linear comparison filter).
 float shadow_compare_bilinear(vec2 uv, float z_receiver) {
+  penumbra_texel_reads += 4.0;
   float reference = shadow_reference(z_receiver);
 #if PENUMBRA_HAS_COMPARISON_SAMPLER
   return textureLod(shadow_cmp, vec3(uv, reference), 0.0);
@@ -46,6 +53,12 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver) {
   float lit11 = reference <= textureLod(shadow_depth, uv11, 0.0).r ? 1.0 : 0.0;
   return mix(mix(lit00, lit10, weight.x), mix(lit01, lit11, weight.x), weight.y);
 #endif
+}
+
+// Normalized depth of map texel `texel` (integer coordinates), point read.
+float shadow_texel(vec2 texel) {
+  penumbra_texel_reads += 1.0;
+  return textureLod(shadow_depth, (texel + 0.5) * TEXEL_SIZE, 0.0).r;
 }
 
 #endif

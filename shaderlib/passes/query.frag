@@ -1,6 +1,7 @@
 #version 450
 // Query pass: reads the receiver (u, v, z_r) at this pixel and writes the
-// variant's visibility in [0, 1].
+// variant's visibility in [0, 1] to .x and, for debugging, the shadow-map
+// and min-max texels it read to .y.
 #extension GL_GOOGLE_include_directive : require
 #include "variant.glsl"
 #include "techniques/technique.glsl"
@@ -11,6 +12,8 @@ layout(location = 0) in vec2 screen_uv;  // this pixel's centre in [0, 1]
 layout(location = 0) out vec4 visibility;
 
 void main() {
+  penumbra_texel_reads = 0.0;
   vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
-  visibility = vec4(shadow_visibility(query));
+  float visible = shadow_visibility(query);
+  visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }

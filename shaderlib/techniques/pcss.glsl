@@ -3,10 +3,7 @@
 // (function names kept). The blocker search uses BLOCKER_DISK, the
 // filtering PCF_DISK.
 
-// Parallel plane estimation.
-float PenumbraSize(float zReceiver, float zBlocker) {
-  return (zReceiver - zBlocker) / zBlocker;
-}
+#include "techniques/pcss_filter.glsl"
 
 void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, float zReceiver) {
   // Similar triangles give the region of the map to search.
@@ -23,15 +20,6 @@ void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, floa
   // The whitepaper divides unconditionally; PCSS() returns before using the
   // average when there is no blocker, so avoid the 0/0 here.
   avgBlockerDepth = numBlockers > 0.0 ? blockerSum / numBlockers : zReceiver;
-}
-
-float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV) {
-  float sum = 0.0;
-  for (int i = 0; i < PCF_NUM_SAMPLES; ++i) {
-    vec2 offset = PCF_DISK[i] * filterRadiusUV;
-    sum += shadow_compare_bilinear(uv + offset, zReceiver);
-  }
-  return sum / float(PCF_NUM_SAMPLES);
 }
 
 float PCSS(vec3 coords) {

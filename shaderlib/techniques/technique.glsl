@@ -9,6 +9,12 @@
 #include "techniques/pcf_poisson.glsl"
 #elif defined(PENUMBRA_TECHNIQUE_PCSS)
 #include "techniques/pcss.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_MINMAX_PCF)
+#include "techniques/minmax_pcf.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_BACKPROJECTION)
+#include "techniques/backprojection.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_PCSS_MINMAX)
+#include "techniques/pcss_minmax.glsl"
 #else
 #error "no PENUMBRA_TECHNIQUE_* defined"
 #endif

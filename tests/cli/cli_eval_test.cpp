@@ -11,7 +11,6 @@
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/reference/precision.hpp"
-#include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/reference/whitepaper_pcss.hpp"
 #include "penumbra/support/pfm.hpp"
@@ -30,35 +29,10 @@ constexpr const char* kManifest = R"({
     {"technique": ["pcf_grid"], "kernel": [3]}
   ]})";
 
-class EvalCommand : public ::testing::Test {
+class EvalCommand : public EvalFixture {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new ScratchDir("eval");
-    const auto manifest = dir_->write("manifest.json", kManifest);
-    const CliRun run =
-        run_penumbra("build '" + manifest.string() + "' -o '" + lib().string() + "'");
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    // The whitepaper's own setting: its constants are the scenes' defaults.
-    const reference::Scene scene = reference::builtin_scenes().front();
-    map_ = reference::ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);
-    receivers_ = reference::receivers(scene, scene.receivers_width, scene.receivers_height);
-    ASSERT_TRUE(write_pfm(dir_->path() / "depth.pfm", map_).ok());
-    ASSERT_TRUE(write_pfm(dir_->path() / "recv.pfm", receivers_).ok());
-  }
-  static void TearDownTestSuite() { delete dir_; }
-
-  static std::filesystem::path lib() { return dir_->path() / "lib"; }
-  static std::string path(const std::string& name) {
-    return "'" + (dir_->path() / name).string() + "'";
-  }
-  static std::string eval_args(const std::string& variant, const std::string& extra) {
-    return "eval '" + lib().string() + "' " + variant + " --shadow-map " + path("depth.pfm") +
-           " --receivers " + path("recv.pfm") + " " + extra;
-  }
-
-  static inline ScratchDir* dir_ = nullptr;
-  static inline FloatImage map_;
-  static inline FloatImage receivers_;
+  static void SetUpTestSuite() { set_up_eval("eval", kManifest); }
+  static void TearDownTestSuite() { tear_down_eval(); }
 };
 
 TEST_F(EvalCommand, PcssWhitepaper16AgreesWithTheWhitepapersCode) {

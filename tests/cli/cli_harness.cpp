@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "penumbra/reference/scene.hpp"
+#include "penumbra/support/pfm.hpp"
+
 namespace penumbra::testing {
 namespace {
 
@@ -60,6 +63,34 @@ std::size_t ScratchDir::entry_count() const {
     ++count;
   }
   return count;
+}
+
+void EvalFixture::set_up_eval(const std::string& name, const std::string& manifest) {
+  dir_ = new ScratchDir(name);
+  const auto manifest_file = dir_->write("manifest.json", manifest);
+  const CliRun run =
+      run_penumbra("build '" + manifest_file.string() + "' -o '" + lib().string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // The whitepaper's own setting: its constants are the scenes' defaults.
+  const reference::Scene scene = reference::builtin_scenes().front();
+  map_ = reference::ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);
+  receivers_ = reference::receivers(scene, scene.receivers_width, scene.receivers_height);
+  ASSERT_TRUE(write_pfm(dir_->path() / "depth.pfm", map_).ok());
+  ASSERT_TRUE(write_pfm(dir_->path() / "recv.pfm", receivers_).ok());
+}
+
+void EvalFixture::tear_down_eval() {
+  delete dir_;
+  dir_ = nullptr;
+}
+
+std::string EvalFixture::path(const std::string& name) {
+  return "'" + (dir_->path() / name).string() + "'";
+}
+
+std::string EvalFixture::eval_args(const std::string& variant, const std::string& extra) {
+  return "eval '" + lib().string() + "' " + variant + " --shadow-map " + path("depth.pfm") +
+         " --receivers " + path("recv.pfm") + " " + extra;
 }
 
 }  // namespace penumbra::testing

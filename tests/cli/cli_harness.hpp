@@ -1,8 +1,12 @@
 // Runs the built `penumbra` binary and captures its exit code and output.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
+
+#include "penumbra/support/image.hpp"
 
 namespace penumbra::testing {
 
@@ -29,6 +33,26 @@ class ScratchDir {
 
  private:
   std::filesystem::path path_;
+};
+
+// The eval tests' fixture: a scratch directory holding the library `penumbra
+// build` made from a manifest (lib/) and the first built-in scene's shadow
+// map and receivers (depth.pfm, recv.pfm). Each suite calls set_up_eval() in
+// SetUpTestSuite and tear_down_eval() in TearDownTestSuite.
+class EvalFixture : public ::testing::Test {
+ protected:
+  static void set_up_eval(const std::string& name, const std::string& manifest);
+  static void tear_down_eval();
+
+  static std::filesystem::path lib() { return dir_->path() / "lib"; }
+  // The scratch directory's `name`, quoted for run_penumbra.
+  static std::string path(const std::string& name);
+  // "eval <lib> <variant> --shadow-map depth.pfm --receivers recv.pfm <extra>".
+  static std::string eval_args(const std::string& variant, const std::string& extra);
+
+  static inline ScratchDir* dir_ = nullptr;
+  static inline FloatImage map_;
+  static inline FloatImage receivers_;
 };
 
 }  // namespace penumbra::testing

@@ -55,13 +55,14 @@ TEST(ManifestErrors, UnknownTopLevelKey) {
 TEST(ManifestErrors, UnknownKeyInASet) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
                    "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
-                   "blocker_samples, pcf_samples, kernel, disk, target");
+                   "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, target");
 }
 
 TEST(ManifestErrors, UnknownTechnique) {
   expect_bad_input(manifest_error(with_set(R"({"technique": ["pcss", "vsm"]})")),
                    "perms.json: /sets/1/technique/1: unknown technique 'vsm'; allowed "
-                   "techniques: hard, pcf_grid, pcf_poisson, pcss");
+                   "techniques: hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, "
+                   "pcss_minmax");
 }
 
 TEST(ManifestErrors, UnknownTarget) {
@@ -93,10 +94,59 @@ TEST(ManifestErrors, SampleCountMustBeAnInteger) {
                    "perms.json: /sets/1/pcf_samples: expected an integer, got 16.5");
 }
 
-TEST(ManifestErrors, EvenKernel) {
+TEST(ManifestErrors, EvenKernelForPcfGrid) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": [3, 4]})")),
-                   "perms.json: /sets/1/kernel/1: kernel 4 is not allowed; allowed odd sizes "
-                   "1..127");
+                   "perms.json: /sets/1/kernel/1: kernel 4 is not allowed for pcf_grid; allowed "
+                   "odd sizes 1..127 (minmax_pcf takes any size 1..128)");
+  // 128 is a size minmax_pcf takes, but not pcf_grid, even in a set shared with it.
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": ["minmax_pcf", "pcf_grid"], "kernel": 128})")),
+      "perms.json: /sets/1/kernel: kernel 128 is not allowed for pcf_grid; allowed odd sizes "
+      "1..127 (minmax_pcf takes any size 1..128)");
+}
+
+TEST(ManifestErrors, KernelOutOfRange) {
+  const std::string allowed = " is out of range; allowed 1..128 (pcf_grid: odd sizes 1..127)";
+  expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": [8, 0]})")),
+                   "perms.json: /sets/1/kernel/1: kernel 0" + allowed);
+  expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 129})")),
+                   "perms.json: /sets/1/kernel: kernel 129" + allowed);
+  expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": 129})")),
+                   "perms.json: /sets/1/kernel: kernel 129" + allowed);
+}
+
+TEST(ManifestErrors, UnknownTraversal) {
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 8, "traversal": "foo"})")),
+      "perms.json: /sets/1/traversal: unknown traversal 'foo'; allowed traversals: brute_force "
+      "(leave the key out for the min-max traversal)");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "backprojection",
+                                              "traversal": ["brute_force", 1]})")),
+                   "perms.json: /sets/1/traversal/1: expected a string, got 1");
+}
+
+TEST(ManifestErrors, MaxNodesOutOfRange) {
+  const std::string allowed = " is out of range; allowed 1..1048576";
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "backprojection", "max_nodes": [64, 0]})")),
+      "perms.json: /sets/1/max_nodes/1: max_nodes 0" + allowed);
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "backprojection", "max_nodes": 1048577})")),
+      "perms.json: /sets/1/max_nodes: max_nodes 1048577" + allowed);
+}
+
+TEST(ManifestErrors, TraversalAndMaxNodesOnlyWhereUsed) {
+  expect_bad_input(
+      manifest_error(
+          with_set(R"({"technique": "pcf_grid", "kernel": 3, "traversal": "brute_force"})")),
+      "perms.json: /sets/1/traversal: key 'traversal' is used by none of this set's techniques");
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 8, "max_nodes": 64})")),
+      "perms.json: /sets/1/max_nodes: key 'max_nodes' is used by none of this set's techniques");
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "minmax_pcf", "traversal": "brute_force"})")),
+      "perms.json: /sets/1: technique minmax_pcf needs key 'kernel'; minmax_pcf uses "
+      "kernel, traversal (optional)");
 }
 
 TEST(ManifestErrors, Whitepaper16HasOnly16Points) {
@@ -138,7 +188,7 @@ TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {
       "blocker_samples, pcf_samples, disk");
   expect_bad_input(manifest_error(with_set(R"({"kernel": 3})")),
                    "perms.json: /sets/1: missing key 'technique'; allowed techniques: hard, "
-                   "pcf_grid, pcf_poisson, pcss");
+                   "pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax");
 }
 
 TEST(ManifestErrors, KeyNoTechniqueUses) {
@@ -158,11 +208,16 @@ TEST(ManifestErrors, SetsAndExclusions) {
   expect_bad_input(
       manifest_error(R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{}]})"),
       "perms.json: /exclude/0: an exclusion needs at least one key; allowed keys: technique, "
-      "blocker_samples, pcf_samples, kernel, disk, target");
+      "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, target");
   expect_bad_input(
       manifest_error(
-          R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 2}]})"),
-      "perms.json: /exclude/0/kernel: kernel 2 is not allowed; allowed odd sizes 1..127");
+          R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 0}]})"),
+      "perms.json: /exclude/0/kernel: kernel 0 is out of range; allowed 1..128 (pcf_grid: odd "
+      "sizes 1..127)");
+  expect_bad_input(
+      manifest_error(
+          R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"max_nodes": 0}]})"),
+      "perms.json: /exclude/0/max_nodes: max_nodes 0 is out of range; allowed 1..1048576");
 }
 
 TEST(ManifestErrors, MissingFile) {

@@ -66,6 +66,13 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "pcss_b32_p25_poisson",
                                   "pcss_b32_p32_poisson",
                                   "pcss_b32_p64_poisson",
+                                  "minmax_pcf_k8",
+                                  "minmax_pcf_k16",
+                                  "minmax_pcf_k32",
+                                  "minmax_pcf_k64",
+                                  "backprojection",
+                                  "pcss_minmax_p16_poisson",
+                                  "pcss_minmax_p32_poisson",
                               }));
   for (const Variant& variant : *variants) EXPECT_EQ(variant.targets, kEveryTarget) << variant.name;
 
@@ -73,6 +80,12 @@ TEST(ManifestExpand, DefaultLibrary) {
   ASSERT_TRUE(whitepaper && whitepaper->blocker_disk && whitepaper->pcf_disk);
   EXPECT_EQ(whitepaper->blocker_disk->points, whitepaper16().points);
   EXPECT_EQ(whitepaper->pcf_disk->points, whitepaper16().points);
+
+  const Variant* minmax = find(*variants, "pcss_minmax_p32_poisson");
+  ASSERT_TRUE(minmax && minmax->pcf_disk);
+  EXPECT_FALSE(minmax->blocker_disk.has_value());
+  EXPECT_EQ(minmax->pcf_disk->points,
+            generate_disk({.count = 32, .seed = 1, .method = "sample_elimination"})->points);
 
   const Variant* generated = find(*variants, "pcss_b32_p64_poisson");
   ASSERT_TRUE(generated && generated->blocker_disk && generated->pcf_disk);
@@ -196,6 +209,43 @@ TEST(ManifestExpand, SortsByTechniqueThenNumericKeys) {
                                       "pcss_b9_p16_a", "pcss_b9_p16_b", "pcss_b9_p100_a",
                                       "pcss_b9_p100_b", "pcss_b25_p16_a", "pcss_b25_p16_b",
                                       "pcss_b25_p100_a", "pcss_b25_p100_b"}));
+}
+
+TEST(ManifestExpand, TraversalAndMaxNodesAreOptionalAxes) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": ["minmax_pcf", "pcf_grid"], "kernel": 3},
+             {"technique": "minmax_pcf", "kernel": 12},
+             {"technique": ["minmax_pcf", "backprojection"], "kernel": 3,
+              "traversal": "brute_force"},
+             {"technique": "backprojection", "max_nodes": [4096, 64]},
+             {"technique": "backprojection"}]})");
+  EXPECT_EQ(names(variants),
+            (std::vector<std::string>{"pcf_grid_k3", "minmax_pcf_k3", "minmax_pcf_k3_brute_force",
+                                      "minmax_pcf_k12", "backprojection", "backprojection_n64",
+                                      "backprojection_n4096", "backprojection_brute_force"}));
+  const Variant* brute = find(variants, "backprojection_brute_force");
+  ASSERT_TRUE(brute);
+  EXPECT_EQ(brute->keys.traversal, "brute_force");
+  EXPECT_FALSE(brute->keys.kernel.has_value());
+  EXPECT_FALSE(brute->keys.max_nodes.has_value());
+  const Variant* bounded = find(variants, "backprojection_n64");
+  ASSERT_TRUE(bounded);
+  EXPECT_EQ(bounded->keys.max_nodes, 64);
+  EXPECT_FALSE(bounded->keys.traversal.has_value());
+}
+
+TEST(ManifestExpand, ExclusionsMatchTraversalAndMaxNodes) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": "backprojection", "traversal": "brute_force"},
+             {"technique": "backprojection", "max_nodes": [64, 128]},
+             {"technique": "backprojection"}],
+    "exclude": [{"max_nodes": 64}, {"traversal": "brute_force", "target": "hlsl_dx9"}]})");
+  ASSERT_EQ(names(variants), (std::vector<std::string>{"backprojection", "backprojection_n128",
+                                                       "backprojection_brute_force"}));
+  EXPECT_EQ(variants[1].targets, kEveryTarget);
+  EXPECT_EQ(variants[2].targets,
+            (std::vector<Target>{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
+                                 Target::hlsl_dx10}));
 }
 
 TEST(ManifestExpand, LoadedManifestNamesItsFile) {

@@ -54,9 +54,9 @@ TEST(Model, VariantNames) {
                            k.traversal = "brute_force";
                          })),
             "minmax_pcf_k24_brute_force");
-  EXPECT_EQ(variant_name(Technique::backprojection,
-                         keys([](VariantKeys& k) { k.max_nodes = 4096; })),
-            "backprojection_n4096");
+  EXPECT_EQ(
+      variant_name(Technique::backprojection, keys([](VariantKeys& k) { k.max_nodes = 4096; })),
+      "backprojection_n4096");
 }
 
 }  // namespace

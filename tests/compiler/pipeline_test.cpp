@@ -3,12 +3,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/compiler/targets.hpp"
 #include "stages/stages.hpp"
 
 namespace penumbra {
@@ -84,15 +87,28 @@ TEST_P(EveryTechniqueAndTarget, QueryPassCompilesWithTheSharedInterface) {
   ASSERT_EQ(frag.uniform_blocks.size(), 1u);
   const UniformBlock& block = frag.uniform_blocks[0];
   EXPECT_EQ(block.type_name, "ShadowParams");
-  ASSERT_EQ(block.members.size(), 4u);
+  ASSERT_EQ(block.members.size(), 6u);
   EXPECT_EQ(block.members[1].name, "light");
   EXPECT_EQ(block.members[1].offset, 16u);
+  EXPECT_EQ(block.members[4].name, "source_size");
+  EXPECT_EQ(block.members[4].offset, 64u);
+  EXPECT_EQ(block.members[5].name, "minmax_info");
+  EXPECT_EQ(block.members[5].offset, 80u);
   bool has_cmp = false;
+  bool has_minmax = false;
   for (const SampledImage& image : frag.sampled_images) {
     has_cmp = has_cmp || (image.name == "shadow_cmp" && image.comparison);
+    has_minmax = has_minmax || (image.name == "shadow_minmax" && image.binding == 4u);
   }
-  // Only hlsl_dx9 makes its compares in the shader; hard needs no bilinear compare.
-  EXPECT_EQ(has_cmp, target != Target::hlsl_dx9 && technique != Technique::hard);
+  // Only hlsl_dx9 makes its compares in the shader; hard, minmax_pcf and
+  // backprojection make no bilinear compare.
+  const bool bilinear = technique != Technique::hard && technique != Technique::minmax_pcf &&
+                        technique != Technique::backprojection;
+  EXPECT_EQ(has_cmp, target != Target::hlsl_dx9 && bilinear);
+  EXPECT_EQ(has_minmax, uses_minmax_mip(technique));
+  // visibility (.x) and the texels read (.y).
+  ASSERT_EQ(frag.outputs.size(), 1u);
+  EXPECT_EQ(frag.outputs[0].name, "visibility");
 }
 
 INSTANTIATE_TEST_SUITE_P(All, EveryTechniqueAndTarget,
@@ -102,6 +118,83 @@ INSTANTIATE_TEST_SUITE_P(All, EveryTechniqueAndTarget,
                            return std::string(to_string(std::get<0>(param_info.param))) + "_" +
                                   std::string(to_string(std::get<1>(param_info.param)));
                          });
+
+// The traversal variants: brute force, and a work bound that needs all three
+// nested loops (over 255^2 visits).
+class TraversalVariants : public ::testing::TestWithParam<std::tuple<int, Target>> {};
+
+// 0: minmax_pcf brute force, 1: backprojection brute force, 2: backprojection
+// with the largest max_nodes.
+Variant traversal_variant(int which) {
+  Variant v = make_variant(which == 0 ? Technique::minmax_pcf : Technique::backprojection);
+  if (which < 2) v.keys.traversal = std::string(kBruteForceTraversal);
+  if (which == 2) v.keys.max_nodes = kMaxMaxNodes;
+  v.name = variant_name(v.technique, v.keys);
+  return v;
+}
+
+TEST_P(TraversalVariants, CompileAndPassTheTargetRules) {
+  const auto [which, target] = GetParam();
+  const Variant variant = traversal_variant(which);
+  auto pass = compile_pass(variant, target, PassKind::query);
+  ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+  if (target == Target::glsl450) {
+    if (variant.keys.traversal) {
+      EXPECT_THAT(pass->frag.text, HasSubstr("shadow_texel("));
+      EXPECT_THAT(pass->frag.text, Not(HasSubstr("minmax_descend")));
+    } else {
+      EXPECT_THAT(pass->frag.text, HasSubstr("minmax_descend"));
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, TraversalVariants,
+                         ::testing::Combine(::testing::Values(0, 1, 2),
+                                            ::testing::ValuesIn(kAllTargets)),
+                         [](const auto& param_info) {
+                           return traversal_variant(std::get<0>(param_info.param)).name + "_" +
+                                  std::string(to_string(std::get<1>(param_info.param)));
+                         });
+
+bool binds_image(const ShaderInterface& iface, std::string_view name, std::uint32_t binding) {
+  return std::ranges::any_of(iface.sampled_images, [&](const SampledImage& image) {
+    return image.name == name && image.binding == binding;
+  });
+}
+
+class MinmaxPasses : public ::testing::TestWithParam<Target> {};
+
+TEST_P(MinmaxPasses, CompileForEveryTargetAndReadTheirSource) {
+  const Target target = GetParam();
+  const Variant variant = make_variant(Technique::minmax_pcf);
+  auto init = compile_pass(variant, target, PassKind::minmax_init);
+  ASSERT_TRUE(init.ok()) << init.error().to_string();
+  auto reduce = compile_pass(variant, target, PassKind::minmax_reduce);
+  ASSERT_TRUE(reduce.ok()) << reduce.error().to_string();
+  EXPECT_TRUE(binds_image(init->frag.interface, "shadow_depth", 1u));
+  EXPECT_FALSE(binds_image(init->frag.interface, "minmax_source", 5u));
+  EXPECT_TRUE(binds_image(reduce->frag.interface, "minmax_source", 5u));
+  EXPECT_FALSE(binds_image(reduce->frag.interface, "shadow_depth", 1u));
+  for (const CompiledPass* pass : {&*init, &*reduce}) {
+    ASSERT_EQ(pass->frag.interface.outputs.size(), 1u);
+    EXPECT_EQ(pass->frag.interface.outputs[0].name, "minmax");
+    ASSERT_EQ(pass->vert.interface.outputs.size(), 1u);
+    EXPECT_EQ(pass->vert.interface.outputs[0].name, "screen_uv");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, MinmaxPasses, ::testing::ValuesIn(kAllTargets),
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
+
+TEST(MinmaxPasses, OnlyForTechniquesThatReadTheMip) {
+  auto pass = compile_pass(make_variant(Technique::pcss), Target::spirv, PassKind::minmax_reduce);
+  ASSERT_FALSE(pass.ok());
+  EXPECT_EQ(pass.error().to_string(),
+            "variant pcss_b16_p16_whitepaper16: has no minmax_reduce pass (technique pcss does "
+            "not read the min-max mip)");
+}
 
 TEST(TargetText, Dx9UsesRegistersPointReadsAndNoComparisonSampler) {
   auto pass = compile_pass(make_variant(Technique::pcss), Target::hlsl_dx9, PassKind::query);
@@ -259,6 +352,46 @@ TEST(BuildLibrary, IndexHoldsTheBakedDiskValuesExactly) {
   // Two different disks keep their own source names.
   EXPECT_THAT(text, HasSubstr("BLOCKER_DISK[25]"));
   EXPECT_THAT(text, HasSubstr("PCF_DISK[16]"));
+}
+
+TEST(BuildLibrary, MinmaxPassesOnlyForTheVariantsThatUseThem) {
+  TempDir dir("minmax");
+  const std::vector<Variant> variants = {make_variant(Technique::hard),
+                                         make_variant(Technique::backprojection)};
+  ASSERT_TRUE(build_library(variants, dir.path / "out", {.jobs = 2}, ignore_diagnostics()).ok());
+  for (Target target : kAllTargets) {
+    for (const char* stem : {"minmax_init", "minmax_reduce"}) {
+      for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
+        const auto path = dir.path / "out" / std::string(to_string(target)) / "common" /
+                          output_file_name(target, stem, stage);
+        EXPECT_TRUE(std::filesystem::exists(path)) << path;
+      }
+    }
+  }
+  auto library = load_library(dir.path / "out");
+  ASSERT_TRUE(library.ok()) << library.error().to_string();
+  const LibraryVariant* hard = library->find("hard");
+  const LibraryVariant* back = library->find("backprojection");
+  ASSERT_TRUE(hard && back);
+  EXPECT_FALSE(hard->passes.contains(PassKind::minmax_init));
+  EXPECT_FALSE(hard->passes.contains(PassKind::minmax_reduce));
+  ASSERT_TRUE(back->passes.contains(PassKind::minmax_reduce));
+  EXPECT_EQ(back->passes.at(PassKind::minmax_reduce).at(Target::glsl330).vert,
+            "glsl330/common/minmax_reduce.vert");
+  EXPECT_EQ(back->passes.at(PassKind::minmax_init).at(Target::hlsl_dx9).frag,
+            "hlsl_dx9/common/minmax_init.frag.hlsl");
+  EXPECT_THAT(slurp(dir.path / "out" / "glsl450" / "common" / "minmax_init.vert"),
+              HasSubstr("Shared by every variant that reads the min-max mip; target glsl450; "
+                        "minmax_init pass, vertex stage"));
+}
+
+TEST(BuildLibrary, NoMinmaxPassesWithoutAVariantThatUsesThem) {
+  TempDir dir("no-minmax");
+  const Variant hard = make_variant(Technique::hard);
+  ASSERT_TRUE(build_library(std::span(&hard, 1), dir.path / "out", {}, ignore_diagnostics()).ok());
+  EXPECT_TRUE(std::filesystem::exists(dir.path / "out" / "spirv" / "common" / "depth.frag.spv"));
+  EXPECT_FALSE(
+      std::filesystem::exists(dir.path / "out" / "spirv" / "common" / "minmax_init.frag.spv"));
 }
 
 }  // namespace

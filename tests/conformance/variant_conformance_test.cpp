@@ -27,6 +27,19 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
                             << ": " << depth.mismatched << " of " << depth.texels << " texels off";
   }
   ASSERT_EQ(report->variants.size(), 1u);
+  const Technique technique = report->variants[0].technique;
+  // Every target's own minmax passes build a mip equal to the CPU mip on every scene.
+  if (uses_minmax_mip(technique)) {
+    EXPECT_EQ(report->minmax_checks.size(),
+              kAllTargets.size() * reference::builtin_scenes().size());
+  } else {
+    EXPECT_TRUE(report->minmax_checks.empty());
+  }
+  for (const MinmaxCheck& mip : report->minmax_checks) {
+    EXPECT_TRUE(mip.pass) << "min-max mip of " << to_string(mip.target) << " on " << mip.scene
+                          << ": " << mip.mismatched << " of " << mip.texels << " nodes off, "
+                          << mip.levels << " of " << mip.expected_levels << " levels " << mip.error;
+  }
   std::set<Target> on_vulkan;
   for (const TargetRun& run : report->variants[0].runs) {
     const std::string label = std::string(to_string(run.target)) + " on " + run.backend;
@@ -50,6 +63,11 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
       // so anything larger there is a real error (a 1% radius error is ~8e-3).
       if (run.device.find("llvmpipe") != std::string::npos) {
         EXPECT_LT(c.max_abs_error, 1e-4) << label << " on " << scene.scene;
+      }
+      // A count of point compares, 1 - C / K^2 in float: bit-exact everywhere.
+      if (technique == Technique::minmax_pcf) {
+        EXPECT_EQ(c.tolerance, 0.0) << label;
+        EXPECT_EQ(c.max_abs_error, 0.0) << label << " on " << scene.scene;
       }
     }
   }

@@ -26,8 +26,9 @@ struct EmittedStage {
   CompiledStage compiled;  // text, the target's SPIR-V and its reflection
 };
 
-// Depth and query pass, vertex and fragment stage, in that order. Fails the
-// calling test (and returns fewer) when a pass does not compile.
+// Every pass the variant uses (depth, the min-max build passes when its
+// technique reads the mip, query), vertex and fragment stage, in that order.
+// Fails the calling test (and returns fewer) when a pass does not compile.
 std::vector<EmittedStage> emitted_stages(const Variant& variant, Target target);
 
 }  // namespace penumbra::testing

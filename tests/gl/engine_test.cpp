@@ -23,11 +23,13 @@ std::string lower(std::string text) {
 Result<FloatImage> run_hard(GlEngine& engine) {
   auto variant = default_variant("hard");
   if (!variant) return make_error(Error::Kind::internal, "test", "no variant hard");
-  auto text = emitted_query(*variant, Target::glsl450);
+  auto text = emitted_pass(*variant, Target::glsl450, PassKind::query);
   if (!text) return text.error();
   const SceneInputs inputs = any_scene_inputs();
-  return engine.run_query(text->vert, text->frag, inputs.normalized_depth, inputs.receivers,
-                          inputs.params);
+  auto output =
+      engine.run_query({text->view()}, inputs.normalized_depth, inputs.receivers, inputs.params);
+  if (!output) return output.error();
+  return std::move(output->visibility);
 }
 
 TEST(GlEngineTest, DefaultDisplayIsLlvmpipeWithGl45Core) {

@@ -25,19 +25,22 @@ class GlErrors : public ::testing::TestWithParam<Target> {
     ASSERT_NE(engine_, nullptr);
     auto variant = default_variant("pcss_b16_p16_whitepaper16");
     ASSERT_NE(variant, nullptr);
-    auto text = emitted_query(*variant, GetParam());
+    auto text = emitted_pass(*variant, GetParam(), PassKind::query);
     ASSERT_TRUE(text.ok()) << text.error().to_string();
     text_ = std::move(*text);
     inputs_ = any_scene_inputs();
   }
 
-  Result<FloatImage> run(const std::string& vert, const std::string& frag) {
-    return engine_->run_query(vert, frag, inputs_.normalized_depth, inputs_.receivers,
-                              inputs_.params);
+  Result<GlQueryOutput> run(const std::string& vert, const std::string& frag,
+                            const ParamBlock& params) {
+    return engine_->run_query({{vert, frag}}, inputs_.normalized_depth, inputs_.receivers, params);
+  }
+  Result<GlQueryOutput> run(const std::string& vert, const std::string& frag) {
+    return run(vert, frag, inputs_.params);
   }
 
   // Expects `result` to fail with `kind` and a message containing `part`.
-  static void expect_error(const Result<FloatImage>& result, Error::Kind kind,
+  static void expect_error(const Result<GlQueryOutput>& result, Error::Kind kind,
                            const std::string& where, const std::string& part) {
     ASSERT_FALSE(result.ok()) << "expected an error mentioning " << part;
     EXPECT_EQ(result.error().kind, kind) << result.error().to_string();
@@ -46,26 +49,26 @@ class GlErrors : public ::testing::TestWithParam<Target> {
   }
 
   std::unique_ptr<GlEngine> engine_;
-  QueryText text_;
+  PassText text_;
   SceneInputs inputs_;
 };
 
 TEST_P(GlErrors, ValidPassRunsAfterFailures) {
   expect_error(run(text_.vert, replaced(text_.frag, "vec3 query = textureLod(receivers",
                                         "oops; vec3 query = textureLod(receivers")),
-               Error::Kind::compile, "fragment stage", "oops");
+               Error::Kind::compile, "query pass", "oops");
   auto visibility = run(text_.vert, text_.frag);
   ASSERT_TRUE(visibility.ok()) << visibility.error().to_string();
-  EXPECT_EQ(visibility->width, inputs_.receivers.width);
-  EXPECT_EQ(visibility->height, inputs_.receivers.height);
+  EXPECT_EQ(visibility->visibility.width, inputs_.receivers.width);
+  EXPECT_EQ(visibility->visibility.height, inputs_.receivers.height);
 }
 
 TEST_P(GlErrors, CompileErrorsCarryTheDriversLog) {
   // Mesa's logs read "0:LINE(COLUMN): error: ...".
   expect_error(run(replaced(text_.vert, "gl_Position =", "gl_Positio ="), text_.frag),
-               Error::Kind::compile, "vertex stage", "error");
+               Error::Kind::compile, "query pass", "vertex stage: the GL driver's compiler");
   expect_error(run(text_.vert, replaced(text_.frag, "float sum = 0.0;", "float sum = 0.0")),
-               Error::Kind::compile, "fragment stage", "error");
+               Error::Kind::compile, "query pass", "fragment stage: the GL driver's compiler");
 }
 
 TEST_P(GlErrors, LinkErrorsCarryTheDriversLog) {
@@ -74,7 +77,7 @@ TEST_P(GlErrors, LinkErrorsCarryTheDriversLog) {
       replaced(replaced(text_.vert, "out vec2 screen_uv;", "out vec3 screen_uv;"),
                "screen_uv = (position * 0.5) + vec2(0.5);",
                "screen_uv = vec3((position * 0.5) + vec2(0.5), 0.0);");
-  expect_error(run(vert, text_.frag), Error::Kind::compile, "link", "screen_uv");
+  expect_error(run(vert, text_.frag), Error::Kind::compile, "query pass", "screen_uv");
 }
 
 TEST_P(GlErrors, NamesOutsideTheInterfaceAreRejected) {
@@ -85,8 +88,7 @@ TEST_P(GlErrors, NamesOutsideTheInterfaceAreRejected) {
                "sampler 'receiverz' is not part of the shader interface");
   const std::string extra =
       replaced(replaced(text_.frag, "void main()", "uniform float exposure;\nvoid main()"),
-               "visibility = vec4(shadow_visibility(param))",
-               "visibility = vec4(shadow_visibility(param) * exposure)");
+               "visibility = vec4(visible,", "visibility = vec4(visible * exposure,");
   expect_error(run(text_.vert, extra), Error::Kind::bad_input, "query pass",
                "uniform 'exposure' is not part of the shader interface");
   const std::string output =
@@ -99,21 +101,19 @@ TEST_P(GlErrors, NamesOutsideTheInterfaceAreRejected) {
 TEST_P(GlErrors, MissingParameterIsNamed) {
   ParamBlock params = inputs_.params;
   params.erase("sampling");
-  auto result = engine_->run_query(text_.vert, text_.frag, inputs_.normalized_depth,
-                                   inputs_.receivers, params);
-  expect_error(result, Error::Kind::bad_input, "query pass",
+  expect_error(run(text_.vert, text_.frag, params), Error::Kind::bad_input, "query pass",
                "ShadowParams member 'sampling' has no value");
 }
 
 TEST_P(GlErrors, UnusableImagesAreRejected) {
   FloatImage depth = inputs_.normalized_depth;
   depth.at(3, 2) = 1.5f;
-  expect_error(engine_->run_query(text_.vert, text_.frag, depth, inputs_.receivers, inputs_.params),
+  expect_error(engine_->run_query({text_.view()}, depth, inputs_.receivers, inputs_.params),
                Error::Kind::bad_input, "shadow map", "texel (3, 2)");
   const FloatImage two_channels(4, 4, 2);
-  expect_error(engine_->run_query(text_.vert, text_.frag, inputs_.normalized_depth, two_channels,
-                                  inputs_.params),
-               Error::Kind::bad_input, "receivers", "3 or 4 channels");
+  expect_error(
+      engine_->run_query({text_.view()}, inputs_.normalized_depth, two_channels, inputs_.params),
+      Error::Kind::bad_input, "receivers", "3 or 4 channels");
 }
 
 using GlExplicitBindings = GlErrors;
@@ -129,7 +129,7 @@ TEST_P(GlExplicitBindings, UnitsComeFromTheShader) {
   ASSERT_TRUE(expected.ok()) << expected.error().to_string();
   auto visibility = run(text_.vert, moved);
   ASSERT_TRUE(visibility.ok()) << visibility.error().to_string();
-  EXPECT_EQ(visibility->data, expected->data);
+  EXPECT_EQ(visibility->visibility.data, expected->visibility.data);
   const std::string shared = replaced(text_.frag, "binding = 3) uniform sampler2D receivers",
                                       "binding = 2) uniform sampler2D receivers");
   expect_error(run(text_.vert, shared), Error::Kind::bad_input, "query pass",

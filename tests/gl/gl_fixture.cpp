@@ -33,10 +33,18 @@ std::unique_ptr<Variant> default_variant(const std::string& name) {
   return nullptr;
 }
 
-Result<QueryText> emitted_query(const Variant& variant, Target target) {
-  auto pass = compile_pass(variant, target, PassKind::query);
+Result<PassText> emitted_pass(const Variant& variant, Target target, PassKind kind) {
+  auto pass = compile_pass(variant, target, kind);
   if (!pass) return pass.error();
-  return QueryText{std::move(pass->vert.text), std::move(pass->frag.text)};
+  return PassText{std::move(pass->vert.text), std::move(pass->frag.text)};
+}
+
+Result<MinmaxText> emitted_minmax(const Variant& variant, Target target) {
+  auto init = emitted_pass(variant, target, PassKind::minmax_init);
+  if (!init) return init.error();
+  auto reduce = emitted_pass(variant, target, PassKind::minmax_reduce);
+  if (!reduce) return reduce.error();
+  return MinmaxText{std::move(*init), std::move(*reduce)};
 }
 
 SceneInputs scene_inputs(const reference::Scene& scene) {

@@ -1,5 +1,5 @@
 // Shared by the GL tests: an engine on the default display, a variant's
-// emitted query pass for a GLSL target, and a scene's inputs for it.
+// emitted passes for a GLSL target, and a scene's inputs for them.
 #pragma once
 
 #include <memory>
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "penumbra/compiler/model.hpp"
+#include "penumbra/compiler/stage.hpp"
 #include "penumbra/gl/engine.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/runtime/program.hpp"
@@ -28,13 +29,25 @@ std::unique_ptr<GlEngine> make_gl_engine();
 // A variant of permutations/default.json; fails the test when absent.
 std::unique_ptr<Variant> default_variant(const std::string& name);
 
-struct QueryText {
-  std::string vert;  // fullscreen.vert as emitted
-  std::string frag;  // query.frag as emitted
+struct PassText {
+  std::string vert;  // fullscreen.vert as emitted for the pass
+  std::string frag;  // the pass's fragment stage as emitted
+
+  GlPass view() const { return {vert, frag}; }
 };
 
-// The variant's query pass compiled for `target` (glsl330 or glsl450).
-Result<QueryText> emitted_query(const Variant& variant, Target target);
+// The variant's pass `kind` compiled for `target` (glsl330 or glsl450).
+Result<PassText> emitted_pass(const Variant& variant, Target target, PassKind kind);
+
+struct MinmaxText {
+  PassText init;
+  PassText reduce;
+
+  GlMinmaxPasses view() const { return {init.view(), reduce.view()}; }
+};
+
+// The variant's minmax_init and minmax_reduce passes for `target`.
+Result<MinmaxText> emitted_minmax(const Variant& variant, Target target);
 
 // What a query pass over a scene needs: the ray-cast map in linear z and
 // normalized by a power of two, the receivers and ShadowParams.

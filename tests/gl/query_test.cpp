@@ -27,20 +27,21 @@ TEST_P(GlQueryConformance, MatchesReferenceOnEveryScene) {
   const auto& [name, target] = GetParam();
   auto variant = default_variant(name);
   ASSERT_NE(variant, nullptr);
-  auto text = emitted_query(*variant, target);
+  auto text = emitted_pass(*variant, target, PassKind::query);
   ASSERT_TRUE(text.ok()) << text.error().to_string();
   auto engine = make_gl_engine();
   ASSERT_NE(engine, nullptr);
   const double tolerance = reference::tolerance(variant->technique, kLlvmpipePrecision);
   for (const reference::Scene& scene : reference::builtin_scenes()) {
     const SceneInputs inputs = scene_inputs(scene);
-    auto gpu = engine->run_query(text->vert, text->frag, inputs.normalized_depth, inputs.receivers,
-                                 inputs.params);
+    auto gpu =
+        engine->run_query({text->view()}, inputs.normalized_depth, inputs.receivers, inputs.params);
     ASSERT_TRUE(gpu.ok()) << gpu.error().to_string();
     auto expected = reference::evaluate_image(*variant, inputs.linear_depth, scene.light,
                                               inputs.receivers, kLlvmpipePrecision);
     ASSERT_TRUE(expected.ok()) << expected.error().to_string();
-    auto c = reference::compare(*gpu, expected->visibility, expected->ambiguous, tolerance);
+    auto c =
+        reference::compare(gpu->visibility, expected->visibility, expected->ambiguous, tolerance);
     ASSERT_TRUE(c.ok()) << c.error().to_string();
     std::cout << name << " " << to_string(target) << " on " << scene.name << ": max error "
               << c->max_abs_error << ", mean " << c->mean_abs_error << " (tolerance "

@@ -12,6 +12,7 @@
 #include <spirv-tools/libspirv.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
@@ -30,9 +31,21 @@ constexpr const char* kHowToUpdate =
     "docs/golden.md.\n";
 
 // One variant per technique, from the default manifest so that the goldens
-// follow its disks.
-constexpr const char* kRepresentatives[] = {"hard", "pcf_grid_k3", "pcf_poisson_p16_whitepaper16",
-                                            "pcss_b16_p16_whitepaper16"};
+// follow its disks, or from kExtraVariants.
+constexpr const char* kRepresentatives[] = {
+    "hard",           "pcf_grid_k3",    "pcf_poisson_p16_whitepaper16", "pcss_b16_p16_whitepaper16",
+    "minmax_pcf_k12", "backprojection", "pcss_minmax_p16_whitepaper16"};
+
+// Representatives the default manifest does not build: an even kernel, and
+// the whitepaper's disk for pcss_minmax.
+constexpr const char* kExtraVariants = R"({
+  "schema": 1,
+  "sets": [
+    { "technique": "minmax_pcf", "kernel": 12 },
+    { "technique": "backprojection" },
+    { "technique": "pcss_minmax", "pcf_samples": 16, "disk": "whitepaper16" }
+  ]
+})";
 
 bool update_mode() {
   const char* value = std::getenv("PENUMBRA_UPDATE_GOLDEN");
@@ -42,7 +55,11 @@ bool update_mode() {
 const Variant& representative(const std::string& name) {
   static const std::vector<Variant> variants = [] {
     auto loaded = load_variants(fs::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
-    return loaded.ok() ? std::move(*loaded) : std::vector<Variant>{};
+    std::vector<Variant> out = loaded.ok() ? std::move(*loaded) : std::vector<Variant>{};
+    auto manifest = parse_manifest(kExtraVariants, "golden extra variants");
+    auto extra = manifest.ok() ? expand(*manifest) : Result<std::vector<Variant>>(manifest.error());
+    if (extra.ok()) out.insert(out.end(), extra->begin(), extra->end());
+    return out;
   }();
   for (const Variant& v : variants) {
     if (v.name == name) return v;
@@ -141,21 +158,29 @@ INSTANTIATE_TEST_SUITE_P(Golden, QueryPass,
                                   std::string(to_string(std::get<1>(param_info.param)));
                          });
 
-// The passes every variant shares: depth (vertex and fragment) and the
-// query pass's full-screen vertex shader.
+// The passes variants share: depth (vertex and fragment), the query pass's
+// full-screen vertex shader, and both stages of the min-max build passes.
+constexpr std::pair<PassKind, const char*> kSharedPasses[] = {
+    {PassKind::depth, "depth"},
+    {PassKind::minmax_init, "minmax_init"},
+    {PassKind::minmax_reduce, "minmax_reduce"},
+};
+
 class SharedPasses : public ::testing::TestWithParam<Target> {};
 
 TEST_P(SharedPasses, MatchTheReference) {
   const Target target = GetParam();
-  const Variant& variant = representative(kRepresentatives[0]);
-  auto depth = compile_pass(variant, target, PassKind::depth);
-  ASSERT_TRUE(depth.ok()) << depth.error().to_string();
+  const Variant& variant = representative("backprojection");  // runs every pass
+  for (const auto& [kind, stem] : kSharedPasses) {
+    auto pass = compile_pass(variant, target, kind);
+    ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+    expect_golden(golden_path("common", target, stem, ShaderStage::vertex),
+                  emitted_text(pass->vert, target));
+    expect_golden(golden_path("common", target, stem, ShaderStage::fragment),
+                  emitted_text(pass->frag, target));
+  }
   auto query = compile_pass(variant, target, PassKind::query);
   ASSERT_TRUE(query.ok()) << query.error().to_string();
-  expect_golden(golden_path("common", target, "depth", ShaderStage::vertex),
-                emitted_text(depth->vert, target));
-  expect_golden(golden_path("common", target, "depth", ShaderStage::fragment),
-                emitted_text(depth->frag, target));
   expect_golden(golden_path("common", target, "fullscreen", ShaderStage::vertex),
                 emitted_text(query->vert, target));
 }
@@ -171,8 +196,10 @@ TEST(GoldenReference, HoldsOnlyCurrentGoldens) {
       const std::string dir(to_string(representative(name).technique));
       expected.insert(golden_path(dir, target, "query", ShaderStage::fragment));
     }
-    expected.insert(golden_path("common", target, "depth", ShaderStage::vertex));
-    expected.insert(golden_path("common", target, "depth", ShaderStage::fragment));
+    for (const auto& [kind, stem] : kSharedPasses) {
+      expected.insert(golden_path("common", target, stem, ShaderStage::vertex));
+      expected.insert(golden_path("common", target, stem, ShaderStage::fragment));
+    }
     expected.insert(golden_path("common", target, "fullscreen", ShaderStage::vertex));
   }
   if (update_mode()) fs::create_directories(kReference);  // this test may run first

@@ -1,6 +1,8 @@
 // Hand-built variants and shadow maps for the reference tests.
 #pragma once
 
+#include <algorithm>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,12 +40,55 @@ inline Variant pcss_variant(std::vector<Point2> blocker, std::vector<Point2> pcf
       "pcss", Technique::pcss, keys, make_disk(std::move(blocker)), make_disk(std::move(pcf)), {}};
 }
 
+inline Variant minmax_pcf_variant(int kernel) {
+  VariantKeys keys;
+  keys.kernel = kernel;
+  return Variant{"minmax_pcf", Technique::minmax_pcf, keys, {}, {}, {}};
+}
+
+inline Variant backprojection_variant() {
+  return Variant{"backprojection", Technique::backprojection, {}, {}, {}, {}};
+}
+
+inline Variant pcss_minmax_variant(std::vector<Point2> pcf) {
+  VariantKeys keys;
+  keys.pcf_samples = int(pcf.size());
+  return Variant{"pcss_minmax", Technique::pcss_minmax, keys, {}, make_disk(std::move(pcf)), {}};
+}
+
 // A W x H map: `near_depth` in columns i < split, `far_depth` from there on.
 inline FloatImage column_split_map(int width, int height, int split, float near_depth,
                                    float far_depth) {
   FloatImage map(width, height, 1);
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) map.at(i, j) = i < split ? near_depth : far_depth;
+  }
+  return map;
+}
+
+// A W x H map of depths drawn uniformly from [lo, hi), reproducibly.
+inline FloatImage random_map(int width, int height, float lo, float hi, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<float> depth(lo, hi);
+  FloatImage map(width, height, 1);
+  for (float& d : map.data) d = depth(generator);
+  return map;
+}
+
+// A W x H map at `far_depth` with `count` random rectangles of constant depth
+// in [lo, hi) painted over it: flat regions and edges, like a rendered map.
+inline FloatImage blocky_map(int width, int height, int count, float lo, float hi, float far_depth,
+                             unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_int_distribution<int> x(0, width - 1), y(0, height - 1);
+  std::uniform_real_distribution<float> depth(lo, hi);
+  FloatImage map(width, height, 1, far_depth);
+  for (int r = 0; r < count; ++r) {
+    const int x0 = x(generator), x1 = x(generator), y0 = y(generator), y1 = y(generator);
+    const float z = depth(generator);
+    for (int j = std::min(y0, y1); j <= std::max(y0, y1); ++j) {
+      for (int i = std::min(x0, x1); i <= std::max(x0, x1); ++i) map.at(i, j) = z;
+    }
   }
   return map;
 }

@@ -117,7 +117,8 @@ TEST(BuiltinScenes, AmbiguityStaysUnderTheLimit) {
   // built-in scenes must leave room for a correct GPU.
   const std::vector<Point2> disk(whitepaper_poisson_disk().begin(),
                                  whitepaper_poisson_disk().end());
-  for (const Variant& variant : {testing::hard_variant(), testing::pcss_variant(disk, disk)}) {
+  for (const Variant& variant : {testing::hard_variant(), testing::pcss_variant(disk, disk),
+                                 testing::pcss_minmax_variant(disk)}) {
     for (const Scene& scene : builtin_scenes()) {
       const FloatImage depth =
           ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);

@@ -21,7 +21,7 @@ TEST_F(BindingTest, MissingParamBlockMemberIsNamed) {
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
             "ShadowParams member 'sampling' has no value in the ParamBlock (given: light, "
-            "screen_size, shadow_map_size)");
+            "minmax_info, screen_size, shadow_map_size, source_size)");
 }
 
 TEST_F(BindingTest, ExtraParamBlockEntriesAreIgnored) {
@@ -37,7 +37,7 @@ TEST_F(BindingTest, UnknownSamplerIsNamedWithTheAllowedNames) {
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
             "sampler 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
-            "names: shadow_depth, shadow_cmp, receivers");
+            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source");
 }
 
 TEST_F(BindingTest, UnknownUniformBlockIsNamed) {

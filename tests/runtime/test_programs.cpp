@@ -5,6 +5,8 @@
 #include <fstream>
 #include <string>
 
+#include "penumbra/support/minmax_levels.hpp"
+
 namespace penumbra::test {
 
 std::vector<std::uint32_t> read_spirv(const std::string& name) {
@@ -23,17 +25,19 @@ std::vector<std::uint32_t> read_spirv(const std::string& name) {
 
 namespace {
 
-// shaders/params.glsl: four std140 vec4 members.
+// shaders/params.glsl: six std140 vec4 members.
 UniformBlock shadow_params() {
   return {"ShadowParams",
           "params",
           0,
           0,
-          64,
+          96,
           {{"shadow_map_size", 0, 16},
            {"light", 16, 16},
            {"sampling", 32, 16},
-           {"screen_size", 48, 16}}};
+           {"screen_size", 48, 16},
+           {"source_size", 64, 16},
+           {"minmax_info", 80, 16}}};
 }
 
 StageCode fullscreen_vert() {
@@ -65,7 +69,9 @@ ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_
            {light.light_size, light.frustum_width, light.near_plane,
             light.light_size / light.frustum_width}},
           {"sampling", {2.0f / mw, light.bias, light.depth_scale, 1.0f / light.depth_scale}},
-          {"screen_size", {sw, sh, 1.0f / sw, 1.0f / sh}}};
+          {"screen_size", {sw, sh, 1.0f / sw, 1.0f / sh}},
+          {"source_size", {mw, mh, 1.0f / mw, 1.0f / mh}},
+          {"minmax_info", {static_cast<float>(minmax_top_level(map_w, map_h)), 0.0f, 0.0f, 0.0f}}};
 }
 
 PassProgram depth_program(const std::string& vert_name) {
@@ -99,6 +105,23 @@ PassProgram point_with_cmp_program() {
   return {fullscreen_vert(), query_frag("point_with_cmp.frag", {{"shadow_depth", 0, 1, false},
                                                                 {"shadow_cmp", 0, 2, true},
                                                                 {"receivers", 0, 3, false}})};
+}
+
+PassProgram minmax_init_program(const std::string& frag_name) {
+  StageCode frag = query_frag(frag_name, {{"shadow_depth", 0, 1, false}});
+  frag.iface.outputs = {{"minmax", 0, 4}};
+  return {fullscreen_vert(), std::move(frag)};
+}
+
+PassProgram minmax_reduce_program() {
+  StageCode frag = query_frag("minmax_reduce.frag", {{"minmax_source", 0, 5, false}});
+  frag.iface.outputs = {{"minmax", 0, 4}};
+  return {fullscreen_vert(), std::move(frag)};
+}
+
+PassProgram minmax_probe_program() {
+  return {fullscreen_vert(), query_frag("minmax_probe.frag", {{"receivers", 0, 3, false},
+                                                              {"shadow_minmax", 0, 4, false}})};
 }
 
 PassProgram unknown_sampler_program() {

@@ -35,6 +35,12 @@ PassProgram compare_program();          // fullscreen.vert + compare.frag: shado
 PassProgram point_program();            // fullscreen.vert + point.frag: shadow_depth, no shadow_cmp
 PassProgram point_with_cmp_program();   // the same, with shadow_cmp declared
 PassProgram unknown_sampler_program();  // fullscreen.vert + unknown_sampler.frag: "shadow_mapp"
+// The min-max build passes (minmax_init.frag reads shadow_depth, minmax_reduce.frag
+// minmax_source), and a query returning shadow_minmax's (min, max) at (u, v, lod).
+// "minmax_init_swapped.frag" is minmax_init.frag writing (max, min): a wrong mip.
+PassProgram minmax_init_program(const std::string& frag_name = "minmax_init.frag");
+PassProgram minmax_reduce_program();
+PassProgram minmax_probe_program();
 
 // An engine on the default device (lavapipe); fails the test if none.
 std::unique_ptr<Engine> make_engine(bool validation = false);

@@ -35,7 +35,7 @@ TEST_F(TextBindingTest, MissingMemberNamesItsParamBlockKey) {
   params.erase("sampling");
   EXPECT_EQ(query_error(test::text_compare_program(test::TextShape::hlsl_dx9), params),
             "$Global member 'params_sampling' (ParamBlock key 'sampling') has no value in the "
-            "ParamBlock (given: light, screen_size, shadow_map_size)");
+            "ParamBlock (given: light, minmax_info, screen_size, shadow_map_size, source_size)");
 }
 
 TEST_F(TextBindingTest, StagesWhoseGlobalBlocksOverlapOnOneBindingAreRefused) {
@@ -51,11 +51,12 @@ TEST_F(TextBindingTest, SamplerNamedAfterNoImageIsRefused) {
   PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10_split);
   program.frag.iface.separate_samplers[2].name = "point_clamp";
   program.frag.iface.separate_samplers[2].image = paired_image_name("point_clamp");
-  EXPECT_EQ(query_error(program, params_),
-            "sampler 'point_clamp' (fragment stage) pairs with no image of the shader interface: "
-            "a separate sampler is named _<image>_sampler after the image it samples "
-            "(SPIRV-Cross's HLSL naming); allowed names: _shadow_depth_sampler, "
-            "_shadow_cmp_sampler, _receivers_sampler");
+  EXPECT_EQ(
+      query_error(program, params_),
+      "sampler 'point_clamp' (fragment stage) pairs with no image of the shader interface: "
+      "a separate sampler is named _<image>_sampler after the image it samples "
+      "(SPIRV-Cross's HLSL naming); allowed names: _shadow_depth_sampler, "
+      "_shadow_cmp_sampler, _receivers_sampler, _shadow_minmax_sampler, _minmax_source_sampler");
 }
 
 TEST_F(TextBindingTest, OnlyShadowCmpsSamplerMayCompare) {
@@ -71,7 +72,7 @@ TEST_F(TextBindingTest, UnknownSeparateImageIsNamedWithTheAllowedNames) {
   program.frag.iface.separate_images[0].name = "shadow_mapp";
   EXPECT_EQ(query_error(program, params_),
             "image 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
-            "names: shadow_depth, shadow_cmp, receivers");
+            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source");
 }
 
 TEST_F(TextBindingTest, ImageAndAnotherImagesSamplerCannotShareABinding) {
@@ -95,6 +96,24 @@ TEST_F(TextBindingTest, Dx9DepthSemanticWithoutBuiltinIsRefused) {
   EXPECT_EQ(depth_error(program),
             "fragment output '@entryPointOutput.depth' at location 1 has no attachment; the depth "
             "pass has one R32_SFLOAT target, at location 0");
+}
+
+// The query pass's target is R32G32_SFLOAT: (visibility, texel reads).
+TEST_F(TextBindingTest, QueryOutputElsewhereNamesTheQueryTarget) {
+  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10);
+  program.frag.iface.outputs[0].location = 1;
+  EXPECT_EQ(query_error(program, params_),
+            "fragment output '" + program.frag.iface.outputs[0].name +
+                "' at location 1 has no attachment; the query pass has one R32G32_SFLOAT target, "
+                "at location 0");
+}
+
+TEST_F(TextBindingTest, QueryOutputNeedsBothChannelsOfItsTarget) {
+  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx9);
+  program.frag.iface.outputs[0].components = 1;
+  EXPECT_EQ(query_error(program, params_),
+            "fragment output '" + program.frag.iface.outputs[0].name +
+                "' has 1 component(s); the query pass's R32G32_SFLOAT target takes 2");
 }
 
 TEST_F(TextBindingTest, DepthPassNeedsTheFragmentDepth) {

@@ -12,16 +12,17 @@
 namespace penumbra {
 namespace {
 
-// Shared shaders once per target used by any variant, then each variant's own.
+// Shared shaders once per target, when a variant for that target uses their
+// pass; then each variant's own.
 std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
   std::vector<ShaderJob> jobs;
   for (Target target : kAllTargets) {
-    const bool used = std::any_of(variants.begin(), variants.end(), [&](const Variant& v) {
-      return std::find(v.targets.begin(), v.targets.end(), target) != v.targets.end();
-    });
-    if (!used) continue;
     for (const PassStageSource& source : pass_plan()) {
-      if (!source.per_variant) jobs.push_back(make_job(source, target, nullptr));
+      if (source.per_variant) continue;
+      const bool used = std::ranges::any_of(variants, [&](const Variant& v) {
+        return std::ranges::find(v.targets, target) != v.targets.end() && runs_pass(source.pass, v);
+      });
+      if (used) jobs.push_back(make_job(source, target, nullptr));
     }
   }
   for (const Variant& variant : variants) {
@@ -115,6 +116,12 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
 }
 
 Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass) {
+  if (!runs_pass(pass, variant)) {
+    return make_error(Error::Kind::bad_input, "variant " + variant.name,
+                      "has no " + std::string(to_string(pass)) + " pass (technique " +
+                          std::string(to_string(variant.technique)) +
+                          " does not read the min-max mip)");
+  }
   const Pipeline pipeline(std::nullopt);
   CompiledPass out;
   for (const PassStageSource& source : pass_plan()) {

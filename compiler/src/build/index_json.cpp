@@ -42,6 +42,7 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
   for (Target target : variant.targets) {
     targets.push_back(to_string(target));
     for (const PassStageSource& source : pass_plan()) {
+      if (!runs_pass(source.pass, variant)) continue;
       const ShaderJob* job = find_job(jobs, variant, target, source);
       if (!job) continue;
       const std::string pass(to_string(source.pass));

@@ -17,7 +17,13 @@ struct PassStageSource {
   bool per_variant;            // false: shared by every variant of a target
 };
 
+// Every pass of every technique; a pass's vertex stage comes first. The
+// min-max build passes share passes/fullscreen.vert, compiled once per pass.
 std::span<const PassStageSource> pass_plan();
+
+// Whether `variant` uses the pass: the min-max build passes only for
+// techniques that read the min-max mip.
+bool runs_pass(PassKind pass, const Variant& variant);
 
 // "spirv/common/depth.vert.spv" or "hlsl_dx9/pcss_b16_p16_whitepaper16/query.frag.hlsl".
 std::string output_path(const PassStageSource& source, Target target, const Variant* variant);

@@ -44,6 +44,15 @@ std::string variant_header(const Variant* variant, Target target) {
   }
   if (keys.pcf_samples)
     out += "#define PCF_NUM_SAMPLES " + std::to_string(*keys.pcf_samples) + "\n";
+  if (keys.traversal) out += "#define PENUMBRA_TRAVERSAL_" + ascii_upper(*keys.traversal) + " 1\n";
+  if (variant->technique == Technique::minmax_pcf && keys.kernel) {
+    out += "#define MINMAX_MAX_VISITS " + std::to_string(minmax_max_visits(*keys.kernel)) + "\n";
+    out += "#define MINMAX_PCF_INV_AREA " + glsl_float(minmax_pcf_inv_area(*keys.kernel)) + "\n";
+  }
+  if (variant->technique == Technique::backprojection) {
+    out += "#define BACKPROJECTION_MAX_NODES " +
+           std::to_string(keys.max_nodes.value_or(kDefaultMaxNodes)) + "\n";
+  }
   if (variant->blocker_disk) out += disk_array("BLOCKER_DISK", *variant->blocker_disk);
   if (variant->pcf_disk) out += disk_array("PCF_DISK", *variant->pcf_disk);
   return out;

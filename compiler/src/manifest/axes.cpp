@@ -1,5 +1,6 @@
 #include "manifest/axes.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 #include "penumbra/compiler/disk.hpp"
@@ -7,8 +8,8 @@
 namespace penumbra::manifest_detail {
 namespace {
 
-// The largest odd kernel that fits kMaxSamples.
-constexpr int kMaxKernel = kMaxSamples % 2 == 1 ? kMaxSamples : kMaxSamples - 1;
+// The largest odd kernel that fits kMaxSamples (pcf_grid's grid is centred).
+constexpr int kMaxOddKernel = kMaxSamples % 2 == 1 ? kMaxSamples : kMaxSamples - 1;
 
 // Reads one value or a list of values with `read_one`, appending to `out`.
 template <typename T, typename ReadOne>
@@ -48,9 +49,27 @@ Result<int> read_sample_count(const JsonNode& node) {
 Result<int> read_kernel(const JsonNode& node) {
   Result<int> kernel = node.integer();
   if (!kernel) return kernel.error();
-  if (*kernel >= 1 && *kernel <= kMaxKernel && *kernel % 2 == 1) return *kernel;
-  return node.error("kernel " + std::to_string(*kernel) + " is not allowed; allowed odd sizes 1.." +
-                    std::to_string(kMaxKernel));
+  if (*kernel >= 1 && *kernel <= kMaxSamples) return *kernel;
+  return node.error("kernel " + std::to_string(*kernel) + " is out of range; allowed 1.." +
+                    std::to_string(kMaxSamples) + " (pcf_grid: odd sizes 1.." +
+                    std::to_string(kMaxOddKernel) + ")");
+}
+
+Result<std::string> read_traversal(const JsonNode& node) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (*name == kBruteForceTraversal) return name;
+  return node.error("unknown traversal '" + *name +
+                    "'; allowed traversals: " + std::string(kBruteForceTraversal) +
+                    " (leave the key out for the min-max traversal)");
+}
+
+Result<int> read_max_nodes(const JsonNode& node) {
+  Result<int> count = node.integer();
+  if (!count) return count.error();
+  if (*count >= 1 && *count <= kMaxMaxNodes) return *count;
+  return node.error("max_nodes " + std::to_string(*count) + " is out of range; allowed 1.." +
+                    std::to_string(kMaxMaxNodes));
 }
 
 Result<std::string> read_disk(const JsonNode& node,
@@ -80,15 +99,19 @@ bool uses(Technique technique, Axis axis) {
     case Technique::pcf_poisson:
       return axis == Axis::pcf_samples || axis == Axis::disk;
     case Technique::pcss:
-      return axis != Axis::kernel;
+      return axis == Axis::blocker_samples || axis == Axis::pcf_samples || axis == Axis::disk;
     case Technique::minmax_pcf:
-      return axis == Axis::kernel;
+      return axis == Axis::kernel || axis == Axis::traversal;
     case Technique::backprojection:
-      return false;
+      return axis == Axis::traversal || axis == Axis::max_nodes;
     case Technique::pcss_minmax:
       return axis == Axis::pcf_samples || axis == Axis::disk;
   }
   return false;
+}
+
+bool is_optional(Axis axis) {
+  return axis == Axis::traversal || axis == Axis::max_nodes;
 }
 
 bool is_given(const AxisValues& values, Axis axis) {
@@ -101,6 +124,10 @@ bool is_given(const AxisValues& values, Axis axis) {
       return !values.pcf_samples.empty();
     case Axis::disk:
       return !values.disk.empty();
+    case Axis::traversal:
+      return !values.traversal.empty();
+    case Axis::max_nodes:
+      return !values.max_nodes.empty();
   }
   return false;
 }
@@ -111,6 +138,7 @@ std::string describe_axes(Technique technique) {
     if (!uses(technique, axis)) continue;
     if (!out.empty()) out += ", ";
     out += axis_name(axis);
+    if (is_optional(axis)) out += " (optional)";
   }
   return out.empty() ? "no keys" : out;
 }
@@ -129,7 +157,29 @@ Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& 
   }
   if (node.has("kernel")) PENUMBRA_TRY(read_list(node.member("kernel"), read_kernel, out.kernel));
   if (node.has("disk")) PENUMBRA_TRY(read_list(node.member("disk"), read_disk_here, out.disk));
+  if (node.has("traversal")) {
+    PENUMBRA_TRY(read_list(node.member("traversal"), read_traversal, out.traversal));
+  }
+  if (node.has("max_nodes")) {
+    PENUMBRA_TRY(read_list(node.member("max_nodes"), read_max_nodes, out.max_nodes));
+  }
   if (node.has("target")) PENUMBRA_TRY(read_targets(node.member("target"), out.target));
+  return {};
+}
+
+Status check_kernels(const JsonNode& node, const AxisValues& axes) {
+  const bool grid = std::ranges::find(axes.technique, Technique::pcf_grid) != axes.technique.end();
+  if (!grid || !node.has("kernel")) return {};
+  Result<std::vector<JsonNode>> items = node.member("kernel").items();
+  if (!items) return items.error();
+  for (std::size_t i = 0; i < items->size(); ++i) {
+    const int kernel = axes.kernel[i];
+    if (kernel % 2 == 1 && kernel <= kMaxOddKernel) continue;
+    return (*items)[i].error("kernel " + std::to_string(kernel) +
+                             " is not allowed for pcf_grid; allowed odd sizes 1.." +
+                             std::to_string(kMaxOddKernel) + " (minmax_pcf takes any size 1.." +
+                             std::to_string(kMaxSamples) + ")");
+  }
   return {};
 }
 

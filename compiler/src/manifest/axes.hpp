@@ -14,27 +14,37 @@
 namespace penumbra::manifest_detail {
 
 // The keys of a set or an exclusion.
-inline constexpr std::array<std::string_view, 6> kAxisKeys = {
-    "technique", "blocker_samples", "pcf_samples", "kernel", "disk", "target"};
+inline constexpr std::array<std::string_view, 8> kAxisKeys = {
+    "technique", "blocker_samples", "pcf_samples", "kernel",
+    "disk",      "traversal",       "max_nodes",   "target"};
 
-// The keys a technique may need, in kVariantKeyNames order; every variant has
+// The keys a technique may take, in kVariantKeyNames order; every variant has
 // targets.
-enum class Axis { kernel, blocker_samples, pcf_samples, disk };
+enum class Axis { kernel, blocker_samples, pcf_samples, disk, traversal, max_nodes };
 inline constexpr std::array kKeyAxes = {Axis::kernel, Axis::blocker_samples, Axis::pcf_samples,
-                                        Axis::disk};
+                                        Axis::disk,   Axis::traversal,       Axis::max_nodes};
 
 std::string_view axis_name(Axis axis);
-// Whether `technique` needs the key; it ignores the keys it does not need.
+// Whether `technique` takes the key; it ignores the keys it does not take.
 bool uses(Technique technique, Axis axis);
+// Whether a set may leave the key out for a technique that takes it
+// (traversal and max_nodes have defaults).
+bool is_optional(Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
-// "blocker_samples, pcf_samples, disk", or "no keys" for hard.
+// "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or
+// "no keys" for hard.
 std::string describe_axes(Technique technique);
 
 // Reads the axis keys `node` gives into `out`, checking every value: names
-// known, sample counts 1..kMaxSamples, kernels odd 1..kMaxSamples - 1, disks
-// built in or declared in `disks`.
+// known, sample counts 1..kMaxSamples, kernels 1..kMaxSamples (odd ones only
+// for pcf_grid: check_kernels), disks built in or declared in `disks`,
+// traversal kBruteForceTraversal, max_nodes 1..kMaxMaxNodes.
 Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& disks,
                  AxisValues& out);
+
+// pcf_grid's kernels are odd, 1..kMaxSamples - 1: checks the values of
+// `node`'s "kernel" when `techniques` include pcf_grid.
+Status check_kernels(const JsonNode& node, const AxisValues& axes);
 
 // One target name or a list of them, as in the manifest's "targets".
 Status read_targets(const JsonNode& node, std::vector<Target>& out);

@@ -21,7 +21,7 @@ using manifest_detail::uses;
 template <typename T>
 std::vector<std::optional<T>> axis_values(Technique technique, Axis axis,
                                           const std::vector<T>& values) {
-  if (!uses(technique, axis)) return {std::nullopt};
+  if (!uses(technique, axis) || values.empty()) return {std::nullopt};  // empty: optional, unset
   return {values.begin(), values.end()};
 }
 
@@ -32,7 +32,11 @@ std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes
          axis_values(technique, Axis::blocker_samples, axes.blocker_samples)) {
       for (const auto& pcf : axis_values(technique, Axis::pcf_samples, axes.pcf_samples)) {
         for (const auto& disk : axis_values(technique, Axis::disk, axes.disk)) {
-          out.push_back({kernel, blocker, pcf, disk, std::nullopt, std::nullopt});
+          for (const auto& traversal : axis_values(technique, Axis::traversal, axes.traversal)) {
+            for (const auto& nodes : axis_values(technique, Axis::max_nodes, axes.max_nodes)) {
+              out.push_back({kernel, blocker, pcf, disk, traversal, nodes});
+            }
+          }
         }
       }
     }
@@ -118,7 +122,8 @@ bool matches(const AxisValues& match, const Variant& variant) {
          allows(match.kernel, variant.keys.kernel) &&
          allows(match.blocker_samples, variant.keys.blocker_samples) &&
          allows(match.pcf_samples, variant.keys.pcf_samples) &&
-         allows(match.disk, variant.keys.disk);
+         allows(match.disk, variant.keys.disk) && allows(match.traversal, variant.keys.traversal) &&
+         allows(match.max_nodes, variant.keys.max_nodes);
 }
 
 void apply(const Exclusion& exclusion, Variant& variant) {
@@ -133,9 +138,12 @@ void apply(const Exclusion& exclusion, Variant& variant) {
 
 // Technique order, then keys ascending; names are unique, so this is total.
 bool variant_less(const Variant& a, const Variant& b) {
-  return std::tie(a.technique, a.keys.kernel, a.keys.blocker_samples, a.keys.pcf_samples,
-                  a.keys.disk) < std::tie(b.technique, b.keys.kernel, b.keys.blocker_samples,
-                                          b.keys.pcf_samples, b.keys.disk);
+  const auto key = [](const Variant& v) {
+    const VariantKeys& k = v.keys;
+    return std::tie(v.technique, k.kernel, k.blocker_samples, k.pcf_samples, k.disk, k.traversal,
+                    k.max_nodes);
+  };
+  return key(a) < key(b);
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
     bool used = false;
     for (Technique technique : axes.technique) {
       used = used || uses(technique, axis);
-      if (!given && uses(technique, axis)) {
+      if (!given && !is_optional(axis) && uses(technique, axis)) {
         const std::string name(to_string(technique));
         return node.error("technique " + name + " needs key '" + key + "'; " + name + " uses " +
                           describe_axes(technique));
@@ -37,6 +37,7 @@ Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
   VariantSet set{.json_path = node.path(), .axes = {}};
   PENUMBRA_TRY(read_axes(node, manifest.disks, set.axes));
   PENUMBRA_TRY(check_set_keys(node, set.axes));
+  PENUMBRA_TRY(check_kernels(node, set.axes));
   if (set.axes.target.empty()) set.axes.target = manifest.targets;
   return set;
 }

@@ -47,8 +47,8 @@ Status check_eval_inputs(const EvalInputs& inputs) {
   return {};
 }
 
-Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& variant,
-                                  Target target, const EvalInputs& inputs, Engine& engine) {
+Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
+                                   Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
   auto program = load_executable(library, variant, PassKind::query, target);
   if (!program) return program.error();
@@ -62,7 +62,15 @@ Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& 
                                           {inputs.shadow_map.width, inputs.shadow_map.height,
                                            inputs.receivers.width, inputs.receivers.height},
                                           depth_scale);
-  return engine.run_query(program->program, **map, inputs.receivers, params);
+  if (uses_minmax_mip(variant.variant.technique)) {
+    auto init = load_executable(library, variant, PassKind::minmax_init, target);
+    if (!init) return init.error();
+    auto reduce = load_executable(library, variant, PassKind::minmax_reduce, target);
+    if (!reduce) return reduce.error();
+    auto built = engine.build_minmax(**map, init->program, reduce->program, params);
+    if (!built) return built.error();
+  }
+  return engine.run_query_output(program->program, **map, inputs.receivers, params);
 }
 
 Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs) {

@@ -9,14 +9,24 @@ namespace penumbra {
 #ifdef PENUMBRA_HAS_GL
 namespace {
 
+// The engine reads the texts through views; the caller's strings outlive the call.
+GlPass pass(const GlPassTexts& texts) {
+  return {texts.vert, texts.frag};
+}
+
 class MesaGlBackend final : public GlBackend {
  public:
   explicit MesaGlBackend(std::unique_ptr<GlEngine> engine) : engine_(std::move(engine)) {}
   std::string device() const override { return engine_->info().renderer; }
-  Result<FloatImage> run_query(std::string_view vertex_text, std::string_view fragment_text,
-                               const FloatImage& normalized_depth, const FloatImage& receivers,
-                               const ParamBlock& params) override {
-    return engine_->run_query(vertex_text, fragment_text, normalized_depth, receivers, params);
+  Result<QueryOutput> run_query(const GlQueryTexts& texts, const FloatImage& normalized_depth,
+                                const FloatImage& receivers, const ParamBlock& params) override {
+    GlQueryPasses passes{pass(texts.query), std::nullopt};
+    if (texts.minmax) {
+      passes.minmax = GlMinmaxPasses{pass(texts.minmax->init), pass(texts.minmax->reduce)};
+    }
+    auto output = engine_->run_query(passes, normalized_depth, receivers, params);
+    if (!output) return output.error();
+    return QueryOutput{std::move(output->visibility), std::move(output->texel_reads), std::nullopt};
   }
 
  private:

@@ -4,14 +4,34 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
-#include <string_view>
 
-#include "penumbra/runtime/program.hpp"
+#include "penumbra/runtime/engine.hpp"
 #include "penumbra/support/image.hpp"
+#include "penumbra/support/param_block.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {
+
+// One pass's emitted text: its fullscreen.vert and its fragment stage.
+struct GlPassTexts {
+  std::string vert;
+  std::string frag;
+};
+
+// The passes that build the min-max mip.
+struct GlMinmaxTexts {
+  GlPassTexts init;    // minmax_init
+  GlPassTexts reduce;  // minmax_reduce
+};
+
+struct GlQueryTexts {
+  GlPassTexts query;
+  // Required when the query reads shadow_minmax (a bad_input Error
+  // otherwise), unused when it does not.
+  std::optional<GlMinmaxTexts> minmax;
+};
 
 class GlBackend {
  public:
@@ -22,9 +42,12 @@ class GlBackend {
   virtual ~GlBackend() = default;
 
   virtual std::string device() const = 0;
-  virtual Result<FloatImage> run_query(std::string_view vertex_text, std::string_view fragment_text,
-                                       const FloatImage& normalized_depth,
-                                       const FloatImage& receivers, const ParamBlock& params) = 0;
+  // Builds the min-max mip when the query reads it, then runs the query
+  // (GlEngine::run_query). The output's gpu_ms is always empty: GL's draws
+  // are not timed.
+  virtual Result<QueryOutput> run_query(const GlQueryTexts& texts,
+                                        const FloatImage& normalized_depth,
+                                        const FloatImage& receivers, const ParamBlock& params) = 0;
 };
 
 }  // namespace penumbra

@@ -13,6 +13,18 @@ nlohmann::json depth_json(const DepthCheck& c) {
           {"pass", c.pass}};
 }
 
+nlohmann::json minmax_json(const MinmaxCheck& c) {
+  nlohmann::json out = {{"scene", c.scene},
+                        {"target", to_string(c.target)},
+                        {"levels", c.levels},
+                        {"expected_levels", c.expected_levels},
+                        {"texels_checked", c.texels},
+                        {"mismatched", c.mismatched},
+                        {"pass", c.pass}};
+  if (!c.error.empty()) out["error"] = c.error;
+  return out;
+}
+
 nlohmann::json run_json(const TargetRun& run) {
   nlohmann::json out = {
       {"target", to_string(run.target)}, {"backend", run.backend}, {"executed", run.executed}};
@@ -29,6 +41,7 @@ nlohmann::json run_json(const TargetRun& run) {
   for (const SceneRun& s : run.scenes) {
     nlohmann::json entry = s.comparison;
     entry["scene"] = s.scene;
+    entry["mean_texel_reads"] = s.mean_texel_reads;
     scenes.push_back(entry);
   }
   out["scenes"] = scenes;
@@ -58,6 +71,9 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
   nlohmann::json depth = nlohmann::json::array();
   for (const DepthCheck& c : report.depth_checks) depth.push_back(depth_json(c));
   out["depth_pass"] = depth;
+  nlohmann::json minmax = nlohmann::json::array();
+  for (const MinmaxCheck& c : report.minmax_checks) minmax.push_back(minmax_json(c));
+  out["minmax_mip"] = minmax;
   nlohmann::json variants = nlohmann::json::array();
   for (const VariantRun& v : report.variants) {
     nlohmann::json runs = nlohmann::json::array();

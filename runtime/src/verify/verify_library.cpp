@@ -5,6 +5,7 @@
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/runtime/verify.hpp"
 #include "verify/gl_backend.hpp"
+#include "verify/minmax_check.hpp"
 #include "verify/scene_fixture.hpp"
 
 namespace penumbra {
@@ -25,17 +26,34 @@ struct Context {
   std::string gl_missing;  // why there is no GL path
   // Targets whose depth pass could not run: every run on them fails with this.
   std::map<Target, Error> broken_targets;
+  // Targets whose scenes' maps hold the min-max mip their own passes built,
+  // or why it could not be built: every run on them that reads it fails then.
+  std::map<Target, Status> minmax_built;
 };
 
-Result<SceneRun> check_scene(const Context& ctx, const FloatImage& gpu, const Variant& variant,
+// A run that could not compile or execute its shaders is a failed check of
+// that variant and target, not a reason to stop verifying the others.
+TargetRun failed_run(Target target, std::string backend, const Error& error) {
+  TargetRun run;
+  run.target = target;
+  run.backend = std::move(backend);
+  run.executed = true;
+  run.error = error.to_string();
+  return run;
+}
+
+Result<SceneRun> check_scene(const Context& ctx, const QueryOutput& gpu, const Variant& variant,
                              const SceneFixture& fixture) {
   auto expected = reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
                                             fixture.receivers, ctx.precision);
   if (!expected) return expected.error();
-  auto comparison = reference::compare(gpu, expected->visibility, expected->ambiguous,
+  auto comparison = reference::compare(gpu.visibility, expected->visibility, expected->ambiguous,
                                        reference::tolerance(variant.technique, ctx.precision));
   if (!comparison) return comparison.error();
-  return SceneRun{fixture.scene.name, *comparison};
+  double reads = 0.0;
+  for (float r : gpu.texel_reads.data) reads += r;
+  return SceneRun{fixture.scene.name, *comparison,
+                  reads / static_cast<double>(gpu.texel_reads.pixel_count())};
 }
 
 // Runs `render` on every scene of the target's fixtures and compares each
@@ -45,7 +63,7 @@ Status run_scenes(Context& ctx, const LibraryVariant& entry, TargetRun& run, Ren
   run.executed = true;
   run.pass = true;
   for (const SceneFixture& fixture : ctx.fixtures.at(run.target).scenes) {
-    Result<FloatImage> gpu = render(fixture);
+    Result<QueryOutput> gpu = render(fixture);
     if (!gpu) return gpu.error();
     auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
     if (!scene) return scene.error();
@@ -63,13 +81,52 @@ Result<TargetRun> run_vulkan(Context& ctx, const LibraryVariant& entry, Target t
   if (!query) return query.error();
   run.execution = query->execution;
   PENUMBRA_TRY(run_scenes(ctx, entry, run, [&](const SceneFixture& fixture) {
-    return ctx.engine.run_query(query->program, *fixture.map, fixture.receivers, fixture.params);
+    return ctx.engine.run_query_output(query->program, *fixture.map, fixture.receivers,
+                                       fixture.params);
   }));
   return run;
 }
 
+Result<GlPassTexts> read_pass_texts(const Context& ctx, const LibraryVariant& entry, PassKind pass,
+                                    Target target) {
+  auto vert = read_pass_file(ctx.library, entry, pass, target, ShaderStage::vertex);
+  if (!vert) return vert.error();
+  auto frag = read_pass_file(ctx.library, entry, pass, target, ShaderStage::fragment);
+  if (!frag) return frag.error();
+  return GlPassTexts{std::move(*vert), std::move(*frag)};
+}
+
+// The query's texts and, for a technique reading the min-max mip, the texts
+// of the passes that build it.
+Result<GlQueryTexts> read_query_texts(const Context& ctx, const LibraryVariant& entry,
+                                      Target target) {
+  auto query = read_pass_texts(ctx, entry, PassKind::query, target);
+  if (!query) return query.error();
+  GlQueryTexts texts{std::move(*query), std::nullopt};
+  if (uses_minmax_mip(entry.variant.technique)) {
+    auto init = read_pass_texts(ctx, entry, PassKind::minmax_init, target);
+    if (!init) return init.error();
+    auto reduce = read_pass_texts(ctx, entry, PassKind::minmax_reduce, target);
+    if (!reduce) return reduce.error();
+    texts.minmax = GlMinmaxTexts{std::move(*init), std::move(*reduce)};
+  }
+  return texts;
+}
+
+// run_vulkan, or a failed run when the mip the variant reads could not be built.
+TargetRun vulkan_run(Context& ctx, const LibraryVariant& entry, Target target) {
+  if (uses_minmax_mip(entry.variant.technique)) {
+    if (const Status& built = ctx.minmax_built.at(target); !built) {
+      return failed_run(target, "vulkan", built.error());
+    }
+  }
+  auto run = run_vulkan(ctx, entry, target);
+  return run ? std::move(*run) : failed_run(target, "vulkan", run.error());
+}
+
 // The same text through the OpenGL driver, on the map the target's own depth
-// pass rendered.
+// pass rendered (the GL engine builds the min-max mip with the target's own
+// passes when the query reads it).
 Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target target) {
   TargetRun run;
   run.target = target;
@@ -80,13 +137,10 @@ Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target targe
   }
   run.device = ctx.gl->device();
   run.execution.front_end = "the OpenGL driver's GLSL compiler";
-  auto vert = read_pass_file(ctx.library, entry, PassKind::query, target, ShaderStage::vertex);
-  if (!vert) return vert.error();
-  auto frag = read_pass_file(ctx.library, entry, PassKind::query, target, ShaderStage::fragment);
-  if (!frag) return frag.error();
+  auto texts = read_query_texts(ctx, entry, target);
+  if (!texts) return texts.error();
   PENUMBRA_TRY(run_scenes(ctx, entry, run, [&](const SceneFixture& fixture) {
-    return ctx.gl->run_query(*vert, *frag, fixture.normalized_depth, fixture.receivers,
-                             fixture.params);
+    return ctx.gl->run_query(*texts, fixture.normalized_depth, fixture.receivers, fixture.params);
   }));
   return run;
 }
@@ -108,23 +162,39 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
   return {};
 }
 
+// Builds the min-max mip on every scene's map of `target` with the target's
+// own minmax passes (shared by all variants), taken from `entry`, a variant
+// that has them, and checks each against the CPU mip.
+Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
+                      VerifyReport& report) {
+  auto init = load_executable(ctx.library, entry, PassKind::minmax_init, target);
+  if (!init) return init.error();
+  auto reduce = load_executable(ctx.library, entry, PassKind::minmax_reduce, target);
+  if (!reduce) return reduce.error();
+  for (SceneFixture& fixture : ctx.fixtures.at(target).scenes) {
+    auto built =
+        ctx.engine.build_minmax(*fixture.map, init->program, reduce->program, fixture.params);
+    auto levels = built ? ctx.engine.read_minmax(*fixture.map)
+                        : Result<std::vector<FloatImage>>(built.error());
+    if (!levels) {
+      MinmaxCheck failed;
+      failed.scene = fixture.scene.name;
+      failed.target = target;
+      failed.error = levels.error().to_string();
+      report.minmax_checks.push_back(std::move(failed));
+      return levels.error();
+    }
+    report.minmax_checks.push_back(check_minmax(fixture, target, *levels));
+  }
+  return {};
+}
+
 bool wanted(const std::vector<std::string>& names, const std::string& name) {
   return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
 }
 
 bool wanted(const std::vector<Target>& targets, Target target) {
   return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
-}
-
-// A run that could not compile or execute its shaders is a failed check of
-// that variant and target, not a reason to stop verifying the others.
-TargetRun failed_run(Target target, std::string backend, const Error& error) {
-  TargetRun run;
-  run.target = target;
-  run.backend = std::move(backend);
-  run.executed = true;
-  run.error = error.to_string();
-  return run;
 }
 
 void count(VerifyReport& report, const TargetRun& run) {
@@ -143,7 +213,9 @@ void count(VerifyReport& report, const TargetRun& run) {
 bool VerifyReport::pass() const {
   const bool depth_ok = std::all_of(depth_checks.begin(), depth_checks.end(),
                                     [](const DepthCheck& c) { return c.pass; });
-  return depth_ok && failed == 0 && runs > 0;
+  const bool minmax_ok = std::all_of(minmax_checks.begin(), minmax_checks.end(),
+                                     [](const MinmaxCheck& c) { return c.pass; });
+  return depth_ok && minmax_ok && failed == 0 && runs > 0;
 }
 
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,
@@ -163,7 +235,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   Context ctx{
       library, engine,  {static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))},
       {},      nullptr, {},
-      {}};
+      {},      {}};
   if (options.gl) {
     const bool lavapipe = report.device.name.find("llvmpipe") != std::string::npos;
     ctx.gl = GlBackend::create(lavapipe ? "llvmpipe" : "", ctx.gl_missing);
@@ -190,8 +262,10 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
         count(report, variant_run.runs.back());
         continue;
       }
-      auto run = run_vulkan(ctx, entry, target);
-      variant_run.runs.push_back(run ? std::move(*run) : failed_run(target, "vulkan", run.error()));
+      if (uses_minmax_mip(entry.variant.technique) && !ctx.minmax_built.contains(target)) {
+        ctx.minmax_built.emplace(target, prepare_minmax(ctx, entry, target, report));
+      }
+      variant_run.runs.push_back(vulkan_run(ctx, entry, target));
       count(report, variant_run.runs.back());
       if (target == Target::glsl330 || target == Target::glsl450) {
         auto gl_run = run_gl(ctx, entry, target);

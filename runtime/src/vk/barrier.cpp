@@ -25,13 +25,9 @@ LayoutUse use_of(VkImageLayout layout) {
   }
 }
 
-}  // namespace
-
-void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from,
-                VkImageLayout to) {
-  if (from == to) return;
-  const LayoutUse before = use_of(from);
-  const LayoutUse after = use_of(to);
+// One barrier on all of `image`'s mip levels.
+void image_barrier(VkCommandBuffer commands, const Image& image, VkImageLayout from,
+                   VkImageLayout to, LayoutUse before, LayoutUse after) {
   VkImageMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
   barrier.srcAccessMask = before.access;
@@ -41,9 +37,23 @@ void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image.get();
-  barrier.subresourceRange = {image.desc().aspect, 0, 1, 0, 1};
+  barrier.subresourceRange = {image.desc().aspect, 0, image.desc().mip_levels, 0, 1};
   vkCmdPipelineBarrier(commands, before.stages, after.stages, 0, 0, nullptr, 0, nullptr, 1,
                        &barrier);
+}
+
+}  // namespace
+
+void transition(VkCommandBuffer commands, const Image& image, VkImageLayout from,
+                VkImageLayout to) {
+  if (from == to) return;
+  image_barrier(commands, image, from, to, use_of(from), use_of(to));
+}
+
+void between_transfer_writes(VkCommandBuffer commands, const Image& image) {
+  const LayoutUse write = use_of(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+  image_barrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, write, write);
 }
 
 void transfer_writes_to_host(VkCommandBuffer commands) {

@@ -12,13 +12,20 @@
 namespace penumbra::vk {
 namespace {
 
-std::optional<std::uint32_t> graphics_family(VkPhysicalDevice physical) {
+struct QueueFamily {
+  std::uint32_t index = 0;
+  std::uint32_t timestamp_valid_bits = 0;
+};
+
+std::optional<QueueFamily> graphics_family(VkPhysicalDevice physical) {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
   for (std::uint32_t i = 0; i < count; ++i) {
-    if (families[i].queueCount > 0 && (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) return i;
+    if (families[i].queueCount > 0 && (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) {
+      return QueueFamily{i, families[i].timestampValidBits};
+    }
   }
   return std::nullopt;
 }
@@ -55,17 +62,18 @@ Result<std::shared_ptr<const Device>> Device::create(std::shared_ptr<const Insta
   vkGetPhysicalDeviceProperties(physical, &device->properties_);
   vkGetPhysicalDeviceMemoryProperties(physical, &device->memory_);
 
-  const std::optional<std::uint32_t> family = graphics_family(physical);
+  const std::optional<QueueFamily> family = graphics_family(physical);
   if (!family) {
     return make_error(Error::Kind::device, "vkGetPhysicalDeviceQueueFamilyProperties",
                       std::string(device->properties_.deviceName) + " has no graphics queue");
   }
-  device->queue_family_ = *family;
+  device->queue_family_ = family->index;
+  device->timestamp_valid_bits_ = family->timestamp_valid_bits;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{};
   queue_info.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-  queue_info.queueFamilyIndex = *family;
+  queue_info.queueFamilyIndex = family->index;
   queue_info.queueCount = 1;
   queue_info.pQueuePriorities = &priority;
   VkDeviceCreateInfo info{};
@@ -85,7 +93,7 @@ Result<std::shared_ptr<const Device>> Device::create(std::shared_ptr<const Insta
   }
   PENUMBRA_TRY(check(vkCreateDevice(physical, &info, nullptr, &device->device_), "vkCreateDevice",
                      std::string("opening ") + device->properties_.deviceName));
-  vkGetDeviceQueue(device->device_, *family, 0, &device->queue_);
+  vkGetDeviceQueue(device->device_, family->index, 0, &device->queue_);
   return std::shared_ptr<const Device>(std::move(device));
 }
 

@@ -25,6 +25,8 @@ class Device {
   VkPhysicalDevice physical() const { return physical_; }
   VkQueue queue() const { return queue_; }
   std::uint32_t queue_family() const { return queue_family_; }
+  // The queue family's timestampValidBits: 0 when its queue writes no timestamps.
+  std::uint32_t timestamp_valid_bits() const { return timestamp_valid_bits_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   // The version the runtime may use: the device's, capped by the instance's.
   std::uint32_t api_version() const;
@@ -40,6 +42,7 @@ class Device {
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   std::uint32_t queue_family_ = 0;
+  std::uint32_t timestamp_valid_bits_ = 0;
   VkPhysicalDeviceProperties properties_{};
   bool depth_clip_control_ = false;
   VkPhysicalDeviceMemoryProperties memory_{};

@@ -1,5 +1,6 @@
-// Image: a single-mip 2D VkImage in device-local memory, with a view of its
-// whole extent. Layouts are managed by whoever records commands on it.
+// Image: a 2D VkImage in device-local memory with one or more mip levels, and
+// a view of all of them. Layouts are managed by whoever records commands on
+// it, for all levels at once.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -20,6 +21,7 @@ struct ImageDesc {
   VkFormat format = VK_FORMAT_UNDEFINED;
   VkImageUsageFlags usage = 0;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;  // of the view and of transfers
+  std::uint32_t mip_levels = 1;  // level m is max(1, width >> m) x max(1, height >> m)
 };
 
 class Image {

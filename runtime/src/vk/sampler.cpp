@@ -19,8 +19,10 @@ Result<Sampler> create_sampler(VkDevice device, SamplerKind kind) {
   info.compareEnable = comparison ? VK_TRUE : VK_FALSE;
   // Lit when reference <= stored depth (contract section 1).
   info.compareOp = comparison ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_NEVER;
+  // Every level an image has: shadow_minmax is read at LOD l - 1 (with maxLod
+  // 0 every read would clamp to level 0); single-level images clamp to 0.
   info.minLod = 0.0f;
-  info.maxLod = 0.0f;
+  info.maxLod = VK_LOD_CLAMP_NONE;
   info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
   VkSampler sampler = VK_NULL_HANDLE;
   PENUMBRA_TRY(

@@ -11,7 +11,8 @@ namespace penumbra::vk {
 using Sampler = DeviceObject<VkSampler, vkDestroySampler>;
 
 enum class SamplerKind {
-  nearest,     // point sampling, clamp-to-edge: shadow_depth and receivers
+  nearest,     // point sampling, nearest mip, clamp-to-edge: shadow_depth, receivers,
+               // shadow_minmax (every level) and minmax_source
   comparison,  // LESS_OR_EQUAL comparison, linear filter, clamp-to-edge: shadow_cmp
 };
 

@@ -29,7 +29,9 @@ struct AxisValues {
   std::vector<int> blocker_samples;
   std::vector<int> pcf_samples;
   std::vector<int> kernel;
-  std::vector<std::string> disk;  // family names
+  std::vector<std::string> disk;       // family names
+  std::vector<std::string> traversal;  // kBruteForceTraversal
+  std::vector<int> max_nodes;
   std::vector<Target> target;
 };
 
@@ -64,7 +66,7 @@ Result<Manifest> load_manifest(const std::filesystem::path& path);
 Result<Manifest> parse_manifest(std::string_view json_text, std::string_view source_name);
 
 // All variants with their disks, exclusions applied and duplicates merged,
-// sorted by technique (hard, pcf_grid, pcf_poisson, pcss) and then by keys.
+// sorted by technique (Technique's order) and then by keys.
 Result<std::vector<Variant>> expand(const Manifest& manifest);
 
 // load_manifest() then expand(): the variants of a manifest file.

@@ -47,6 +47,14 @@ bool uses_minmax_mip(Technique technique);
 // Largest sample count / kernel size any variant may use.
 inline constexpr int kMaxSamples = 128;
 
+// The one value of the `traversal` key: read every texel of the window
+// instead of descending the min-max mip (minmax_pcf, backprojection).
+inline constexpr std::string_view kBruteForceTraversal = "brute_force";
+
+// backprojection's `max_nodes`: the most nodes one query visits.
+inline constexpr int kDefaultMaxNodes = 16384;  // when the key is unset
+inline constexpr int kMaxMaxNodes = 1048576;
+
 using Point2 = std::array<float, 2>;
 
 // A Poisson disk exactly as baked into shaders (float32 values).
@@ -60,12 +68,12 @@ struct Disk {
 
 // The keys that select a variant of a technique. Unused keys stay empty.
 struct VariantKeys {
-  std::optional<int> kernel;              // pcf_grid: odd K; minmax_pcf: any K
-  std::optional<int> blocker_samples;     // pcss
-  std::optional<int> pcf_samples;         // pcf_poisson, pcss, pcss_minmax
-  std::optional<std::string> disk;        // disk family name: pcf_poisson, pcss, pcss_minmax
-  std::optional<std::string> traversal;   // minmax_pcf, backprojection: "brute_force"; unset = mip
-  std::optional<int> max_nodes;           // backprojection: traversal work bound; unset = default
+  std::optional<int> kernel;             // pcf_grid: odd K; minmax_pcf: any K
+  std::optional<int> blocker_samples;    // pcss
+  std::optional<int> pcf_samples;        // pcf_poisson, pcss, pcss_minmax
+  std::optional<std::string> disk;       // disk family name: pcf_poisson, pcss, pcss_minmax
+  std::optional<std::string> traversal;  // minmax_pcf, backprojection: "brute_force"; unset = mip
+  std::optional<int> max_nodes;          // backprojection: traversal work bound; unset = default
 };
 
 // The keys' names, in the one order every listing of keys follows.
@@ -84,6 +92,22 @@ void for_each_key(Keys& keys, F&& f) {
   f(kVariantKeyNames[4], keys.traversal);
   f(kVariantKeyNames[5], keys.max_nodes);
 }
+
+// minmax_pcf's baked 1 / K^2 (MINMAX_PCF_INV_AREA), rounded to float. The
+// visibility is 1 for C = 0 (K^2 times the rounded 1 / K^2 may be just below
+// 1) and float(K^2 - C) times it otherwise: one correctly rounded product of
+// exact operands, within one ulp of 1 - C / K^2 and 0 for C = K^2, which no
+// compiler can contract or reorder, so it is the same on every target and
+// in the reference. A division is not: GLSL allows it 2.5 ulp, and HLSL
+// compilers replace a division by a constant with a reciprocal product.
+inline float minmax_pcf_inv_area(int kernel) {
+  return 1.0f / static_cast<float>(kernel * kernel);
+}
+
+// MINMAX_MAX_VISITS for minmax_pcf with kernel K: the most nodes the
+// depth-first walk of shaderlib/common/minmax_traversal.glsl can visit over
+// a K x K window, for any map and position (its loop bound).
+int minmax_max_visits(int kernel);
 
 // One fully specified permutation: what gets compiled and verified.
 struct Variant {

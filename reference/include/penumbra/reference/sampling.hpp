@@ -14,6 +14,13 @@ inline bool lit(double z_ref, double depth) {
   return z_ref <= depth;
 }
 
+// The comparison reference z_r - bias as the GPU's float32 arithmetic forms
+// it (shadow_reference() scales it by a power of two, which is exact), for
+// the techniques whose comparisons must agree with the GPU bit for bit.
+inline float float_reference(double z_receiver, double bias) {
+  return float(z_receiver) - float(bias);
+}
+
 struct Texel {
   int i = 0;
   int j = 0;

@@ -4,6 +4,7 @@
 
 #include "penumbra/compiler/model.hpp"
 #include "penumbra/reference/light.hpp"
+#include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/shadow_map.hpp"
 #include "penumbra/support/image.hpp"
@@ -25,10 +26,22 @@ struct Sample {
 };
 
 // Checks that `variant` carries what its technique needs (kernel, disks with
-// as many points as the sample-count keys).
+// as many points as the sample-count keys, traversal and max_nodes in range).
 Status check_variant(const Variant& variant);
 
-// One receiver. `variant` must pass check_variant().
+// Whether the reference of `technique` reads the min-max mip: backprojection
+// and pcss_minmax. minmax_pcf's counts texel by texel, though its shader
+// reads the mip (uses_minmax_mip()).
+bool reference_reads_mip(Technique technique);
+
+// One receiver. `variant` must pass check_variant(); `mip` must be built from `map`
+// (read where reference_reads_mip()).
+Sample evaluate(const Variant& variant, const ShadowMapView& map, const MinMaxMip& mip,
+                const LightParams& light, const Query& query,
+                const SamplingPrecision& precision = {});
+
+// The same, building the mip first where the technique reads it: O(W H) per
+// call for those, so for single receivers (evaluate_image builds it once).
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
                 const Query& query, const SamplingPrecision& precision = {});
 

@@ -1,16 +1,19 @@
 // Engine: runs Penumbra's passes on a Vulkan device (docs/runtime.md).
 //
 // Lifecycle: Engine::create() opens and checks a device; then any number of
-// render_depth / upload_shadow_map / read_shadow_map / run_query calls, in any
-// order, from one thread at a time (every call waits for its GPU work); then
-// destroy the Engine. Every failure is a returned Error, never an exception.
+// render_depth / upload_shadow_map / read_shadow_map / build_minmax /
+// read_minmax / run_query calls, in any order, from one thread at a time
+// (every call waits for its GPU work); then destroy the Engine. Every failure
+// is a returned Error, never an exception.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "penumbra/runtime/program.hpp"
 #include "penumbra/runtime/shadow_map.hpp"
@@ -42,6 +45,25 @@ struct DeviceInfo {
   std::uint32_t sub_texel_precision_bits = 0;
 };
 
+// What a query pass wrote: its output's .x and .y, and how long it took.
+struct QueryOutput {
+  FloatImage visibility;  // .x: the visibility, one channel, the receivers' size
+  // .y: the shadow-map and mip texels the pass counted as read per pixel
+  // (docs/shader-interface.md), one channel.
+  FloatImage texel_reads;
+  // The draw's GPU time from timestamp queries; absent when the device's
+  // queue writes no timestamps.
+  std::optional<double> gpu_ms;
+};
+
+// A min-max mip built by Engine::build_minmax.
+struct MinmaxBuild {
+  int levels = 0;  // N: levels 1..N, level N 1x1
+  // The level passes' GPU time summed (timestamps around each draw; the
+  // copies into the mip are not included); absent without timestamps.
+  std::optional<double> gpu_ms;
+};
+
 class Engine {
  public:
   // Opens the device `options` selects and checks that it supports every
@@ -71,9 +93,28 @@ class Engine {
   // The colour image's normalized depth, one channel, row 0 first.
   Result<FloatImage> read_shadow_map(const ShadowMap& map);
 
-  // Runs a query program over one full-screen triangle into an R32_SFLOAT
-  // target of the receivers' size and returns it (one channel). `receivers`
-  // holds (u, v, z_r) per pixel in 3 or 4 channels.
+  // Builds `map`'s min-max mip (replacing any it had) with a library's
+  // minmax_init and minmax_reduce programs: level 1, ceil(W/2) x ceil(H/2),
+  // by `init` reading the map as shadow_depth; each level l up to N by
+  // `reduce` reading level l - 1 as minmax_source. Each pass gets `params`
+  // with source_size set to the level it reads and screen_size to the level
+  // it writes (W, H, 1/W, 1/H).
+  Result<MinmaxBuild> build_minmax(ShadowMap& map, const PassProgram& init,
+                                   const PassProgram& reduce, const ParamBlock& params);
+
+  // The min-max mip's levels 1..N (index 0 is level 1), two channels (min,
+  // max) each; a bad_input Error when the map has none.
+  Result<std::vector<FloatImage>> read_minmax(const ShadowMap& map);
+
+  // Runs a query program over one full-screen triangle into an R32G32_SFLOAT
+  // target of the receivers' size and returns its .x (the visibility) and
+  // .y (the texel reads), with the draw's GPU time. `receivers` holds
+  // (u, v, z_r) per pixel in 3 or 4 channels. A program reading
+  // shadow_minmax needs a map whose min-max mip is built.
+  Result<QueryOutput> run_query_output(const PassProgram& query, const ShadowMap& map,
+                                       const FloatImage& receivers, const ParamBlock& params);
+
+  // run_query_output's visibility alone.
   Result<FloatImage> run_query(const PassProgram& query, const ShadowMap& map,
                                const FloatImage& receivers, const ParamBlock& params);
 

@@ -17,9 +17,12 @@ struct EvalInputs {
 // Checks the images (channels, sizes, finite values); errors name the input.
 Status check_eval_inputs(const EvalInputs& inputs);
 
-// The visibility image (Pf, the receivers' size) from the device...
-Result<FloatImage> eval_on_device(const Library& library, const LibraryVariant& variant,
-                                  Target target, const EvalInputs& inputs, Engine& engine);
+// The visibility image (Pf, the receivers' size) from the device, with the
+// texel reads the pass counted and its GPU time (Engine::run_query_output).
+// A technique that reads the min-max mip gets it built first by the target's
+// own minmax_init and minmax_reduce passes...
+Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
+                                   Target target, const EvalInputs& inputs, Engine& engine);
 
 // ...or from the CPU reference.
 Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs);

@@ -40,7 +40,9 @@ struct ParamSizes {
   int screen_height = 0;
 };
 
-// ShadowParams for `light`, the map and screen sizes, and a depth scale.
+// ShadowParams for `light`, the map and screen sizes, and a depth scale:
+// every member, source_size the map's size and minmax_info.x the map's
+// min-max top level (minmax_top_level).
 ParamBlock shadow_params(const reference::LightParams& light, const ParamSizes& sizes,
                          float depth_scale);
 

@@ -12,8 +12,9 @@ struct ShadowMapImages;
 // Two images of the same normalized depth d = z * depth_scale: a D32_SFLOAT
 // depth image (sampled as `shadow_depth` and `shadow_cmp`) and an R32_SFLOAT
 // colour image (sampled as `shadow_depth` by programs without `shadow_cmp`,
-// the Direct3D 9 style). Only the Engine that made it can use it; it keeps
-// that Engine's Vulkan device alive, so it may outlive the Engine.
+// the Direct3D 9 style); once Engine::build_minmax made it, the min-max mip
+// (sampled as `shadow_minmax`). Only the Engine that made it can use it; it
+// keeps that Engine's Vulkan device alive, so it may outlive the Engine.
 class ShadowMap {
  public:
   ShadowMap(const ShadowMap&) = delete;
@@ -22,6 +23,8 @@ class ShadowMap {
 
   int width() const;
   int height() const;
+  // The min-max mip's levels (its top level N), or 0 when it has none.
+  int minmax_levels() const;
 
  private:
   friend class Engine;

@@ -22,6 +22,7 @@ struct VerifyOptions {
 struct SceneRun {
   std::string scene;
   reference::Comparison comparison;
+  double mean_texel_reads = 0.0;  // the query's .y over all pixels (QueryOutput::texel_reads)
 };
 
 // One variant, one target, one backend ("vulkan" or "gl").
@@ -53,10 +54,25 @@ struct DepthCheck {
   bool pass = false;
 };
 
+// A target's min-max mip, built by its own minmax_init and minmax_reduce
+// passes on the map its depth pass rendered, against the CPU mip of that map.
+struct MinmaxCheck {
+  std::string scene;
+  Target target = Target::spirv;
+  int levels = 0;           // levels the device built
+  int expected_levels = 0;  // N of the CPU mip
+  std::size_t texels = 0;   // nodes compared, every level
+  // Of those, min or max not the same float (or a level's size differs).
+  std::size_t mismatched = 0;
+  std::string error;  // why the mip could not be built or read
+  bool pass = false;
+};
+
 struct VerifyReport {
   DeviceInfo device;
   std::string gl_device;  // empty when the GL path did not run
   std::vector<DepthCheck> depth_checks;
+  std::vector<MinmaxCheck> minmax_checks;  // for targets that ran a variant using the mip
   std::vector<VariantRun> variants;
   std::size_t runs = 0;    // executed (variant, target, backend, scene) runs
   std::size_t failed = 0;  // of those, failed

@@ -6,6 +6,8 @@ layout(std140) uniform ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 } params;
 
 layout(location = 0) in vec3 position;

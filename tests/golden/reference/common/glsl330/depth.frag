@@ -6,6 +6,8 @@ struct ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 };
 
 uniform ShadowParams params;

@@ -6,6 +6,8 @@ layout(binding = 0, std140) uniform ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 } params;
 
 layout(location = 0) in float light_z;

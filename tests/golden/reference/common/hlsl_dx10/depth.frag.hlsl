@@ -4,6 +4,8 @@ cbuffer ShadowParams : register(b0)
     float4 params_light : packoffset(c1);
     float4 params_sampling : packoffset(c2);
     float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
 };
 
 

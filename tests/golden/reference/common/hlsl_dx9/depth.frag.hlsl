@@ -3,6 +3,8 @@ uniform float4 params_shadow_map_size : register(c0);
 uniform float4 params_light : register(c1);
 uniform float4 params_sampling : register(c2);
 uniform float4 params_screen_size : register(c3);
+uniform float4 params_source_size : register(c4);
+uniform float4 params_minmax_info : register(c5);
 
 
 

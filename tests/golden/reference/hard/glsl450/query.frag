@@ -6,6 +6,8 @@ layout(binding = 0, std140) uniform ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 } params;
 
 layout(binding = 1) uniform sampler2D shadow_depth;
@@ -13,6 +15,7 @@ layout(binding = 3) uniform sampler2D receivers;
 
 layout(location = 0) in vec2 screen_uv;
 layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
 
 float shadow_reference(float z_receiver)
 {
@@ -21,6 +24,7 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_point(vec2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 1.0;
     float param = z_receiver;
     return float(shadow_reference(param) <= textureLod(shadow_depth, uv, 0.0).x);
 }
@@ -29,13 +33,17 @@ float shadow_visibility(vec3 query)
 {
     vec2 param = query.xy;
     float param_1 = query.z;
-    return shadow_compare_point(param, param_1);
+    float _73 = shadow_compare_point(param, param_1);
+    return _73;
 }
 
 void main()
 {
+    penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    visibility = vec4(shadow_visibility(param));
+    float _87 = shadow_visibility(param);
+    float visible = _87;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

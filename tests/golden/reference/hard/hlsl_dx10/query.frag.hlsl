@@ -4,6 +4,8 @@ cbuffer ShadowParams : register(b0)
     float4 params_light : packoffset(c1);
     float4 params_sampling : packoffset(c2);
     float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
 };
 
 Texture2D<float4> shadow_depth : register(t1);
@@ -24,6 +26,8 @@ struct SPIRV_Cross_Output
     float4 visibility : SV_Target0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_reference(float z_receiver)
 {
     return (z_receiver - params_sampling.y) * params_sampling.z;
@@ -31,6 +35,7 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_point(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 1.0f;
     float param = z_receiver;
     return float(shadow_reference(param) <= shadow_depth.SampleLevel(_shadow_depth_sampler, uv, 0.0f).x);
 }
@@ -39,14 +44,18 @@ float shadow_visibility(float3 query)
 {
     float2 param = query.xy;
     float param_1 = query.z;
-    return shadow_compare_point(param, param_1);
+    float _73 = shadow_compare_point(param, param_1);
+    return _73;
 }
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _87 = shadow_visibility(param);
+    float visible = _87;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

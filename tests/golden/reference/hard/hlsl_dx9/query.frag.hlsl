@@ -3,6 +3,8 @@ uniform float4 params_shadow_map_size : register(c0);
 uniform float4 params_light : register(c1);
 uniform float4 params_sampling : register(c2);
 uniform float4 params_screen_size : register(c3);
+uniform float4 params_source_size : register(c4);
+uniform float4 params_minmax_info : register(c5);
 
 
 uniform sampler2D shadow_depth;
@@ -21,6 +23,8 @@ struct SPIRV_Cross_Output
     float4 visibility : COLOR0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_reference(float z_receiver)
 {
     return (z_receiver - params_sampling.y) * params_sampling.z;
@@ -28,6 +32,7 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_point(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 1.0f;
     float param = z_receiver;
     return float(shadow_reference(param) <= tex2Dlod(shadow_depth, float4(uv, 0.0, 0.0f)).x);
 }
@@ -36,14 +41,18 @@ float shadow_visibility(float3 query)
 {
     float2 param = query.xy;
     float param_1 = query.z;
-    return shadow_compare_point(param, param_1);
+    float _73 = shadow_compare_point(param, param_1);
+    return _73;
 }
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _87 = shadow_visibility(param);
+    float visible = _87;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

@@ -8,6 +8,8 @@ layout(std140) uniform ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 } params;
 
 uniform highp sampler2DShadow shadow_cmp;
@@ -15,6 +17,7 @@ uniform highp sampler2D receivers;
 
 in vec2 screen_uv;
 layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
 
 float shadow_reference(float z_receiver)
 {
@@ -23,10 +26,11 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(vec2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _57 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_57.xy, _57.z), 0.0);
+    vec3 _62 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_62.xy, _62.z), 0.0);
 }
 
 float shadow_visibility(vec3 query)
@@ -38,7 +42,8 @@ float shadow_visibility(vec3 query)
         {
             vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
             float param_1 = query.z;
-            sum += shadow_compare_bilinear(param, param_1);
+            float _107 = shadow_compare_bilinear(param, param_1);
+            sum += _107;
         }
     }
     return sum / 9.0;
@@ -46,8 +51,11 @@ float shadow_visibility(vec3 query)
 
 void main()
 {
+    penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    visibility = vec4(shadow_visibility(param));
+    float _133 = shadow_visibility(param);
+    float visible = _133;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

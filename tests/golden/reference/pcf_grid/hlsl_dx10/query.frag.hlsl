@@ -4,6 +4,8 @@ cbuffer ShadowParams : register(b0)
     float4 params_light : packoffset(c1);
     float4 params_sampling : packoffset(c2);
     float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
 };
 
 Texture2D<float4> shadow_cmp : register(t2);
@@ -24,6 +26,8 @@ struct SPIRV_Cross_Output
     float4 visibility : SV_Target0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_reference(float z_receiver)
 {
     return (z_receiver - params_sampling.y) * params_sampling.z;
@@ -31,10 +35,11 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _57 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _57.xy, _57.z);
+    float3 _62 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _62.xy, _62.z);
 }
 
 float shadow_visibility(float3 query)
@@ -46,7 +51,8 @@ float shadow_visibility(float3 query)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
             float param_1 = query.z;
-            sum += shadow_compare_bilinear(param, param_1);
+            float _107 = shadow_compare_bilinear(param, param_1);
+            sum += _107;
         }
     }
     return sum / 9.0f;
@@ -54,9 +60,12 @@ float shadow_visibility(float3 query)
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _133 = shadow_visibility(param);
+    float visible = _133;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

@@ -8,6 +8,8 @@ struct ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 };
 
 uniform ShadowParams params;
@@ -17,6 +19,7 @@ uniform sampler2D receivers;
 
 in vec2 screen_uv;
 layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
 
 float shadow_reference(float z_receiver)
 {
@@ -25,10 +28,11 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(vec2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _57 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_57.xy, _57.z), 0.0);
+    vec3 _62 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_62.xy, _62.z), 0.0);
 }
 
 float shadow_visibility(vec3 query)
@@ -38,15 +42,19 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy + (PCF_DISK[i] * params.sampling.x);
         float param_1 = query.z;
-        sum += shadow_compare_bilinear(param, param_1);
+        float _148 = shadow_compare_bilinear(param, param_1);
+        sum += _148;
     }
     return sum / 16.0;
 }
 
 void main()
 {
+    penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    visibility = vec4(shadow_visibility(param));
+    float _173 = shadow_visibility(param);
+    float visible = _173;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

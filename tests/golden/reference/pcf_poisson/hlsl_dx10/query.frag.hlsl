@@ -6,6 +6,8 @@ cbuffer ShadowParams : register(b0)
     float4 params_light : packoffset(c1);
     float4 params_sampling : packoffset(c2);
     float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
 };
 
 Texture2D<float4> shadow_cmp : register(t2);
@@ -26,6 +28,8 @@ struct SPIRV_Cross_Output
     float4 visibility : SV_Target0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_reference(float z_receiver)
 {
     return (z_receiver - params_sampling.y) * params_sampling.z;
@@ -33,10 +37,11 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _57 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _57.xy, _57.z);
+    float3 _62 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _62.xy, _62.z);
 }
 
 float shadow_visibility(float3 query)
@@ -46,16 +51,20 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy + (PCF_DISK[i] * params_sampling.x);
         float param_1 = query.z;
-        sum += shadow_compare_bilinear(param, param_1);
+        float _148 = shadow_compare_bilinear(param, param_1);
+        sum += _148;
     }
     return sum / 16.0f;
 }
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _173 = shadow_visibility(param);
+    float visible = _173;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

@@ -5,6 +5,8 @@ uniform float4 params_shadow_map_size : register(c0);
 uniform float4 params_light : register(c1);
 uniform float4 params_sampling : register(c2);
 uniform float4 params_screen_size : register(c3);
+uniform float4 params_source_size : register(c4);
+uniform float4 params_minmax_info : register(c5);
 
 
 uniform sampler2D shadow_depth;
@@ -23,6 +25,8 @@ struct SPIRV_Cross_Output
     float4 visibility : COLOR0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_reference(float z_receiver)
 {
     return (z_receiver - params_sampling.y) * params_sampling.z;
@@ -30,6 +34,7 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
     float2 texel = (uv * params_shadow_map_size.xy) - 0.5f.xx;
@@ -51,16 +56,20 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy + (PCF_DISK[i] * params_sampling.x);
         float param_1 = query.z;
-        sum += shadow_compare_bilinear(param, param_1);
+        float _225 = shadow_compare_bilinear(param, param_1);
+        sum += _225;
     }
     return sum / 16.0f;
 }
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _247 = shadow_visibility(param);
+    float visible = _247;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

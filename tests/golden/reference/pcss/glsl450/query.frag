@@ -8,6 +8,8 @@ layout(binding = 0, std140) uniform ShadowParams
     vec4 light;
     vec4 sampling;
     vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
 } params;
 
 layout(binding = 1) uniform sampler2D shadow_depth;
@@ -16,9 +18,11 @@ layout(binding = 3) uniform sampler2D receivers;
 
 layout(location = 0) in vec2 screen_uv;
 layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
 
 float shadow_depth_point(vec2 uv)
 {
+    penumbra_texel_reads += 1.0;
     return textureLod(shadow_depth, uv, 0.0).x * params.sampling.w;
 }
 
@@ -30,23 +34,24 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, vec2 uv, 
     for (int i = 0; i < 16; i++)
     {
         vec2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float shadowMapDepth = shadow_depth_point(param);
+        float _236 = shadow_depth_point(param);
+        float shadowMapDepth = _236;
         if (shadowMapDepth < (zReceiver - params.sampling.y))
         {
             blockerSum += shadowMapDepth;
             numBlockers += 1.0;
         }
     }
-    float _215;
+    float _254;
     if (numBlockers > 0.0)
     {
-        _215 = blockerSum / numBlockers;
+        _254 = blockerSum / numBlockers;
     }
     else
     {
-        _215 = zReceiver;
+        _254 = zReceiver;
     }
-    avgBlockerDepth = _215;
+    avgBlockerDepth = _254;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -61,10 +66,11 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(vec2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _98 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_98.xy, _98.z), 0.0);
+    vec3 _106 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_106.xy, _106.z), 0.0);
 }
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
@@ -75,7 +81,8 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
         vec2 offset = POISSON_DISK[i] * filterRadiusUV;
         vec2 param = uv + offset;
         float param_1 = zReceiver;
-        sum += shadow_compare_bilinear(param, param_1);
+        float _196 = shadow_compare_bilinear(param, param_1);
+        sum += _196;
     }
     return sum / 16.0;
 }
@@ -104,19 +111,24 @@ float PCSS(vec3 coords)
     vec2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    return PCF_Filter(param_6, param_7, param_8);
+    float _308 = PCF_Filter(param_6, param_7, param_8);
+    return _308;
 }
 
 float shadow_visibility(vec3 query)
 {
     vec3 param = query;
-    return PCSS(param);
+    float _313 = PCSS(param);
+    return _313;
 }
 
 void main()
 {
+    penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    visibility = vec4(shadow_visibility(param));
+    float _327 = shadow_visibility(param);
+    float visible = _327;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

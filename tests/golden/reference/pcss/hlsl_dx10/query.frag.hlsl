@@ -6,6 +6,8 @@ cbuffer ShadowParams : register(b0)
     float4 params_light : packoffset(c1);
     float4 params_sampling : packoffset(c2);
     float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
 };
 
 Texture2D<float4> shadow_depth : register(t1);
@@ -28,8 +30,11 @@ struct SPIRV_Cross_Output
     float4 visibility : SV_Target0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_depth_point(float2 uv)
 {
+    penumbra_texel_reads += 1.0f;
     return shadow_depth.SampleLevel(_shadow_depth_sampler, uv, 0.0f).x * params_sampling.w;
 }
 
@@ -41,23 +46,24 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     for (int i = 0; i < 16; i++)
     {
         float2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float shadowMapDepth = shadow_depth_point(param);
+        float _236 = shadow_depth_point(param);
+        float shadowMapDepth = _236;
         if (shadowMapDepth < (zReceiver - params_sampling.y))
         {
             blockerSum += shadowMapDepth;
             numBlockers += 1.0f;
         }
     }
-    float _215;
+    float _254;
     if (numBlockers > 0.0f)
     {
-        _215 = blockerSum / numBlockers;
+        _254 = blockerSum / numBlockers;
     }
     else
     {
-        _215 = zReceiver;
+        _254 = zReceiver;
     }
-    avgBlockerDepth = _215;
+    avgBlockerDepth = _254;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -72,10 +78,11 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _98 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _98.xy, _98.z);
+    float3 _106 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _106.xy, _106.z);
 }
 
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
@@ -86,7 +93,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = POISSON_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        sum += shadow_compare_bilinear(param, param_1);
+        float _196 = shadow_compare_bilinear(param, param_1);
+        sum += _196;
     }
     return sum / 16.0f;
 }
@@ -115,20 +123,25 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    return PCF_Filter(param_6, param_7, param_8);
+    float _308 = PCF_Filter(param_6, param_7, param_8);
+    return _308;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    return PCSS(param);
+    float _313 = PCSS(param);
+    return _313;
 }
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _327 = shadow_visibility(param);
+    float visible = _327;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

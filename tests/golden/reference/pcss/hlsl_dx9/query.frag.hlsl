@@ -5,6 +5,8 @@ uniform float4 params_shadow_map_size : register(c0);
 uniform float4 params_light : register(c1);
 uniform float4 params_sampling : register(c2);
 uniform float4 params_screen_size : register(c3);
+uniform float4 params_source_size : register(c4);
+uniform float4 params_minmax_info : register(c5);
 
 
 uniform sampler2D shadow_depth;
@@ -23,8 +25,11 @@ struct SPIRV_Cross_Output
     float4 visibility : COLOR0;
 };
 
+static float penumbra_texel_reads;
+
 float shadow_depth_point(float2 uv)
 {
+    penumbra_texel_reads += 1.0f;
     return tex2Dlod(shadow_depth, float4(uv, 0.0, 0.0f)).x * params_sampling.w;
 }
 
@@ -36,23 +41,24 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     for (int i = 0; i < 16; i++)
     {
         float2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float shadowMapDepth = shadow_depth_point(param);
+        float _308 = shadow_depth_point(param);
+        float shadowMapDepth = _308;
         if (shadowMapDepth < (zReceiver - params_sampling.y))
         {
             blockerSum += shadowMapDepth;
             numBlockers += 1.0f;
         }
     }
-    float _287;
+    float _326;
     if (numBlockers > 0.0f)
     {
-        _287 = blockerSum / numBlockers;
+        _326 = blockerSum / numBlockers;
     }
     else
     {
-        _287 = zReceiver;
+        _326 = zReceiver;
     }
-    avgBlockerDepth = _287;
+    avgBlockerDepth = _326;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -67,6 +73,7 @@ float shadow_reference(float z_receiver)
 
 float shadow_compare_bilinear(float2 uv, float z_receiver)
 {
+    penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
     float2 texel = (uv * params_shadow_map_size.xy) - 0.5f.xx;
@@ -89,7 +96,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = POISSON_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        sum += shadow_compare_bilinear(param, param_1);
+        float _268 = shadow_compare_bilinear(param, param_1);
+        sum += _268;
     }
     return sum / 16.0f;
 }
@@ -118,20 +126,25 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    return PCF_Filter(param_6, param_7, param_8);
+    float _380 = PCF_Filter(param_6, param_7, param_8);
+    return _380;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    return PCSS(param);
+    float _385 = PCSS(param);
+    return _385;
 }
 
 void frag_main()
 {
+    penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    visibility = shadow_visibility(param).xxxx;
+    float _399 = shadow_visibility(param);
+    float visible = _399;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

@@ -1,0 +1,87 @@
+// backprojection's reference: brute force over the texels that can matter.
+// In slopes a = (u - 0.5) Fw / n, a patch at depth z projects from the
+// receiver (slope a_r, depth z_r) to X = (a - a_r) g(z), g(z) = z z_r / (z_r - z).
+// g grows with z, so a texel whose nearest slope edge is farther than
+// L / g(zlo) from a_r misses the light for every depth >= zlo: with zlo the
+// map's minimum, the texels outside backprojection_window() add exactly 0.
+// Texels at or behind the receiver (possible only with a negative bias)
+// cannot be projected towards the light and add nothing.
+#include "penumbra/reference/backprojection.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/reference/sampling.hpp"
+#include "technique_parts.hpp"
+
+namespace penumbra::reference {
+namespace {
+
+// The texel index containing uv coordinate `coord`, held within a texel of
+// the map so that it stays in int range.
+int texel_floor(double coord, int size) {
+  return int(std::clamp(std::floor(coord * size), -1.0, double(size)));
+}
+
+// Overlap of [lo, hi] with [-half, half].
+double overlap(double lo, double hi, double half) {
+  return std::max(0.0, std::min(hi, half) - std::max(lo, -half));
+}
+
+}  // namespace
+
+TexelRect backprojection_window(const ShadowMapView& map, const LightParams& light, const Query& q,
+                                double min_depth) {
+  if (min_depth >= q.z) return {};
+  const TexelRect whole{0, 0, map.width() - 1, map.height() - 1};
+  if (min_depth <= 0.0) return whole;
+  // L / g(zlo) as a slope, then in uv.
+  const double reach =
+      light.light_size_uv() * light.near_plane * (q.z - min_depth) / (q.z * min_depth);
+  const TexelRect window{
+      texel_floor(q.u - reach, map.width()) - 1, texel_floor(q.v - reach, map.height()) - 1,
+      texel_floor(q.u + reach, map.width()) + 1, texel_floor(q.v + reach, map.height()) + 1};
+  return clip(window, map.width(), map.height());
+}
+
+double backprojected_area(const ShadowMapView& map, const LightParams& light, const Query& q,
+                          const TexelRect& texels) {
+  const TexelRect inside = clip(texels, map.width(), map.height());
+  const float z_ref = float_reference(q.z, light.bias);
+  const double to_slope = light.frustum_width / light.near_plane;
+  const double L = light.light_world_size;
+  const double a_r = (q.u - 0.5) * to_slope;
+  const double b_r = (q.v - 0.5) * to_slope;
+  double area = 0.0;
+  for (int j = inside.y0; j <= inside.y1; ++j) {
+    const double b0 = (double(j) / map.height() - 0.5) * to_slope - b_r;
+    const double b1 = (double(j + 1) / map.height() - 0.5) * to_slope - b_r;
+    for (int i = inside.x0; i <= inside.x1; ++i) {
+      const double z = map.depth(i, j);
+      if (!(float(z) < z_ref) || z >= q.z) continue;
+      const double g = z * q.z / (q.z - z);
+      const double a0 = (double(i) / map.width() - 0.5) * to_slope - a_r;
+      const double a1 = (double(i + 1) / map.width() - 0.5) * to_slope - a_r;
+      area += overlap(a0 * g, a1 * g, L) * overlap(b0 * g, b1 * g, L);
+    }
+  }
+  return area;
+}
+
+double backprojection_visibility(double area, const LightParams& light) {
+  const double side = 2.0 * light.light_world_size;
+  return std::max(0.0, 1.0 - area / (side * side));
+}
+
+namespace detail {
+
+Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
+                      const Query& q) {
+  const MinMax top = mip.node(mip.top_level(), 0, 0);
+  if (!(top.min < float_reference(q.z, light.bias))) return {1.0, false};
+  const TexelRect window = backprojection_window(map, light, q, top.min);
+  return {backprojection_visibility(backprojected_area(map, light, q, window), light), false};
+}
+
+}  // namespace detail
+}  // namespace penumbra::reference

@@ -1,0 +1,59 @@
+// minmax_pcf's reference counts the window texel by texel: the semantics are
+// the brute-force count, and the shader's mip traversal must equal it (tests
+// prove the CPU traversal in minmax_traversal.cpp does). Every step is float
+// arithmetic the GPU performs identically (a correctly rounded product, floor,
+// exact integer counts below 2^24), so the tolerance is 0.
+#include "penumbra/reference/minmax_pcf.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/reference/sampling.hpp"
+#include "technique_parts.hpp"
+
+namespace penumbra::reference {
+namespace {
+
+// floor(coord * size) in float; far outside the map it is held at +-2^24
+// (still outside) so that the window's ends stay in int range.
+int window_texel(double coord, int size) {
+  constexpr float kFar = 16777216.0f;
+  return int(std::clamp(std::floor(float(coord) * float(size)), -kFar, kFar));
+}
+
+}  // namespace
+
+TexelRect minmax_pcf_window(const ShadowMapView& map, double u, double v, int kernel) {
+  const int x0 = window_texel(u, map.width()) - kernel / 2;
+  const int y0 = window_texel(v, map.height()) - kernel / 2;
+  return {x0, y0, x0 + kernel - 1, y0 + kernel - 1};
+}
+
+long long count_occluders_brute_force(const ShadowMapView& map, const TexelRect& window,
+                                      float z_ref) {
+  const TexelRect inside = clip(window, map.width(), map.height());
+  long long count = 0;
+  for (int j = inside.y0; j <= inside.y1; ++j) {
+    for (int i = inside.x0; i <= inside.x1; ++i) {
+      if (float(map.depth(i, j)) < z_ref) ++count;
+    }
+  }
+  return count;
+}
+
+float minmax_pcf_visibility(long long count, int kernel) {
+  if (count == 0) return 1.0f;
+  return float(kernel * kernel - count) * minmax_pcf_inv_area(kernel);
+}
+
+namespace detail {
+
+Sample minmax_pcf(const ShadowMapView& map, const LightParams& light, const Query& q, int kernel) {
+  const TexelRect window = minmax_pcf_window(map, q.u, q.v, kernel);
+  const long long count =
+      count_occluders_brute_force(map, window, float_reference(q.z, light.bias));
+  return {minmax_pcf_visibility(count, kernel), false};
+}
+
+}  // namespace detail
+}  // namespace penumbra::reference

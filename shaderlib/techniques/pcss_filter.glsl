@@ -1,0 +1,20 @@
+// PCSS steps 2 and 3 (the whitepaper's names), shared by pcss and
+// pcss_minmax: penumbra size and filtering over PCF_DISK.
+#ifndef PENUMBRA_PCSS_FILTER_GLSL
+#define PENUMBRA_PCSS_FILTER_GLSL
+
+// Parallel plane estimation.
+float PenumbraSize(float zReceiver, float zBlocker) {
+  return (zReceiver - zBlocker) / zBlocker;
+}
+
+float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV) {
+  float sum = 0.0;
+  for (int i = 0; i < PCF_NUM_SAMPLES; ++i) {
+    vec2 offset = PCF_DISK[i] * filterRadiusUV;
+    sum += shadow_compare_bilinear(uv + offset, zReceiver);
+  }
+  return sum / float(PCF_NUM_SAMPLES);
+}
+
+#endif

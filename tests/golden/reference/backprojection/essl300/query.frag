@@ -1,0 +1,346 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+struct MinmaxCursor
+{
+    vec2 node;
+    float level;
+    float span;
+    vec2 first_root;
+    float start;
+    bool done;
+};
+
+layout(std140) uniform ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
+} params;
+
+uniform highp sampler2D shadow_depth;
+uniform highp sampler2D shadow_minmax;
+uniform highp sampler2D receivers;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+vec2 minmax_top_node()
+{
+    penumbra_texel_reads += 1.0;
+    return textureLod(shadow_minmax, vec2(0.5), params.minmax_info.x - 1.0).xy;
+}
+
+vec4 minmax_clip_window(vec2 first, vec2 last)
+{
+    return vec4(max(first, vec2(0.0)), min(last, params.shadow_map_size.xy - vec2(1.0)));
+}
+
+vec4 backprojection_window(vec3 query, float z_min)
+{
+    float half_width = ((params.light.w * params.light.z) * (query.z - z_min)) / (query.z * z_min);
+    vec2 map_size = params.shadow_map_size.xy;
+    vec2 param = floor((query.xy - vec2(half_width)) * map_size) - vec2(1.0);
+    vec2 param_1 = floor((query.xy + vec2(half_width)) * map_size) + vec2(1.0);
+    return minmax_clip_window(param, param_1);
+}
+
+bool minmax_window_empty(vec4 window)
+{
+    return any(greaterThan(window.xy, window.zw));
+}
+
+vec2 backprojection_slope(vec2 uv)
+{
+    return (uv - vec2(0.5)) * (params.light.y / params.light.z);
+}
+
+float backprojection_whole_light_area()
+{
+    return (4.0 * params.light.x) * params.light.x;
+}
+
+MinmaxCursor minmax_begin(vec4 window)
+{
+    MinmaxCursor cursor;
+    cursor.level = 0.0;
+    cursor.span = 1.0;
+    float inv_span = 1.0;
+    for (int k = 0; k < 16; k++)
+    {
+        vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(nodes.x, nodes.y) <= 1.0)
+        {
+            break;
+        }
+        cursor.level += 1.0;
+        cursor.span *= 2.0;
+        inv_span *= 0.5;
+    }
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy * inv_span);
+    cursor.node = cursor.first_root;
+    cursor.done = false;
+    return cursor;
+}
+
+vec4 minmax_node_part(MinmaxCursor cursor, vec4 window)
+{
+    vec2 first = cursor.node * cursor.span;
+    return vec4(max(first, window.xy), min((first + vec2(cursor.span)) - vec2(1.0), window.zw));
+}
+
+float shadow_texel(vec2 texel)
+{
+    penumbra_texel_reads += 1.0;
+    return textureLod(shadow_depth, (texel + vec2(0.5)) * params.shadow_map_size.zw, 0.0).x;
+}
+
+vec2 minmax_node(float level, vec2 node)
+{
+    if (level < 0.5)
+    {
+        vec2 param = node;
+        float _162 = shadow_texel(param);
+        float depth = _162;
+        return vec2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0;
+    vec2 uv = (node + vec2(0.5)) * exp2(level - params.minmax_info.x);
+    return textureLod(shadow_minmax, uv, level - 1.0).xy;
+}
+
+vec2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    vec2 param_1 = cursor.node;
+    vec2 _347 = minmax_node(param, param_1);
+    return _347;
+}
+
+vec4 minmax_node_texels(MinmaxCursor cursor)
+{
+    vec2 first = cursor.node * cursor.span;
+    vec2 param = first;
+    vec2 param_1 = (first + vec2(cursor.span)) - vec2(1.0);
+    return minmax_clip_window(param, param_1);
+}
+
+float backprojection_gain(float z, float z_receiver)
+{
+    return (z * z_receiver) / (z_receiver - z);
+}
+
+vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slope)
+{
+    float param = z;
+    float param_1 = query.z;
+    float gain = backprojection_gain(param, param_1);
+    vec2 param_2 = texels.xy * params.shadow_map_size.zw;
+    vec2 param_3 = (texels.zw + vec2(1.0)) * params.shadow_map_size.zw;
+    return vec4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+}
+
+bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receiver_slope)
+{
+    vec4 param = texels;
+    float param_1 = z_min;
+    vec3 param_2 = query;
+    vec2 param_3 = receiver_slope;
+    vec4 rect = backprojection_project(param, param_1, param_2, param_3);
+    bool _547 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _558;
+    if (_547)
+    {
+        _558 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+    }
+    else
+    {
+        _558 = _547;
+    }
+    return _558;
+}
+
+float backprojection_light_area(vec4 rect)
+{
+    vec2 size = max(min(rect.zw, vec2(params.light.x)) - max(rect.xy, vec2(-params.light.x)), vec2(0.0));
+    return size.x * size.y;
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0;
+    cursor.level -= 1.0;
+    cursor.span *= 0.5;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    vec2 _378;
+    for (int k = 0; k <= 16; k++)
+    {
+        bool root = cursor.level >= cursor.start;
+        if (root)
+        {
+            _378 = cursor.first_root;
+        }
+        else
+        {
+            _378 = floor(cursor.node * 0.5) * 2.0;
+        }
+        vec2 first_sibling = _378;
+        vec2 offset = cursor.node - first_sibling;
+        if (offset.x < 0.5)
+        {
+            cursor.node.x += 1.0;
+            break;
+        }
+        if (offset.y < 0.5)
+        {
+            cursor.node = vec2(first_sibling.x, cursor.node.y + 1.0);
+            break;
+        }
+        if (root)
+        {
+            cursor.done = true;
+            break;
+        }
+        cursor.node = floor(cursor.node * 0.5);
+        cursor.level += 1.0;
+        cursor.span *= 2.0;
+    }
+}
+
+float backprojection_area(vec3 query, vec4 window, float limit)
+{
+    vec2 param = query.xy;
+    vec2 receiver_slope = backprojection_slope(param);
+    float light_area = backprojection_whole_light_area();
+    float area = 0.0;
+    float visits = 0.0;
+    vec4 param_1 = window;
+    MinmaxCursor cursor = minmax_begin(param_1);
+    for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
+    {
+        for (int loop_middle = 0; all(bvec2(loop_middle < 65, !cursor.done)); loop_middle++)
+        {
+            for (int loop_inner = 0; all(bvec2(loop_inner < 255, !cursor.done)); loop_inner++)
+            {
+                visits += 1.0;
+                bool descend = false;
+                MinmaxCursor param_2 = cursor;
+                vec4 param_3 = window;
+                vec4 param_4 = minmax_node_part(param_2, param_3);
+                if (!minmax_window_empty(param_4))
+                {
+                    MinmaxCursor param_5 = cursor;
+                    vec2 _677 = minmax_cursor_read(param_5);
+                    vec2 range = _677;
+                    MinmaxCursor param_6 = cursor;
+                    vec4 texels = minmax_node_texels(param_6);
+                    float z_min = range.x * params.sampling.w;
+                    bool _691 = range.x < limit;
+                    bool _703;
+                    if (_691)
+                    {
+                        vec4 param_7 = texels;
+                        float param_8 = z_min;
+                        vec3 param_9 = query;
+                        vec2 param_10 = receiver_slope;
+                        _703 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                    }
+                    else
+                    {
+                        _703 = _691;
+                    }
+                    if (_703)
+                    {
+                        bool _709 = range.y < limit;
+                        bool _717;
+                        if (_709)
+                        {
+                            _717 = range.x == range.y;
+                        }
+                        else
+                        {
+                            _717 = _709;
+                        }
+                        if (_717)
+                        {
+                            vec4 param_11 = texels;
+                            float param_12 = z_min;
+                            vec3 param_13 = query;
+                            vec2 param_14 = receiver_slope;
+                            vec4 param_15 = backprojection_project(param_11, param_12, param_13, param_14);
+                            area += backprojection_light_area(param_15);
+                        }
+                        else
+                        {
+                            descend = cursor.level > 0.5;
+                        }
+                    }
+                }
+                if (descend)
+                {
+                    MinmaxCursor param_16 = cursor;
+                    minmax_descend(param_16);
+                    cursor = param_16;
+                }
+                else
+                {
+                    MinmaxCursor param_17 = cursor;
+                    minmax_next(param_17);
+                    cursor = param_17;
+                }
+                cursor.done = (cursor.done || (area >= light_area)) || (visits >= 16384.0);
+            }
+        }
+    }
+    return area;
+}
+
+float shadow_visibility(vec3 query)
+{
+    float param = query.z;
+    float limit = min(shadow_reference(param), query.z * params.sampling.z);
+    vec2 _781 = minmax_top_node();
+    float map_min = _781.x;
+    if (!(map_min < limit))
+    {
+        return 1.0;
+    }
+    vec3 param_1 = query;
+    float param_2 = map_min * params.sampling.w;
+    vec4 window = backprojection_window(param_1, param_2);
+    vec4 param_3 = window;
+    if (minmax_window_empty(param_3))
+    {
+        return 1.0;
+    }
+    vec3 param_4 = query;
+    vec4 param_5 = window;
+    float param_6 = limit;
+    float _811 = backprojection_area(param_4, param_5, param_6);
+    return max(0.0, 1.0 - (_811 / backprojection_whole_light_area()));
+}
+
+void main()
+{
+    penumbra_texel_reads = 0.0;
+    vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
+    vec3 param = query;
+    float _829 = shadow_visibility(param);
+    float visible = _829;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
+}
+

@@ -1,0 +1,251 @@
+#version 330
+
+struct MinmaxCursor
+{
+    vec2 node;
+    float level;
+    float span;
+    vec2 first_root;
+    float start;
+    bool done;
+};
+
+struct ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
+};
+
+uniform ShadowParams params;
+
+uniform sampler2D shadow_depth;
+uniform sampler2D shadow_minmax;
+uniform sampler2D receivers;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+vec4 minmax_clip_window(vec2 first, vec2 last)
+{
+    return vec4(max(first, vec2(0.0)), min(last, params.shadow_map_size.xy - vec2(1.0)));
+}
+
+bool minmax_window_empty(vec4 window)
+{
+    return any(greaterThan(window.xy, window.zw));
+}
+
+MinmaxCursor minmax_begin(vec4 window)
+{
+    MinmaxCursor cursor;
+    cursor.level = 0.0;
+    cursor.span = 1.0;
+    float inv_span = 1.0;
+    for (int k = 0; k < 16; k++)
+    {
+        vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(nodes.x, nodes.y) <= 1.0)
+        {
+            break;
+        }
+        cursor.level += 1.0;
+        cursor.span *= 2.0;
+        inv_span *= 0.5;
+    }
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy * inv_span);
+    cursor.node = cursor.first_root;
+    cursor.done = false;
+    return cursor;
+}
+
+vec4 minmax_node_part(MinmaxCursor cursor, vec4 window)
+{
+    vec2 first = cursor.node * cursor.span;
+    return vec4(max(first, window.xy), min((first + vec2(cursor.span)) - vec2(1.0), window.zw));
+}
+
+float shadow_texel(vec2 texel)
+{
+    penumbra_texel_reads += 1.0;
+    return textureLod(shadow_depth, (texel + vec2(0.5)) * params.shadow_map_size.zw, 0.0).x;
+}
+
+vec2 minmax_node(float level, vec2 node)
+{
+    if (level < 0.5)
+    {
+        vec2 param = node;
+        float _123 = shadow_texel(param);
+        float depth = _123;
+        return vec2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0;
+    vec2 uv = (node + vec2(0.5)) * exp2(level - params.minmax_info.x);
+    return textureLod(shadow_minmax, uv, level - 1.0).xy;
+}
+
+vec2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    vec2 param_1 = cursor.node;
+    vec2 _294 = minmax_node(param, param_1);
+    return _294;
+}
+
+float minmax_texel_count(vec4 part)
+{
+    return ((part.z - part.x) + 1.0) * ((part.w - part.y) + 1.0);
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0;
+    cursor.level -= 1.0;
+    cursor.span *= 0.5;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    vec2 _325;
+    for (int k = 0; k <= 16; k++)
+    {
+        bool root = cursor.level >= cursor.start;
+        if (root)
+        {
+            _325 = cursor.first_root;
+        }
+        else
+        {
+            _325 = floor(cursor.node * 0.5) * 2.0;
+        }
+        vec2 first_sibling = _325;
+        vec2 offset = cursor.node - first_sibling;
+        if (offset.x < 0.5)
+        {
+            cursor.node.x += 1.0;
+            break;
+        }
+        if (offset.y < 0.5)
+        {
+            cursor.node = vec2(first_sibling.x, cursor.node.y + 1.0);
+            break;
+        }
+        if (root)
+        {
+            cursor.done = true;
+            break;
+        }
+        cursor.node = floor(cursor.node * 0.5);
+        cursor.level += 1.0;
+        cursor.span *= 2.0;
+    }
+}
+
+float minmax_pcf_count(vec2 first, float reference)
+{
+    float count = 0.0;
+    vec2 param = first;
+    vec2 param_1 = first + vec2(11.0);
+    vec4 window = minmax_clip_window(param, param_1);
+    vec4 param_2 = window;
+    if (minmax_window_empty(param_2))
+    {
+        return 0.0;
+    }
+    vec4 param_3 = window;
+    MinmaxCursor cursor = minmax_begin(param_3);
+    for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
+    {
+        for (int loop_middle = 0; all(bvec2(loop_middle < 2, !cursor.done)); loop_middle++)
+        {
+            for (int loop_inner = 0; all(bvec2(loop_inner < 255, !cursor.done)); loop_inner++)
+            {
+                MinmaxCursor param_4 = cursor;
+                vec4 param_5 = window;
+                vec4 part = minmax_node_part(param_4, param_5);
+                bool descend = false;
+                vec4 param_6 = part;
+                if (!minmax_window_empty(param_6))
+                {
+                    MinmaxCursor param_7 = cursor;
+                    vec2 _462 = minmax_cursor_read(param_7);
+                    vec2 range = _462;
+                    if (range.y < reference)
+                    {
+                        vec4 param_8 = part;
+                        count += minmax_texel_count(param_8);
+                    }
+                    else
+                    {
+                        bool _478 = reference > range.x;
+                        bool _484;
+                        if (_478)
+                        {
+                            _484 = cursor.level > 0.5;
+                        }
+                        else
+                        {
+                            _484 = _478;
+                        }
+                        descend = _484;
+                    }
+                }
+                if (descend)
+                {
+                    MinmaxCursor param_9 = cursor;
+                    minmax_descend(param_9);
+                    cursor = param_9;
+                }
+                else
+                {
+                    MinmaxCursor param_10 = cursor;
+                    minmax_next(param_10);
+                    cursor = param_10;
+                }
+            }
+        }
+    }
+    return count;
+}
+
+float shadow_visibility(vec3 query)
+{
+    vec2 first = floor(query.xy * params.shadow_map_size.xy) - vec2(6.0);
+    float param = query.z;
+    vec2 param_1 = first;
+    float param_2 = shadow_reference(param);
+    float _525 = minmax_pcf_count(param_1, param_2);
+    float count = _525;
+    float _528;
+    if (count > 0.0)
+    {
+        _528 = (144.0 - count) * 0.0069444444961845874786376953125;
+    }
+    else
+    {
+        _528 = 1.0;
+    }
+    return _528;
+}
+
+void main()
+{
+    penumbra_texel_reads = 0.0;
+    vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
+    vec3 param = query;
+    float _551 = shadow_visibility(param);
+    float visible = _551;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
+}
+
