@@ -47,10 +47,21 @@ void print_summary(const VerifyReport& report) {
         continue;
       }
       double max_error = 0.0;
-      for (const SceneRun& s : t.scenes)
+      double blur_error = 0.0;
+      double composite_error = 0.0;
+      bool chain = false;
+      for (const SceneRun& s : t.scenes) {
         max_error = std::max(max_error, s.comparison.max_abs_error);
-      std::cout << (t.pass ? "PASS " : "FAIL ") << run_label(v, t) << " max error " << max_error
-                << "\n";
+        if (s.blur && s.composite) {
+          chain = true;
+          blur_error = std::max(blur_error, s.blur->max_abs_error);
+          composite_error = std::max(composite_error, s.composite->max_abs_error);
+        }
+      }
+      std::cout << (t.pass ? "PASS " : "FAIL ") << run_label(v, t) << " max error " << max_error;
+      // screen_blur: the factor's error above, then the blur's and composite's.
+      if (chain) std::cout << ", blur " << blur_error << ", composite " << composite_error;
+      std::cout << "\n";
     }
   }
   if (report.gl_device.empty())

@@ -1,5 +1,6 @@
 #include "penumbra/compiler/model.hpp"
 
+#include <cmath>
 #include <cstddef>
 
 #include "penumbra/support/text.hpp"
@@ -9,7 +10,8 @@ namespace {
 
 // Indexed by the enum values, so the order must follow the enum declarations.
 constexpr std::array<std::string_view, kAllTechniques.size()> kTechniqueNames = {
-    "hard", "pcf_grid", "pcf_poisson", "pcss", "minmax_pcf", "backprojection", "pcss_minmax"};
+    "hard",       "pcf_grid",       "pcf_poisson", "pcss",
+    "minmax_pcf", "backprojection", "pcss_minmax", "screen_blur"};
 constexpr std::array<std::string_view, kAllTargets.size()> kTargetNames = {
     "spirv", "glsl450", "glsl330", "essl300", "hlsl_dx10", "hlsl_dx9"};
 
@@ -67,7 +69,21 @@ int minmax_max_visits(int kernel) {
   return visits;
 }
 
-// Keys are appended in a fixed order (k, b, p, disk, traversal, n) and only when set, so the
+std::vector<float> gaussian_weights(int radius) {
+  const double sigma = radius / 2.0;
+  std::vector<double> exact;
+  double sum = 0.0;
+  for (int k = -radius; k <= radius; ++k) {
+    exact.push_back(std::exp(-double(k) * k / (2.0 * sigma * sigma)));
+    sum += exact.back();
+  }
+  std::vector<float> out;
+  for (double w : exact) out.push_back(static_cast<float>(w / sum));
+  return out;
+}
+
+// Keys are appended in a fixed order (k, b, p, disk, traversal, n, r, depth_aware) and only
+// when set (depth_aware only when true), so the
 // name is total over any VariantKeys and stays stable across runs.
 std::string variant_name(Technique technique, const VariantKeys& keys) {
   std::string name(to_string(technique));
@@ -77,6 +93,8 @@ std::string variant_name(Technique technique, const VariantKeys& keys) {
   if (keys.disk) name += "_" + *keys.disk;
   if (keys.traversal) name += "_" + *keys.traversal;
   if (keys.max_nodes) name += "_n" + std::to_string(*keys.max_nodes);
+  if (keys.blur_radius) name += "_r" + std::to_string(*keys.blur_radius);
+  if (keys.depth_aware.value_or(false)) name += "_depth_aware";
   return name;
 }
 

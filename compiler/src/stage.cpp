@@ -9,7 +9,7 @@ namespace {
 
 // Indexed by the enum values, in declaration order.
 constexpr std::array<std::string_view, kAllPassKinds.size()> kPassNames = {
-    "depth", "minmax_init", "minmax_reduce", "query"};
+    "depth", "minmax_init", "minmax_reduce", "query", "blur_h", "blur_v", "composite"};
 
 }  // namespace
 
@@ -34,6 +34,10 @@ std::string value_text(int value) {
   return std::to_string(value);
 }
 
+std::string value_text(bool value) {
+  return value ? "true" : "false";
+}
+
 std::string value_text(const std::string& value) {
   return value;
 }
@@ -54,6 +58,8 @@ std::string ShaderJob::banner() const {
     out += "Variant " + variant->name + " (" + keys_text(*variant) + ")";
   } else if (pass == PassKind::minmax_init || pass == PassKind::minmax_reduce) {
     out += "Shared by every variant that reads the min-max mip";
+  } else if (pass == PassKind::blur_h || pass == PassKind::blur_v || pass == PassKind::composite) {
+    out += "Shared by every screen_blur variant";
   } else {
     out += "Shared by every variant";
   }

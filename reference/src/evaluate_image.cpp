@@ -1,12 +1,18 @@
 // Whole-image evaluation, with the input checks a CLI user's files need.
+#include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "penumbra/reference/techniques.hpp"
 
 namespace penumbra::reference {
 namespace {
+
+// How far the float blur weights' sum may be from 1.
+constexpr double kBlurWeightSumSlack = 1e-5;
 
 Error bad_variant(const Variant& variant, std::string message) {
   return make_error(Error::Kind::bad_input, variant.name, std::move(message));
@@ -31,6 +37,32 @@ Status check_traversal(const Variant& variant) {
   if (traversal && *traversal != kBruteForceTraversal) {
     return bad_variant(variant, "traversal is \"" + *traversal + "\" but must be \"" +
                                     std::string(kBruteForceTraversal) + "\"");
+  }
+  return {};
+}
+
+// screen_blur's radius and baked weights: 2R + 1 positive, symmetric taps
+// summing to 1 (float rounding of each tap moves the sum by far less).
+Status check_blur(const Variant& variant) {
+  const auto& radius = variant.keys.blur_radius;
+  if (!radius || *radius < 1 || *radius > kMaxBlurRadius) {
+    return bad_variant(
+        variant, "screen_blur needs a blur_radius from 1 to " + std::to_string(kMaxBlurRadius));
+  }
+  const std::vector<float>& w = variant.blur_weights;
+  if (w.size() != std::size_t(2 * *radius + 1)) {
+    return bad_variant(variant, "blur_radius is " + std::to_string(*radius) + " but there are " +
+                                    std::to_string(w.size()) + " blur weights, not " +
+                                    std::to_string(2 * *radius + 1));
+  }
+  double sum = 0.0;
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    if (!(w[k] > 0.0f)) return bad_variant(variant, "blur weights must be positive");
+    if (w[k] != w[w.size() - 1 - k]) return bad_variant(variant, "blur weights must be symmetric");
+    sum += w[k];
+  }
+  if (std::abs(sum - 1.0) > kBlurWeightSumSlack) {
+    return bad_variant(variant, "blur weights sum to " + std::to_string(sum) + ", not 1");
   }
   return {};
 }
@@ -67,6 +99,8 @@ Status check_variant(const Variant& variant) {
       return check_traversal(variant);
     case Technique::pcss_minmax:
       return check_disk(variant, variant.pcf_disk, "pcf", keys.pcf_samples, "pcf_samples");
+    case Technique::screen_blur:
+      return check_blur(variant);
   }
   return bad_variant(variant, "unknown technique");
 }

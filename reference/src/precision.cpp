@@ -15,6 +15,13 @@ double tolerance(Technique technique, const SamplingPrecision& precision) {
       // Point samples give exactly 0 or 1; the GPU can only differ by reading
       // another texel, and those pixels are marked ambiguous and skipped.
       return kFloatSlack;
+    case Technique::screen_blur:
+      // The factor: a mean of 9 such point samples, n / 9 for an integer n,
+      // as exact as hard's once an ambiguous sample marks the pixel; float
+      // rounding of n / 9 is far below the slack. (The blur and composite
+      // are checked against the CPU chain run on the GPU's own images:
+      // docs/verification.md, "screen_blur".)
+      return kFloatSlack;
     case Technique::minmax_pcf:
       // An integer count of point compares, 1 - C / K^2 in float: bit-exact.
       return 0.0;

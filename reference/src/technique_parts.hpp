@@ -1,5 +1,5 @@
 // The per-technique references that evaluate() (techniques.cpp) dispatches
-// to, each in its own file, and the PCF step several of them share.
+// to, each in its own file, and the point and PCF steps several of them share.
 #pragma once
 
 #include <vector>
@@ -12,6 +12,12 @@
 
 namespace penumbra::reference::detail {
 
+// One point sample at (u, v): the nearest texel compared against z_ref, 1 lit
+// or 0, ambiguous when a texel within the point window across a texel
+// boundary compares differently (hard, and each of screen_blur's 9 compares).
+Sample point_compare(const ShadowMapView& map, double u, double v, double z_ref,
+                     const SamplingPrecision& precision);
+
 // The mean of bilinear comparisons at uv + d * radius over the disk's points
 // (pcf_poisson, and step 3 of pcss and pcss_minmax).
 double poisson_pcf(const ShadowMapView& map, const Query& q, double z_ref,
@@ -21,6 +27,11 @@ Sample minmax_pcf(const ShadowMapView& map, const LightParams& light, const Quer
 
 Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                       const Query& q);
+
+// screen_blur's factor: the mean of 9 point_compare()s at (u + i / W,
+// v + j / H), i, j in -1..1, ambiguous when any of them is.
+Sample screen_blur_factor(const ShadowMapView& map, const Query& q, double z_ref,
+                          const SamplingPrecision& precision);
 
 Sample pcss_minmax(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                    const Query& q, const Disk& pcf_disk, const SamplingPrecision& precision);

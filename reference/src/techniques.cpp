@@ -1,7 +1,8 @@
 // The techniques of contract section 2, each a direct reading of its row:
-// the first four here, the min-max mip ones in their own files
-// (technique_parts.hpp). Every comparison uses z_r - bias; geometry (search
-// width, penumbra, filter radius) uses the unbiased z_r, as in the whitepaper.
+// the first four here, the min-max mip ones and screen_blur's factor in
+// their own files (technique_parts.hpp). Every comparison uses z_r - bias;
+// geometry (search width, penumbra, filter radius) uses the unbiased z_r, as
+// in the whitepaper.
 #include "penumbra/reference/techniques.hpp"
 
 #include <optional>
@@ -10,16 +11,20 @@
 #include "technique_parts.hpp"
 
 namespace penumbra::reference {
-namespace {
+namespace detail {
 
-using detail::poisson_pcf;
-
-Sample hard(const ShadowMapView& map, const Query& q, double z_ref,
-            const SamplingPrecision& precision) {
-  const TexelCandidates texels = candidate_texels(map, q.u, q.v, precision.point_window());
+Sample point_compare(const ShadowMapView& map, double u, double v, double z_ref,
+                     const SamplingPrecision& precision) {
+  const TexelCandidates texels = candidate_texels(map, u, v, precision.point_window());
   auto lit_at = [&](Texel t) { return lit(z_ref, map.depth(t.i, t.j)); };
   return {lit_at(texels.texels[0]) ? 1.0 : 0.0, varies(texels, lit_at)};
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::poisson_pcf;
 
 double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kernel) {
   const int half = (kernel - 1) / 2;
@@ -74,7 +79,7 @@ Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMi
   const double z_ref = query.z - light.bias;
   switch (variant.technique) {
     case Technique::hard:
-      return hard(map, query, z_ref, precision);
+      return detail::point_compare(map, query.u, query.v, z_ref, precision);
     case Technique::pcf_grid:
       return {pcf_grid(map, query, z_ref, variant.keys.kernel.value()), false};
     case Technique::pcf_poisson:
@@ -90,6 +95,8 @@ Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMi
       return detail::backprojection(map, *mip, light, query);
     case Technique::pcss_minmax:
       return detail::pcss_minmax(map, *mip, light, query, variant.pcf_disk.value(), precision);
+    case Technique::screen_blur:
+      return detail::screen_blur_factor(map, query, z_ref, precision);
   }
   return {};
 }

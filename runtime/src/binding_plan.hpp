@@ -24,6 +24,8 @@ inline constexpr std::string_view kShadowCmp = "shadow_cmp";
 inline constexpr std::string_view kReceivers = "receivers";
 inline constexpr std::string_view kShadowMinmax = "shadow_minmax";
 inline constexpr std::string_view kMinmaxSource = "minmax_source";
+inline constexpr std::string_view kScreenFactor = "screen_factor";
+inline constexpr std::string_view kSceneColour = "scene_colour";
 // glslang's global uniform blocks, holding ShadowParams' members when the
 // source declares them outside a block: GLSL's loose uniforms under Vulkan's
 // relaxed rules (glslang's default name, or the one compile_target_text
@@ -39,6 +41,8 @@ enum class BindingRole {
   receivers,       // receivers: the RGBA32F receivers image, nearest sampler
   minmax_mip,      // shadow_minmax: the map's RG32F min-max mip, every level, nearest sampler
   minmax_source,   // minmax_source: the RG32F level a minmax_reduce pass reads, nearest
+  screen_factor,   // screen_factor: the RG32F factor a screen_blur pass reads, nearest
+  scene_colour,    // scene_colour: the RGBA32F colour the composite pass reads, nearest
 };
 
 // A uniform block as every stage declaring it at one binding does: the

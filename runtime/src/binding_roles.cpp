@@ -8,8 +8,8 @@
 namespace penumbra::detail {
 namespace {
 
-constexpr std::string_view kImages[] = {kShadowDepth, kShadowCmp, kReceivers, kShadowMinmax,
-                                        kMinmaxSource};
+constexpr std::string_view kImages[] = {kShadowDepth,  kShadowCmp,    kReceivers,  kShadowMinmax,
+                                        kMinmaxSource, kScreenFactor, kSceneColour};
 
 const char* stage_name(const ShaderInterface& iface) {
   return iface.stage == ShaderStage::vertex ? "vertex" : "fragment";
@@ -33,6 +33,8 @@ BindingRole image_role(std::string_view image, bool has_comparison) {
   if (image == kReceivers) return BindingRole::receivers;
   if (image == kShadowMinmax) return BindingRole::minmax_mip;
   if (image == kMinmaxSource) return BindingRole::minmax_source;
+  if (image == kScreenFactor) return BindingRole::screen_factor;
+  if (image == kSceneColour) return BindingRole::scene_colour;
   return has_comparison ? BindingRole::map_depth : BindingRole::map_colour;
 }
 

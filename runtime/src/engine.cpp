@@ -7,6 +7,7 @@
 #include "depth_pass.hpp"
 #include "minmax_build.hpp"
 #include "query_pass.hpp"
+#include "screen_blur_chain.hpp"
 #include "shadow_map_images.hpp"
 #include "shadow_map_transfer.hpp"
 
@@ -85,6 +86,17 @@ Result<QueryOutput> Engine::run_query_output(const PassProgram& query, const Sha
   return detail::run_validated(*context_->validation, [&]() -> Result<QueryOutput> {
     PENUMBRA_TRY(check_owner(*map.images_, *context_));
     return detail::run_query(*context_, query, *map.images_, receivers, params);
+  });
+}
+
+Result<ScreenBlurOutput> Engine::run_screen_blur(const ScreenBlurPrograms& programs,
+                                                 const ShadowMap& map, const FloatImage& receivers,
+                                                 const FloatImage& scene_colour,
+                                                 const ParamBlock& params) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<ScreenBlurOutput> {
+    PENUMBRA_TRY(check_owner(*map.images_, *context_));
+    return detail::run_screen_blur(*context_, programs, *map.images_, receivers, scene_colour,
+                                   params);
   });
 }
 

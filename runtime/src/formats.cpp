@@ -38,14 +38,18 @@ constexpr Requirement kRequirements[] = {
     {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
      "the query pass and the min-max mip build"},
     {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",
-     "shadow_minmax and minmax_source"},
+     "shadow_minmax, minmax_source and screen_factor"},
     {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
      "visibility and min-max readbacks, min-max level copies"},
     {kMinmaxFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
      "min-max level copies"},
     {kReceiversFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE", "receivers"},
     {kReceiversFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
-     "receiver uploads"},
+     "receiver and scene colour uploads"},
+    {kCompositeFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
+     "the screen_blur composite pass"},
+    {kCompositeFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
+     "composite readbacks"},
     {kDepthPositionFormat, true, VK_FORMAT_FEATURE_2_VERTEX_BUFFER_BIT, "VERTEX_BUFFER",
      "depth pass positions"},
     {kQueryPositionFormat, true, VK_FORMAT_FEATURE_2_VERTEX_BUFFER_BIT, "VERTEX_BUFFER",
@@ -82,7 +86,10 @@ FormatFeatures features_of(const vk::Device& device, VkFormat format) {
 }  // namespace
 
 Status check_format_support(const vk::Device& device) {
-  static_assert(kVisibilityFormat == kMinmaxFormat, "one RG32F requirement list serves both");
+  static_assert(kVisibilityFormat == kMinmaxFormat && kScreenFactorFormat == kMinmaxFormat,
+                "one RG32F requirement list serves the query, min-max and blur targets");
+  static_assert(kSceneColourFormat == kReceiversFormat && kCompositeFormat == kReceiversFormat,
+                "one RGBA32F requirement list serves receivers, scene colour and composite");
   for (const Requirement& requirement : kRequirements) {
     const FormatFeatures features = features_of(device, requirement.format);
     const VkFormatFeatureFlags2 supported =

@@ -19,6 +19,11 @@ inline constexpr VkFormat kReceiversFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 inline constexpr VkFormat kVisibilityFormat = VK_FORMAT_R32G32_SFLOAT;
 // The min-max mip's levels: (min, max) of normalized depth.
 inline constexpr VkFormat kMinmaxFormat = VK_FORMAT_R32G32_SFLOAT;
+// The screen_blur chain: the factor and blur targets (factor, texel reads or
+// 0), read by the next pass as screen_factor; scene_colour in; the composite out.
+inline constexpr VkFormat kScreenFactorFormat = VK_FORMAT_R32G32_SFLOAT;
+inline constexpr VkFormat kSceneColourFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+inline constexpr VkFormat kCompositeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 // Vertex positions: light-view xyz (depth pass), clip-space xy (query pass).
 inline constexpr VkFormat kDepthPositionFormat = VK_FORMAT_R32G32B32_SFLOAT;
 inline constexpr VkFormat kQueryPositionFormat = VK_FORMAT_R32G32_SFLOAT;
@@ -29,9 +34,11 @@ struct ColourTarget {
   std::string_view format;
   std::uint32_t components = 0;
 };
-inline constexpr ColourTarget kMapColourTarget{"R32_SFLOAT", 1};      // kMapColourFormat
-inline constexpr ColourTarget kVisibilityTarget{"R32G32_SFLOAT", 2};  // kVisibilityFormat
-inline constexpr ColourTarget kMinmaxTarget{"R32G32_SFLOAT", 2};      // kMinmaxFormat
+inline constexpr ColourTarget kMapColourTarget{"R32_SFLOAT", 1};           // kMapColourFormat
+inline constexpr ColourTarget kVisibilityTarget{"R32G32_SFLOAT", 2};       // kVisibilityFormat
+inline constexpr ColourTarget kMinmaxTarget{"R32G32_SFLOAT", 2};           // kMinmaxFormat
+inline constexpr ColourTarget kScreenFactorTarget{"R32G32_SFLOAT", 2};     // kScreenFactorFormat
+inline constexpr ColourTarget kCompositeTarget{"R32G32B32A32_SFLOAT", 4};  // kCompositeFormat
 
 // An Error naming the first format and feature the device lacks.
 Status check_format_support(const vk::Device& device);

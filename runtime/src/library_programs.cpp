@@ -92,6 +92,20 @@ Result<ExecutableProgram> load_executable(const Library& library, const LibraryV
   return out;
 }
 
+Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
+                                               const LibraryVariant& variant, Target target) {
+  auto query = load_executable(library, variant, PassKind::query, target);
+  if (!query) return query.error();
+  auto blur_h = load_executable(library, variant, PassKind::blur_h, target);
+  if (!blur_h) return blur_h.error();
+  auto blur_v = load_executable(library, variant, PassKind::blur_v, target);
+  if (!blur_v) return blur_v.error();
+  auto composite = load_executable(library, variant, PassKind::composite, target);
+  if (!composite) return composite.error();
+  return ScreenBlurExecutables{std::move(*query), std::move(*blur_h), std::move(*blur_v),
+                               std::move(*composite)};
+}
+
 float depth_scale_for(double max_z) {
   const int exponent = max_z > 1.0 ? static_cast<int>(std::ceil(std::log2(max_z))) : 0;
   return std::ldexp(1.0f, -exponent);

@@ -57,6 +57,12 @@ RoleImage role_image(const Context& context, const PassResources& resources, Bin
     case BindingRole::minmax_source:
       return {resources.minmax_source->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
               context.nearest.get()};
+    case BindingRole::screen_factor:
+      return {resources.screen_factor->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+              context.nearest.get()};
+    case BindingRole::scene_colour:
+      return {resources.scene_colour->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+              context.nearest.get()};
     case BindingRole::params:
       break;
   }
@@ -89,6 +95,8 @@ std::vector<std::string_view> PassResources::available() const {
   if (receivers) names.push_back(kReceivers);
   if (minmax_mip) names.push_back(kShadowMinmax);
   if (minmax_source) names.push_back(kMinmaxSource);
+  if (screen_factor) names.push_back(kScreenFactor);
+  if (scene_colour) names.push_back(kSceneColour);
   return names;
 }
 

@@ -25,6 +25,8 @@ struct PassResources {
   const vk::Image* receivers = nullptr;      // in SHADER_READ_ONLY_OPTIMAL
   const vk::Image* minmax_mip = nullptr;     // shadow_minmax, in kMinmaxLayout
   const vk::Image* minmax_source = nullptr;  // in SHADER_READ_ONLY_OPTIMAL
+  const vk::Image* screen_factor = nullptr;  // in SHADER_READ_ONLY_OPTIMAL
+  const vk::Image* scene_colour = nullptr;   // in SHADER_READ_ONLY_OPTIMAL
 
   // The interface names these resources serve, for plan_bindings().
   std::vector<std::string_view> available() const;

@@ -1,6 +1,7 @@
 #include "query_pass.hpp"
 
 #include <string>
+#include <utility>
 
 #include "binding_roles.hpp"
 #include "formats.hpp"
@@ -10,6 +11,22 @@
 #include "penumbra/support/image_checks.hpp"
 
 namespace penumbra::detail {
+
+Result<vk::Image> upload_receivers(Context& context, const FloatImage& receivers) {
+  PENUMBRA_TRY(check_receivers(receivers));
+  PENUMBRA_TRY(context.check_extent(receivers.width, receivers.height, "receivers"));
+  auto image = vk::Image::create(
+      *context.device,
+      {static_cast<std::uint32_t>(receivers.width), static_cast<std::uint32_t>(receivers.height),
+       kReceiversFormat, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+       VK_IMAGE_ASPECT_COLOR_BIT},
+      "the receivers image");
+  if (!image) return image.error();
+  PENUMBRA_TRY(upload_image(*context.device, *context.commands, *image,
+                            receivers_to_rgba(receivers), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                            "the receivers image"));
+  return std::move(*image);
+}
 
 Result<QueryOutput> run_query(Context& context, const PassProgram& program,
                               const ShadowMapImages& map, const FloatImage& receivers,
@@ -23,20 +40,10 @@ Result<QueryOutput> run_query(Context& context, const PassProgram& program,
                           " map has none; build it first (Engine::build_minmax with the "
                           "variant's minmax_init and minmax_reduce passes)");
   }
-  PENUMBRA_TRY(check_receivers(receivers));
-  PENUMBRA_TRY(context.check_extent(receivers.width, receivers.height, "receivers"));
+  auto receivers_image = upload_receivers(context, receivers);
+  if (!receivers_image) return receivers_image.error();
   const auto width = static_cast<std::uint32_t>(receivers.width);
   const auto height = static_cast<std::uint32_t>(receivers.height);
-
-  auto receivers_image = vk::Image::create(
-      *context.device,
-      {width, height, kReceiversFormat,
-       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
-      "the receivers image");
-  if (!receivers_image) return receivers_image.error();
-  PENUMBRA_TRY(upload_image(*context.device, *context.commands, *receivers_image,
-                            receivers_to_rgba(receivers), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                            "the receivers image"));
   auto visibility =
       vk::Image::create(*context.device,
                         {width, height, kVisibilityFormat,

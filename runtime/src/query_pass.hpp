@@ -5,8 +5,13 @@
 #include "context.hpp"
 #include "penumbra/runtime/engine.hpp"
 #include "shadow_map_images.hpp"
+#include "vk/image.hpp"
 
 namespace penumbra::detail {
+
+// `receivers` checked (channels, size) and uploaded as the RGBA32F receivers
+// image, in SHADER_READ_ONLY_OPTIMAL.
+Result<vk::Image> upload_receivers(Context& context, const FloatImage& receivers);
 
 // See Engine::run_query_output.
 Result<QueryOutput> run_query(Context& context, const PassProgram& program,

@@ -15,6 +15,8 @@
 #include "techniques/backprojection.glsl"
 #elif defined(PENUMBRA_TECHNIQUE_PCSS_MINMAX)
 #include "techniques/pcss_minmax.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_SCREEN_BLUR)
+#include "techniques/screen_blur.glsl"
 #else
 #error "no PENUMBRA_TECHNIQUE_* defined"
 #endif

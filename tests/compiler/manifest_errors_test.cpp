@@ -55,14 +55,15 @@ TEST(ManifestErrors, UnknownTopLevelKey) {
 TEST(ManifestErrors, UnknownKeyInASet) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
                    "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
-                   "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, target");
+                   "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, "
+                   "blur_radius, depth_aware, target");
 }
 
 TEST(ManifestErrors, UnknownTechnique) {
   expect_bad_input(manifest_error(with_set(R"({"technique": ["pcss", "vsm"]})")),
                    "perms.json: /sets/1/technique/1: unknown technique 'vsm'; allowed "
                    "techniques: hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, "
-                   "pcss_minmax");
+                   "pcss_minmax, screen_blur");
 }
 
 TEST(ManifestErrors, UnknownTarget) {
@@ -188,7 +189,8 @@ TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {
       "blocker_samples, pcf_samples, disk");
   expect_bad_input(manifest_error(with_set(R"({"kernel": 3})")),
                    "perms.json: /sets/1: missing key 'technique'; allowed techniques: hard, "
-                   "pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax");
+                   "pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
+                   "screen_blur");
 }
 
 TEST(ManifestErrors, KeyNoTechniqueUses) {
@@ -208,7 +210,8 @@ TEST(ManifestErrors, SetsAndExclusions) {
   expect_bad_input(
       manifest_error(R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{}]})"),
       "perms.json: /exclude/0: an exclusion needs at least one key; allowed keys: technique, "
-      "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, target");
+      "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, blur_radius, "
+      "depth_aware, target");
   expect_bad_input(
       manifest_error(
           R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 0}]})"),
@@ -218,6 +221,44 @@ TEST(ManifestErrors, SetsAndExclusions) {
       manifest_error(
           R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"max_nodes": 0}]})"),
       "perms.json: /exclude/0/max_nodes: max_nodes 0 is out of range; allowed 1..1048576");
+}
+
+TEST(ManifestErrors, BlurRadiusOutOfRange) {
+  const std::string allowed = " is out of range; allowed 1..32";
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "screen_blur", "blur_radius": [4, 0]})")),
+      "perms.json: /sets/1/blur_radius/1: blur_radius 0" + allowed);
+  expect_bad_input(manifest_error(with_set(R"({"technique": "screen_blur", "blur_radius": 33})")),
+                   "perms.json: /sets/1/blur_radius: blur_radius 33" + allowed);
+  expect_bad_input(manifest_error(with_set(R"({"technique": "screen_blur", "blur_radius": 2.5})")),
+                   "perms.json: /sets/1/blur_radius: expected an integer, got 2.5");
+  expect_bad_input(
+      manifest_error(
+          R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"blur_radius": 33}]})"),
+      "perms.json: /exclude/0/blur_radius: blur_radius 33" + allowed);
+}
+
+TEST(ManifestErrors, DepthAwareMustBeABool) {
+  expect_bad_input(manifest_error(with_set(
+                       R"({"technique": "screen_blur", "blur_radius": 4, "depth_aware": "yes"})")),
+                   "perms.json: /sets/1/depth_aware: expected true or false, got \"yes\"");
+  expect_bad_input(
+      manifest_error(
+          with_set(R"({"technique": "screen_blur", "blur_radius": 4, "depth_aware": [true, 1]})")),
+      "perms.json: /sets/1/depth_aware/1: expected true or false, got 1");
+}
+
+TEST(ManifestErrors, BlurKeysOnlyForScreenBlur) {
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": 3, "blur_radius": 4})")),
+      "perms.json: /sets/1/blur_radius: key 'blur_radius' is used by none of this set's "
+      "techniques");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "hard", "depth_aware": true})")),
+                   "perms.json: /sets/1/depth_aware: key 'depth_aware' is used by none of this "
+                   "set's techniques");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "screen_blur", "depth_aware": true})")),
+                   "perms.json: /sets/1: technique screen_blur needs key 'blur_radius'; "
+                   "screen_blur uses blur_radius, depth_aware (optional)");
 }
 
 TEST(ManifestErrors, MissingFile) {

@@ -73,6 +73,10 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "backprojection",
                                   "pcss_minmax_p16_poisson",
                                   "pcss_minmax_p32_poisson",
+                                  "screen_blur_r2",
+                                  "screen_blur_r4",
+                                  "screen_blur_r4_depth_aware",
+                                  "screen_blur_r8",
                               }));
   for (const Variant& variant : *variants) EXPECT_EQ(variant.targets, kEveryTarget) << variant.name;
 
@@ -86,6 +90,16 @@ TEST(ManifestExpand, DefaultLibrary) {
   EXPECT_FALSE(minmax->blocker_disk.has_value());
   EXPECT_EQ(minmax->pcf_disk->points,
             generate_disk({.count = 32, .seed = 1, .method = "sample_elimination"})->points);
+
+  const Variant* blur = find(*variants, "screen_blur_r4_depth_aware");
+  ASSERT_TRUE(blur);
+  EXPECT_EQ(blur->keys.blur_radius, 4);
+  EXPECT_EQ(blur->keys.depth_aware, true);
+  EXPECT_EQ(blur->blur_weights, gaussian_weights(4));
+  for (const Variant& variant : *variants) {
+    EXPECT_EQ(variant.blur_weights.empty(), variant.technique != Technique::screen_blur)
+        << variant.name;
+  }
 
   const Variant* generated = find(*variants, "pcss_b32_p64_poisson");
   ASSERT_TRUE(generated && generated->blocker_disk && generated->pcf_disk);
@@ -246,6 +260,40 @@ TEST(ManifestExpand, ExclusionsMatchTraversalAndMaxNodes) {
   EXPECT_EQ(variants[2].targets,
             (std::vector<Target>{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
                                  Target::hlsl_dx10}));
+}
+
+TEST(ManifestExpand, ScreenBlurKeysAndWeights) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": "screen_blur", "blur_radius": [8, 1], "depth_aware": [true, false]},
+             {"technique": "screen_blur", "blur_radius": 1}]})");
+  ASSERT_EQ(names(variants),
+            (std::vector<std::string>{"screen_blur_r1", "screen_blur_r1_depth_aware",
+                                      "screen_blur_r8", "screen_blur_r8_depth_aware"}));
+  // depth_aware false is the default: the key stays unset, so it merges with
+  // the set that leaves it out.
+  EXPECT_EQ(variants[0].keys.blur_radius, 1);
+  EXPECT_FALSE(variants[0].keys.depth_aware.has_value());
+  EXPECT_EQ(variants[1].keys.depth_aware, true);
+  EXPECT_EQ(variants[0].blur_weights, gaussian_weights(1));
+  EXPECT_EQ(variants[3].blur_weights, gaussian_weights(8));
+  EXPECT_EQ(variants[3].blur_weights.size(), 17u);
+}
+
+TEST(ManifestExpand, ExclusionsMatchBlurRadiusAndDepthAware) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": ["screen_blur", "hard"], "blur_radius": [2, 4],
+              "depth_aware": [false, true]}],
+    "exclude": [{"blur_radius": 2, "depth_aware": true},
+                {"depth_aware": false, "target": "hlsl_dx9"}]})");
+  ASSERT_EQ(names(variants), (std::vector<std::string>{"hard", "screen_blur_r2", "screen_blur_r4",
+                                                       "screen_blur_r4_depth_aware"}));
+  // A key the variant lacks never matches: hard keeps every target.
+  EXPECT_EQ(variants[0].targets, kEveryTarget);
+  const std::vector<Target> no_dx9{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
+                                   Target::hlsl_dx10};
+  EXPECT_EQ(variants[1].targets, no_dx9);
+  EXPECT_EQ(variants[2].targets, no_dx9);
+  EXPECT_EQ(variants[3].targets, kEveryTarget);
 }
 
 TEST(ManifestExpand, LoadedManifestNamesItsFile) {

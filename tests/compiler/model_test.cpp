@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 namespace penumbra {
 namespace {
 
@@ -25,7 +28,8 @@ TEST(Model, TargetNamesRoundTrip) {
 
 TEST(Model, AllowedListsNameEveryValueInOrder) {
   EXPECT_EQ(allowed_techniques(),
-            "hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax");
+            "hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
+            "screen_blur");
   EXPECT_EQ(allowed_targets(), "spirv, glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9");
 }
 
@@ -57,6 +61,40 @@ TEST(Model, VariantNames) {
   EXPECT_EQ(
       variant_name(Technique::backprojection, keys([](VariantKeys& k) { k.max_nodes = 4096; })),
       "backprojection_n4096");
+  EXPECT_EQ(variant_name(Technique::screen_blur, keys([](VariantKeys& k) { k.blur_radius = 4; })),
+            "screen_blur_r4");
+  EXPECT_EQ(variant_name(Technique::screen_blur, keys([](VariantKeys& k) {
+                           k.blur_radius = 16;
+                           k.depth_aware = true;
+                         })),
+            "screen_blur_r16_depth_aware");
+}
+
+TEST(Model, GaussianWeightsAreNormalizedSymmetricAndPeaked) {
+  for (int radius = 1; radius <= kMaxBlurRadius; ++radius) {
+    const std::vector<float> w = gaussian_weights(radius);
+    ASSERT_EQ(w.size(), static_cast<std::size_t>(2 * radius + 1)) << radius;
+    double sum = 0.0;
+    for (float x : w) sum += x;
+    EXPECT_NEAR(sum, 1.0, 1e-6) << radius;
+    for (int k = 1; k <= radius; ++k) {
+      const auto at = [&](int tap) { return w[static_cast<std::size_t>(tap + radius)]; };
+      EXPECT_EQ(at(k), at(-k)) << radius << " tap " << k;
+      EXPECT_LT(at(k), at(k - 1)) << radius << " tap " << k;
+      EXPECT_GT(at(k), 0.0f) << radius << " tap " << k;
+    }
+  }
+}
+
+TEST(Model, GaussianWeightsFollowSigmaHalfTheRadius) {
+  // R = 2: sigma = 1, weights exp(-k^2 / 2) / sum for k = -2..2.
+  const double e1 = std::exp(-0.5);
+  const double e2 = std::exp(-2.0);
+  const double sum = 1.0 + 2.0 * e1 + 2.0 * e2;
+  EXPECT_EQ(gaussian_weights(2),
+            (std::vector<float>{static_cast<float>(e2 / sum), static_cast<float>(e1 / sum),
+                                static_cast<float>(1.0 / sum), static_cast<float>(e1 / sum),
+                                static_cast<float>(e2 / sum)}));
 }
 
 }  // namespace

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "glsl/variant_header.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
@@ -51,6 +53,10 @@ Variant make_variant(Technique technique) {
       v.keys.pcf_samples = 16;
       v.keys.disk = "whitepaper16";
       v.pcf_disk = whitepaper16();
+      break;
+    case Technique::screen_blur:
+      v.keys.blur_radius = 4;
+      v.blur_weights = gaussian_weights(4);
       break;
   }
   v.name = variant_name(technique, v.keys);
@@ -103,7 +109,8 @@ TEST_P(EveryTechniqueAndTarget, QueryPassCompilesWithTheSharedInterface) {
   // Only hlsl_dx9 makes its compares in the shader; hard, minmax_pcf and
   // backprojection make no bilinear compare.
   const bool bilinear = technique != Technique::hard && technique != Technique::minmax_pcf &&
-                        technique != Technique::backprojection;
+                        technique != Technique::backprojection &&
+                        technique != Technique::screen_blur;
   EXPECT_EQ(has_cmp, target != Target::hlsl_dx9 && bilinear);
   EXPECT_EQ(has_minmax, uses_minmax_mip(technique));
   // visibility (.x) and the texels read (.y).
@@ -193,7 +200,96 @@ TEST(MinmaxPasses, OnlyForTechniquesThatReadTheMip) {
   ASSERT_FALSE(pass.ok());
   EXPECT_EQ(pass.error().to_string(),
             "variant pcss_b16_p16_whitepaper16: has no minmax_reduce pass (technique pcss does "
-            "not read the min-max mip)");
+            "not use it)");
+}
+
+Variant depth_aware_blur() {
+  Variant v = make_variant(Technique::screen_blur);
+  v.keys.depth_aware = true;
+  v.name = variant_name(v.technique, v.keys);
+  return v;
+}
+
+class ScreenBlurPasses : public ::testing::TestWithParam<Target> {};
+
+TEST_P(ScreenBlurPasses, CompileForEveryTargetWithTheirImagesAndOutputs) {
+  const Target target = GetParam();
+  for (const Variant& variant : {make_variant(Technique::screen_blur), depth_aware_blur()}) {
+    const bool aware = variant.keys.depth_aware.value_or(false);
+    for (PassKind kind : {PassKind::blur_h, PassKind::blur_v}) {
+      auto pass = compile_pass(variant, target, kind);
+      ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+      const ShaderInterface& frag = pass->frag.interface;
+      EXPECT_TRUE(binds_image(frag, "screen_factor", 6u)) << variant.name;
+      EXPECT_EQ(binds_image(frag, "receivers", 3u), aware) << variant.name;
+      EXPECT_FALSE(binds_image(frag, "shadow_depth", 1u)) << variant.name;
+      ASSERT_EQ(frag.outputs.size(), 1u);
+      EXPECT_EQ(frag.outputs[0].name, "blurred");
+      ASSERT_EQ(frag.uniform_blocks.size(), 1u);
+      EXPECT_EQ(frag.uniform_blocks[0].type_name, "ShadowParams");
+    }
+  }
+  auto composite = compile_pass(make_variant(Technique::screen_blur), target, PassKind::composite);
+  ASSERT_TRUE(composite.ok()) << composite.error().to_string();
+  const ShaderInterface& frag = composite->frag.interface;
+  EXPECT_TRUE(binds_image(frag, "screen_factor", 6u));
+  EXPECT_TRUE(binds_image(frag, "scene_colour", 7u));
+  EXPECT_EQ(frag.sampled_images.size(), 2u);
+  ASSERT_EQ(frag.outputs.size(), 1u);
+  EXPECT_EQ(frag.outputs[0].name, "colour");
+  ASSERT_EQ(composite->vert.interface.outputs.size(), 1u);
+  EXPECT_EQ(composite->vert.interface.outputs[0].name, "screen_uv");
+  // The factor pass makes nine point compares: no comparison sampler anywhere.
+  auto query = compile_pass(make_variant(Technique::screen_blur), target, PassKind::query);
+  ASSERT_TRUE(query.ok()) << query.error().to_string();
+  EXPECT_FALSE(binds_image(query->frag.interface, "shadow_cmp", 2u));
+  EXPECT_TRUE(binds_image(query->frag.interface, "receivers", 3u));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, ScreenBlurPasses, ::testing::ValuesIn(kAllTargets),
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
+
+TEST(ScreenBlurPasses, OnlyForScreenBlur) {
+  for (PassKind kind : {PassKind::blur_h, PassKind::blur_v, PassKind::composite}) {
+    auto pass = compile_pass(make_variant(Technique::hard), Target::spirv, kind);
+    ASSERT_FALSE(pass.ok());
+    EXPECT_EQ(pass.error().to_string(), "variant hard: has no " + std::string(to_string(kind)) +
+                                            " pass (technique hard does not use it)");
+  }
+  for (PassKind kind : {PassKind::minmax_init, PassKind::minmax_reduce}) {
+    EXPECT_FALSE(compile_pass(make_variant(Technique::screen_blur), Target::spirv, kind).ok());
+  }
+}
+
+TEST(ScreenBlurPasses, HeaderBakesRadiusWeightsAndDepthRule) {
+  const Variant blur = make_variant(Technique::screen_blur);
+  const std::string header = variant_header(&blur, Target::hlsl_dx9);
+  EXPECT_THAT(header, HasSubstr("#define PENUMBRA_TECHNIQUE_SCREEN_BLUR 1\n"));
+  EXPECT_THAT(header, HasSubstr("#define BLUR_RADIUS 4\n"));
+  EXPECT_THAT(header, HasSubstr("#define PENUMBRA_DEPTH_AWARE 0\n"));
+  EXPECT_THAT(header, HasSubstr("#define BLUR_DEPTH_TOLERANCE 0.02\n"));
+  std::string weights = "const float BLUR_WEIGHTS[9] = float[](";
+  for (std::size_t i = 0; i < blur.blur_weights.size(); ++i) {
+    weights += (i == 0 ? "\n  " : ",\n  ") + glsl_float(blur.blur_weights[i]);
+  }
+  EXPECT_THAT(header, HasSubstr(weights + ");\n"));
+  EXPECT_THAT(variant_header(&blur, Target::spirv), HasSubstr("#define BLUR_RADIUS 4\n"));
+  const Variant aware = depth_aware_blur();
+  EXPECT_THAT(variant_header(&aware, Target::glsl330),
+              HasSubstr("#define PENUMBRA_DEPTH_AWARE 1\n"));
+  // Other techniques get none of it.
+  const Variant grid = make_variant(Technique::pcf_grid);
+  EXPECT_THAT(variant_header(&grid, Target::spirv), Not(HasSubstr("BLUR_")));
+}
+
+TEST(ScreenBlurPasses, TapsLoopOverTheBakedWeights) {
+  auto pass = compile_pass(depth_aware_blur(), Target::glsl450, PassKind::blur_h);
+  ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+  EXPECT_THAT(pass->frag.text, HasSubstr("BLUR_WEIGHTS"));
+  EXPECT_THAT(pass->frag.text, HasSubstr("blur_factor"));
+  EXPECT_THAT(pass->frag.text, Not(HasSubstr("gl_FragCoord")));
 }
 
 TEST(TargetText, Dx9UsesRegistersPointReadsAndNoComparisonSampler) {
@@ -383,6 +479,63 @@ TEST(BuildLibrary, MinmaxPassesOnlyForTheVariantsThatUseThem) {
   EXPECT_THAT(slurp(dir.path / "out" / "glsl450" / "common" / "minmax_init.vert"),
               HasSubstr("Shared by every variant that reads the min-max mip; target glsl450; "
                         "minmax_init pass, vertex stage"));
+}
+
+TEST(BuildLibrary, ScreenBlurPassesAndWeightsInTheIndex) {
+  TempDir dir("blur");
+  const std::vector<Variant> variants = {make_variant(Technique::hard),
+                                         make_variant(Technique::screen_blur), depth_aware_blur()};
+  ASSERT_TRUE(build_library(variants, dir.path / "out", {.jobs = 2}, ignore_diagnostics()).ok());
+  auto library = load_library(dir.path / "out");
+  ASSERT_TRUE(library.ok()) << library.error().to_string();
+  const LibraryVariant* hard = library->find("hard");
+  const LibraryVariant* blur = library->find("screen_blur_r4");
+  const LibraryVariant* aware = library->find("screen_blur_r4_depth_aware");
+  ASSERT_TRUE(hard && blur && aware);
+  for (PassKind kind : {PassKind::blur_h, PassKind::blur_v, PassKind::composite}) {
+    EXPECT_FALSE(hard->passes.contains(kind));
+    EXPECT_TRUE(blur->passes.contains(kind));
+  }
+  for (PassKind kind : {PassKind::minmax_init, PassKind::minmax_reduce}) {
+    EXPECT_FALSE(blur->passes.contains(kind));
+  }
+  EXPECT_EQ(blur->passes.at(PassKind::blur_h).at(Target::hlsl_dx9).frag,
+            "hlsl_dx9/screen_blur_r4/blur_h.frag.hlsl");
+  EXPECT_EQ(aware->passes.at(PassKind::blur_v).at(Target::spirv).frag,
+            "spirv/screen_blur_r4_depth_aware/blur_v.frag.spv");
+  EXPECT_EQ(blur->passes.at(PassKind::blur_v).at(Target::glsl330).vert,
+            "glsl330/common/blur_v.vert");
+  EXPECT_EQ(aware->passes.at(PassKind::composite).at(Target::essl300).frag,
+            "essl300/common/composite.frag");
+  EXPECT_EQ(aware->passes.at(PassKind::query).at(Target::spirv).frag,
+            "spirv/screen_blur_r4_depth_aware/query.frag.spv");
+  // Keys and weights come back exactly; the bool key too.
+  EXPECT_EQ(blur->variant.keys.blur_radius, 4);
+  EXPECT_FALSE(blur->variant.keys.depth_aware.has_value());
+  EXPECT_EQ(aware->variant.keys.depth_aware, true);
+  EXPECT_EQ(blur->variant.blur_weights, gaussian_weights(4));
+  EXPECT_EQ(aware->variant.blur_weights, gaussian_weights(4));
+  EXPECT_TRUE(hard->variant.blur_weights.empty());
+  const auto index = nlohmann::json::parse(slurp(dir.path / "out" / "index.json"));
+  for (const auto& entry : index.at("variants")) {
+    const bool blurs = entry.at("technique") == "screen_blur";
+    EXPECT_EQ(entry.contains("blur_weights"), blurs) << entry.at("name");
+    EXPECT_EQ(entry.at("passes").contains("composite"), blurs) << entry.at("name");
+  }
+  EXPECT_EQ(index.at("variants").at(2).at("keys").at("depth_aware"), true);
+  EXPECT_EQ(index.at("variants").at(2).at("blur_weights").size(), 9u);
+  EXPECT_THAT(slurp(dir.path / "out" / "glsl450" / "common" / "composite.frag"),
+              HasSubstr("Shared by every screen_blur variant; target glsl450; composite pass"));
+}
+
+TEST(BuildLibrary, NoScreenBlurPassesWithoutAScreenBlurVariant) {
+  TempDir dir("no-blur");
+  const Variant hard = make_variant(Technique::hard);
+  ASSERT_TRUE(build_library(std::span(&hard, 1), dir.path / "out", {}, ignore_diagnostics()).ok());
+  for (const char* file : {"composite.frag.spv", "blur_h.vert.spv", "blur_v.vert.spv"}) {
+    EXPECT_FALSE(std::filesystem::exists(dir.path / "out" / "spirv" / "common" / file)) << file;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path / "out" / "spirv" / "hard" / "blur_h.frag.spv"));
 }
 
 TEST(BuildLibrary, NoMinmaxPassesWithoutAVariantThatUsesThem) {

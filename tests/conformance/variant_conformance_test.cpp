@@ -45,6 +45,10 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
     const std::string label = std::string(to_string(run.target)) + " on " + run.backend;
     if (!run.executed) {
       EXPECT_EQ(run.backend, "gl") << label << " must run: " << run.not_executed;
+      // The blur chain runs on Vulkan only.
+      if (technique == Technique::screen_blur) {
+        EXPECT_EQ(run.not_executed, kGlNoScreenBlur) << label;
+      }
       continue;
     }
     ASSERT_TRUE(run.error.empty()) << label << ": " << run.error;
@@ -63,6 +67,22 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
       // so anything larger there is a real error (a 1% radius error is ~8e-3).
       if (run.device.find("llvmpipe") != std::string::npos) {
         EXPECT_LT(c.max_abs_error, 1e-4) << label << " on " << scene.scene;
+      }
+      // screen_blur's chain, checked step by step on the GPU's own images:
+      // the blur of its factor and the composite of its blurred factor.
+      if (technique == Technique::screen_blur) {
+        ASSERT_TRUE(scene.blur && scene.composite) << label << " on " << scene.scene;
+        EXPECT_TRUE(scene.blur->pass)
+            << label << " on " << scene.scene << ": blur max error " << scene.blur->max_abs_error
+            << ", " << scene.blur->over_tolerance << " values over";
+        EXPECT_TRUE(scene.composite->pass)
+            << label << " on " << scene.scene << ": composite max error "
+            << scene.composite->max_abs_error << ", " << scene.composite->over_tolerance
+            << " values over";
+        EXPECT_EQ(scene.blur->values, static_cast<std::size_t>(c.pixels)) << label;
+        EXPECT_EQ(scene.composite->values, 4 * static_cast<std::size_t>(c.pixels)) << label;
+      } else {
+        EXPECT_FALSE(scene.blur || scene.composite) << label;
       }
       // A count of point compares, 1 - C / K^2 in float: bit-exact everywhere.
       if (technique == Technique::minmax_pcf) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "build/pass_plan.hpp"
 #include "penumbra/compiler/manifest.hpp"
 
 namespace penumbra::testing {
@@ -30,8 +31,7 @@ const Variant* find_default_variant(const std::string& name) {
 std::vector<EmittedStage> emitted_stages(const Variant& variant, Target target) {
   std::vector<EmittedStage> out;
   for (PassKind pass : kAllPassKinds) {
-    const bool minmax = pass == PassKind::minmax_init || pass == PassKind::minmax_reduce;
-    if (minmax && !uses_minmax_mip(variant.technique)) continue;
+    if (!runs_pass(pass, variant)) continue;
     auto compiled = compile_pass(variant, target, pass);
     EXPECT_TRUE(compiled.ok()) << compiled.error().to_string();
     if (!compiled) continue;

@@ -99,7 +99,7 @@ std::vector<SpirvVariable> check_stage(Target target, const EmittedStage& emitte
   }
   if (emitted.stage == ShaderStage::fragment) {
     const auto outputs = locations(vars, kStorageOutput);
-    EXPECT_EQ(outputs.size(), 1u);  // depth_out, minmax or visibility, render target 0
+    EXPECT_EQ(outputs.size(), 1u);  // depth_out, minmax, visibility, blurred or colour: target 0
     for (const auto& [name, location] : outputs) EXPECT_EQ(location, 0u) << name;
     if (emitted.pass == PassKind::depth) {
       EXPECT_THAT(builtins, Contains(kBuiltInFragDepth));
@@ -131,7 +131,10 @@ TEST_P(FrontEndVariant, EveryTextTargetCompilesToVulkanSpirvWithItsInterface) {
       EXPECT_EQ(locations(vertex, kStorageOutput), locations(vars, kStorageInput));
     }
   }
-  const int passes = uses_minmax_mip(variant->technique) ? 4 : 2;
+  // depth and query; the two min-max build passes or screen_blur's three.
+  const int passes = uses_minmax_mip(variant->technique)            ? 4
+                     : variant->technique == Technique::screen_blur ? 5
+                                                                    : 2;
   EXPECT_EQ(compiled, 5 * passes * 2);  // targets, passes, stages
 }
 

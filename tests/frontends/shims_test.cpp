@@ -46,7 +46,11 @@ TEST(EsslVersionShim, LeavesGlslangsAstOfEveryEmittedTextUnchanged) {
   int checked = 0;
   int expected = 0;
   for (const Variant& variant : default_variants()) {
-    expected += uses_minmax_mip(variant.technique) ? 8 : 4;  // stages of its passes
+    // Two stages of each pass: depth and query, and the min-max build passes
+    // or screen_blur's blur_h, blur_v and composite.
+    expected += uses_minmax_mip(variant.technique)            ? 8
+                : variant.technique == Technique::screen_blur ? 10
+                                                              : 4;
     for (const EmittedStage& emitted : emitted_stages(variant, Target::essl300)) {
       const std::string& text = emitted.compiled.text;
       auto shimmed = essl300_version_as_310(text);
@@ -93,9 +97,9 @@ TEST(Dx9SemanticsShim, LeavesTextWithoutAnOutputStructUnchanged) {
   EXPECT_EQ(*out, in);
 }
 
-// On emitted files (backprojection has every pass): exactly one semantic
-// changes per stage, the position of vertex shaders and the depth of the
-// depth pass's fragment shader.
+// On emitted files (backprojection: the depth, min-max and query passes):
+// exactly one semantic changes per stage, the position of vertex shaders and
+// the depth of the depth pass's fragment shader.
 TEST(Dx9SemanticsShim, ChangesOneSemanticOfEachEmittedEntryPoint) {
   const Variant* variant = find_default_variant("backprojection");
   ASSERT_NE(variant, nullptr);

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "build/pass_plan.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
@@ -34,7 +35,7 @@ constexpr const char* kHowToUpdate =
 // follow its disks, or from kExtraVariants.
 constexpr const char* kRepresentatives[] = {
     "hard",           "pcf_grid_k3",    "pcf_poisson_p16_whitepaper16", "pcss_b16_p16_whitepaper16",
-    "minmax_pcf_k12", "backprojection", "pcss_minmax_p16_whitepaper16"};
+    "minmax_pcf_k12", "backprojection", "pcss_minmax_p16_whitepaper16", "screen_blur_r4"};
 
 // Representatives the default manifest does not build: an even kernel, and
 // the whitepaper's disk for pcss_minmax.
@@ -137,19 +138,31 @@ std::string target_name(const ::testing::TestParamInfo<Target>& param_info) {
   return std::string(to_string(param_info.param));
 }
 
-class QueryPass : public ::testing::TestWithParam<std::tuple<const char*, Target>> {};
-
-TEST_P(QueryPass, MatchesTheReference) {
-  const auto [name, target] = GetParam();
-  const Variant& variant = representative(name);
-  auto pass = compile_pass(variant, target, PassKind::query);
-  ASSERT_TRUE(pass.ok()) << pass.error().to_string();
-  const std::string dir(to_string(variant.technique));
-  expect_golden(golden_path(dir, target, "query", ShaderStage::fragment),
-                emitted_text(pass->frag, target));
+// The fragment stages a variant owns: query, and screen_blur's blur_h and
+// blur_v.
+std::vector<const PassStageSource*> variant_sources(const Variant& variant) {
+  std::vector<const PassStageSource*> out;
+  for (const PassStageSource& source : pass_plan()) {
+    if (source.per_variant && runs_pass(source.pass, variant)) out.push_back(&source);
+  }
+  return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Golden, QueryPass,
+class VariantPasses : public ::testing::TestWithParam<std::tuple<const char*, Target>> {};
+
+TEST_P(VariantPasses, MatchTheReference) {
+  const auto [name, target] = GetParam();
+  const Variant& variant = representative(name);
+  const std::string dir(to_string(variant.technique));
+  for (const PassStageSource* source : variant_sources(variant)) {
+    auto pass = compile_pass(variant, target, source->pass);
+    ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+    expect_golden(golden_path(dir, target, source->file_stem, ShaderStage::fragment),
+                  emitted_text(pass->frag, target));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, VariantPasses,
                          ::testing::Combine(::testing::ValuesIn(kRepresentatives),
                                             ::testing::ValuesIn(kAllTargets)),
                          [](const auto& param_info) {
@@ -158,31 +171,35 @@ INSTANTIATE_TEST_SUITE_P(Golden, QueryPass,
                                   std::string(to_string(std::get<1>(param_info.param)));
                          });
 
-// The passes variants share: depth (vertex and fragment), the query pass's
-// full-screen vertex shader, and both stages of the min-max build passes.
-constexpr std::pair<PassKind, const char*> kSharedPasses[] = {
-    {PassKind::depth, "depth"},
-    {PassKind::minmax_init, "minmax_init"},
-    {PassKind::minmax_reduce, "minmax_reduce"},
-};
+// The stages variants share, each compiled through a representative that
+// runs its pass: every shared stage of the pass plan (depth, the full-screen
+// vertex shaders, the min-max build passes, composite).
+const char* shared_representative(PassKind pass) {
+  return pass == PassKind::blur_h || pass == PassKind::blur_v || pass == PassKind::composite
+             ? "screen_blur_r4"
+             : "backprojection";
+}
+
+std::vector<const PassStageSource*> shared_sources() {
+  std::vector<const PassStageSource*> out;
+  for (const PassStageSource& source : pass_plan()) {
+    if (!source.per_variant) out.push_back(&source);
+  }
+  return out;
+}
 
 class SharedPasses : public ::testing::TestWithParam<Target> {};
 
 TEST_P(SharedPasses, MatchTheReference) {
   const Target target = GetParam();
-  const Variant& variant = representative("backprojection");  // runs every pass
-  for (const auto& [kind, stem] : kSharedPasses) {
-    auto pass = compile_pass(variant, target, kind);
+  for (const PassStageSource* source : shared_sources()) {
+    const Variant& variant = representative(shared_representative(source->pass));
+    auto pass = compile_pass(variant, target, source->pass);
     ASSERT_TRUE(pass.ok()) << pass.error().to_string();
-    expect_golden(golden_path("common", target, stem, ShaderStage::vertex),
-                  emitted_text(pass->vert, target));
-    expect_golden(golden_path("common", target, stem, ShaderStage::fragment),
-                  emitted_text(pass->frag, target));
+    const CompiledStage& stage = source->stage == ShaderStage::vertex ? pass->vert : pass->frag;
+    expect_golden(golden_path("common", target, source->file_stem, source->stage),
+                  emitted_text(stage, target));
   }
-  auto query = compile_pass(variant, target, PassKind::query);
-  ASSERT_TRUE(query.ok()) << query.error().to_string();
-  expect_golden(golden_path("common", target, "fullscreen", ShaderStage::vertex),
-                emitted_text(query->vert, target));
 }
 
 INSTANTIATE_TEST_SUITE_P(Golden, SharedPasses, ::testing::ValuesIn(kAllTargets), target_name);
@@ -193,14 +210,15 @@ TEST(GoldenReference, HoldsOnlyCurrentGoldens) {
   std::set<fs::path> expected;
   for (Target target : kAllTargets) {
     for (const char* name : kRepresentatives) {
-      const std::string dir(to_string(representative(name).technique));
-      expected.insert(golden_path(dir, target, "query", ShaderStage::fragment));
+      const Variant& variant = representative(name);
+      const std::string dir(to_string(variant.technique));
+      for (const PassStageSource* source : variant_sources(variant)) {
+        expected.insert(golden_path(dir, target, source->file_stem, ShaderStage::fragment));
+      }
     }
-    for (const auto& [kind, stem] : kSharedPasses) {
-      expected.insert(golden_path("common", target, stem, ShaderStage::vertex));
-      expected.insert(golden_path("common", target, stem, ShaderStage::fragment));
+    for (const PassStageSource* source : shared_sources()) {
+      expected.insert(golden_path("common", target, source->file_stem, source->stage));
     }
-    expected.insert(golden_path("common", target, "fullscreen", ShaderStage::vertex));
   }
   if (update_mode()) fs::create_directories(kReference);  // this test may run first
   ASSERT_TRUE(fs::is_directory(kReference)) << "no reference tree " << kReference << "\n"

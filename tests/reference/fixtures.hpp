@@ -17,19 +17,20 @@ inline Disk make_disk(std::vector<Point2> points) {
 }
 
 inline Variant hard_variant() {
-  return Variant{"hard", Technique::hard, {}, {}, {}, {}};
+  return Variant{"hard", Technique::hard, {}, {}, {}, {}, {}};
 }
 
 inline Variant grid_variant(int kernel) {
   VariantKeys keys;
   keys.kernel = kernel;
-  return Variant{"pcf_grid", Technique::pcf_grid, keys, {}, {}, {}};
+  return Variant{"pcf_grid", Technique::pcf_grid, keys, {}, {}, {}, {}};
 }
 
 inline Variant poisson_variant(std::vector<Point2> points) {
   VariantKeys keys;
   keys.pcf_samples = int(points.size());
-  return Variant{"pcf_poisson", Technique::pcf_poisson, keys, {}, make_disk(std::move(points)), {}};
+  return Variant{
+      "pcf_poisson", Technique::pcf_poisson, keys, {}, make_disk(std::move(points)), {}, {}};
 }
 
 inline Variant pcss_variant(std::vector<Point2> blocker, std::vector<Point2> pcf) {
@@ -37,23 +38,40 @@ inline Variant pcss_variant(std::vector<Point2> blocker, std::vector<Point2> pcf
   keys.blocker_samples = int(blocker.size());
   keys.pcf_samples = int(pcf.size());
   return Variant{
-      "pcss", Technique::pcss, keys, make_disk(std::move(blocker)), make_disk(std::move(pcf)), {}};
+      "pcss", Technique::pcss, keys, make_disk(std::move(blocker)), make_disk(std::move(pcf)), {},
+      {}};
 }
 
 inline Variant minmax_pcf_variant(int kernel) {
   VariantKeys keys;
   keys.kernel = kernel;
-  return Variant{"minmax_pcf", Technique::minmax_pcf, keys, {}, {}, {}};
+  return Variant{"minmax_pcf", Technique::minmax_pcf, keys, {}, {}, {}, {}};
 }
 
 inline Variant backprojection_variant() {
-  return Variant{"backprojection", Technique::backprojection, {}, {}, {}, {}};
+  return Variant{"backprojection", Technique::backprojection, {}, {}, {}, {}, {}};
 }
 
 inline Variant pcss_minmax_variant(std::vector<Point2> pcf) {
   VariantKeys keys;
   keys.pcf_samples = int(pcf.size());
-  return Variant{"pcss_minmax", Technique::pcss_minmax, keys, {}, make_disk(std::move(pcf)), {}};
+  return Variant{
+      "pcss_minmax", Technique::pcss_minmax, keys, {}, make_disk(std::move(pcf)), {}, {}};
+}
+
+// screen_blur with radius R and the 2R + 1 taps `weights` (hand-picked: the
+// reference takes whatever the compiler baked).
+inline Variant blur_variant(int radius, std::vector<float> weights, bool depth_aware = false) {
+  VariantKeys keys;
+  keys.blur_radius = radius;
+  if (depth_aware) keys.depth_aware = true;
+  return Variant{"screen_blur", Technique::screen_blur, keys, {}, {}, {}, std::move(weights)};
+}
+
+// The R = 2 binomial taps (1, 4, 6, 4, 1) / 16: exact in float, so sums
+// over them are exact too.
+inline std::vector<float> binomial5() {
+  return {1.0f / 16, 4.0f / 16, 6.0f / 16, 4.0f / 16, 1.0f / 16};
 }
 
 // A W x H map: `near_depth` in columns i < split, `far_depth` from there on.

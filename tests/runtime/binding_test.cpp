@@ -37,7 +37,8 @@ TEST_F(BindingTest, UnknownSamplerIsNamedWithTheAllowedNames) {
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
             "sampler 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
-            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source");
+            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source, "
+            "screen_factor, scene_colour");
 }
 
 TEST_F(BindingTest, UnknownUniformBlockIsNamed) {

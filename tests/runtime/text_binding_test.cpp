@@ -56,7 +56,8 @@ TEST_F(TextBindingTest, SamplerNamedAfterNoImageIsRefused) {
       "sampler 'point_clamp' (fragment stage) pairs with no image of the shader interface: "
       "a separate sampler is named _<image>_sampler after the image it samples "
       "(SPIRV-Cross's HLSL naming); allowed names: _shadow_depth_sampler, "
-      "_shadow_cmp_sampler, _receivers_sampler, _shadow_minmax_sampler, _minmax_source_sampler");
+      "_shadow_cmp_sampler, _receivers_sampler, _shadow_minmax_sampler, _minmax_source_sampler, "
+      "_screen_factor_sampler, _scene_colour_sampler");
 }
 
 TEST_F(TextBindingTest, OnlyShadowCmpsSamplerMayCompare) {
@@ -72,7 +73,8 @@ TEST_F(TextBindingTest, UnknownSeparateImageIsNamedWithTheAllowedNames) {
   program.frag.iface.separate_images[0].name = "shadow_mapp";
   EXPECT_EQ(query_error(program, params_),
             "image 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
-            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source");
+            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source, "
+            "screen_factor, scene_colour");
 }
 
 TEST_F(TextBindingTest, ImageAndAnotherImagesSamplerCannotShareABinding) {

@@ -21,7 +21,7 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
   auto variants =
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
-  ASSERT_EQ(variants->size(), 29u);
+  ASSERT_EQ(variants->size(), 33u);
   const Pipeline pipeline(std::nullopt);
   std::map<std::string, int> estimates;
   std::set<std::pair<Target, const PassStageSource*>> shared;  // each compiled once per target
@@ -39,7 +39,12 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
             << job.describe();
         if (estimated) {
           const std::string shared_name = std::string(source.file_stem) + " (shared)";
-          estimates[source.per_variant ? variant.name : shared_name] = job.estimated_slots;
+          // A variant's query pass goes by the variant's name, its other
+          // passes (screen_blur's blur_h, blur_v) by "name.pass".
+          const std::string own_name = source.pass == PassKind::query
+                                           ? variant.name
+                                           : variant.name + "." + std::string(source.file_stem);
+          estimates[source.per_variant ? own_name : shared_name] = job.estimated_slots;
         }
       }
     }
@@ -68,6 +73,14 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
   EXPECT_LT(estimates.at("minmax_reduce (shared)"), kPs30MinimumSlots);
   // pcss_minmax's search is at most four node reads, cheaper than 16 disk taps.
   EXPECT_LT(estimates.at("pcss_minmax_p16_poisson"), estimates.at("pcss_b16_p16_poisson"));
+  // screen_blur: nine point compares, then 2R + 1 taps per blur pass (unrolled,
+  // so a wider blur costs more), two reads per tap when depth-aware.
+  EXPECT_LT(estimates.at("screen_blur_r2"), kPs30MinimumSlots);
+  EXPECT_LT(estimates.at("screen_blur_r2.blur_h"), estimates.at("screen_blur_r8.blur_h"));
+  EXPECT_LT(estimates.at("screen_blur_r4.blur_v"),
+            estimates.at("screen_blur_r4_depth_aware.blur_v"));
+  EXPECT_LT(estimates.at("screen_blur_r8.blur_v"), kPs30MinimumSlots);
+  EXPECT_LT(estimates.at("composite (shared)"), kPs30MinimumSlots);
 }
 
 }  // namespace

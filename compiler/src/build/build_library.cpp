@@ -28,7 +28,9 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
   for (const Variant& variant : variants) {
     for (Target target : variant.targets) {
       for (const PassStageSource& source : pass_plan()) {
-        if (source.per_variant) jobs.push_back(make_job(source, target, &variant));
+        if (source.per_variant && runs_pass(source.pass, variant)) {
+          jobs.push_back(make_job(source, target, &variant));
+        }
       }
     }
   }
@@ -119,8 +121,7 @@ Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKin
   if (!runs_pass(pass, variant)) {
     return make_error(Error::Kind::bad_input, "variant " + variant.name,
                       "has no " + std::string(to_string(pass)) + " pass (technique " +
-                          std::string(to_string(variant.technique)) +
-                          " does not read the min-max mip)");
+                          std::string(to_string(variant.technique)) + " does not use it)");
   }
   const Pipeline pipeline(std::nullopt);
   CompiledPass out;

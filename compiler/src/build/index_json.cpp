@@ -35,6 +35,12 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
   }
   out["disks"] = disks;
   out["disk_info"] = disk_info;
+  if (!variant.blur_weights.empty()) {
+    // Exact like the disks: each float widens to double, written shortest.
+    nlohmann::json weights = nlohmann::json::array();
+    for (float w : variant.blur_weights) weights.push_back(static_cast<double>(w));
+    out["blur_weights"] = weights;
+  }
 
   nlohmann::json targets = nlohmann::json::array();
   nlohmann::json passes = nlohmann::json::object();

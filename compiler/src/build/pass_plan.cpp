@@ -17,13 +17,30 @@ std::span<const PassStageSource> pass_plan() {
        false},
       {PassKind::query, ShaderStage::vertex, "passes/fullscreen.vert", "fullscreen", false},
       {PassKind::query, ShaderStage::fragment, "passes/query.frag", "query", true},
+      {PassKind::blur_h, ShaderStage::vertex, "passes/fullscreen.vert", "blur_h", false},
+      {PassKind::blur_h, ShaderStage::fragment, "passes/blur_h.frag", "blur_h", true},
+      {PassKind::blur_v, ShaderStage::vertex, "passes/fullscreen.vert", "blur_v", false},
+      {PassKind::blur_v, ShaderStage::fragment, "passes/blur_v.frag", "blur_v", true},
+      {PassKind::composite, ShaderStage::vertex, "passes/fullscreen.vert", "composite", false},
+      {PassKind::composite, ShaderStage::fragment, "passes/composite.frag", "composite", false},
   };
   return kPlan;
 }
 
 bool runs_pass(PassKind pass, const Variant& variant) {
-  const bool minmax = pass == PassKind::minmax_init || pass == PassKind::minmax_reduce;
-  return !minmax || uses_minmax_mip(variant.technique);
+  switch (pass) {
+    case PassKind::depth:
+    case PassKind::query:
+      return true;
+    case PassKind::minmax_init:
+    case PassKind::minmax_reduce:
+      return uses_minmax_mip(variant.technique);
+    case PassKind::blur_h:
+    case PassKind::blur_v:
+    case PassKind::composite:
+      return variant.technique == Technique::screen_blur;
+  }
+  return false;
 }
 
 std::string output_path(const PassStageSource& source, Target target, const Variant* variant) {

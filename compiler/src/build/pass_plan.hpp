@@ -18,11 +18,13 @@ struct PassStageSource {
 };
 
 // Every pass of every technique; a pass's vertex stage comes first. The
-// min-max build passes share passes/fullscreen.vert, compiled once per pass.
+// min-max build passes and screen_blur's blur and composite passes share
+// passes/fullscreen.vert, compiled once per pass.
 std::span<const PassStageSource> pass_plan();
 
 // Whether `variant` uses the pass: the min-max build passes only for
-// techniques that read the min-max mip.
+// techniques that read the min-max mip, blur_h, blur_v and composite only
+// for screen_blur.
 bool runs_pass(PassKind pass, const Variant& variant);
 
 // "spirv/common/depth.vert.spv" or "hlsl_dx9/pcss_b16_p16_whitepaper16/query.frag.hlsl".

@@ -56,20 +56,31 @@ bool same_points(const std::vector<Point2>& a, const std::optional<Disk>& disk) 
   return disk && disk->points == a;
 }
 
+// Whether the constant composite holds exactly the float constants `values`.
+bool same_scalars(const SpvInstruction& composite, const std::map<std::uint32_t, float>& scalars,
+                  const std::vector<float>& values) {
+  if (values.empty() || composite.operand_count() != values.size()) return false;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const auto found = scalars.find(composite.operand(k));
+    if (found == scalars.end() || found->second != values[k]) return false;
+  }
+  return true;
+}
+
 // The OpNames to add and where: after the last OpName (0: there is none).
-struct DiskNames {
+struct ConstantNames {
   std::size_t insert_at = 0;
   std::vector<std::pair<std::uint32_t, std::string>> names;
 };
 
 // Reads the module without changing it: the view borrows the words, so all
-// reading is done before name_disk_constants inserts.
-DiskNames find_disk_names(const std::vector<std::uint32_t>& spirv, const Variant& variant) {
+// reading is done before name_baked_constants inserts.
+ConstantNames find_constant_names(const std::vector<std::uint32_t>& spirv, const Variant& variant) {
   const SpirvModule module(spirv);
   std::set<std::uint32_t> float_types, named;
   std::map<std::uint32_t, float> scalars;
   std::map<std::uint32_t, Point2> pairs;
-  DiskNames found;
+  ConstantNames found;
   for (const SpvInstruction& in : module.instructions()) {
     switch (in.op) {
       case spv::OpName:
@@ -86,6 +97,10 @@ DiskNames find_disk_names(const std::vector<std::uint32_t>& spirv, const Variant
         break;
       case spv::OpConstantComposite: {
         const std::size_t parts = in.operand_count();
+        if (!named.contains(in.result_id) && same_scalars(in, scalars, variant.blur_weights)) {
+          found.names.emplace_back(in.result_id, "BLUR_WEIGHTS");
+          break;
+        }
         if (parts == 2 && scalars.contains(in.operand(0)) && scalars.contains(in.operand(1))) {
           pairs[in.result_id] = {scalars[in.operand(0)], scalars[in.operand(1)]};
           break;
@@ -113,9 +128,9 @@ DiskNames find_disk_names(const std::vector<std::uint32_t>& spirv, const Variant
 
 }  // namespace
 
-void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& variant) {
-  if (!variant.blocker_disk && !variant.pcf_disk) return;
-  const auto [insert_at, names] = find_disk_names(spirv, variant);
+void name_baked_constants(std::vector<std::uint32_t>& spirv, const Variant& variant) {
+  if (!variant.blocker_disk && !variant.pcf_disk && variant.blur_weights.empty()) return;
+  const auto [insert_at, names] = find_constant_names(spirv, variant);
   if (insert_at == 0) return;  // a module without debug names: leave it as is
   std::vector<std::uint32_t> added;
   for (const auto& [id, name] : names) {

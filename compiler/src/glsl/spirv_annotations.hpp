@@ -1,5 +1,5 @@
 // Debug annotations glslang cannot produce for Penumbra's SPIR-V 1.0: names
-// for the Poisson-disk constants, and a string naming the variant.
+// for the baked constant arrays, and a string naming the variant.
 #pragma once
 
 #include <cstdint>
@@ -12,11 +12,12 @@ namespace penumbra {
 
 // Adds `OpName %id "BLOCKER_DISK"` / `"PCF_DISK"` (or `"POISSON_DISK"` when
 // one constant serves both) for constant arrays whose values are exactly the
-// variant's disks. Leaves other constants alone.
+// variant's disks, and `"BLUR_WEIGHTS"` for the one that is exactly its blur
+// weights. Leaves other constants alone.
 // glslang emits no OpName for constants, so SPIRV-Cross would print
 // BLOCKER_DISK as `_186`; with the name, every target's text reads like the
 // source.
-void name_disk_constants(std::vector<std::uint32_t>& spirv, const Variant& variant);
+void name_baked_constants(std::vector<std::uint32_t>& spirv, const Variant& variant);
 
 // Adds `OpString "<text>"` at the head of the debug section: the binary's
 // equivalent of the banner comment of text targets (OpModuleProcessed would

@@ -18,6 +18,16 @@ std::string disk_array(std::string_view name, const Disk& disk) {
   return out + ");\n";
 }
 
+std::string float_array(std::string_view name, const std::vector<float>& values) {
+  std::string out =
+      "const float " + std::string(name) + "[" + std::to_string(values.size()) + "] = float[](";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    out += i == 0 ? "\n  " : ",\n  ";
+    out += glsl_float(values[i]);
+  }
+  return out + ");\n";
+}
+
 }  // namespace
 
 std::string glsl_float(float value) {
@@ -52,6 +62,13 @@ std::string variant_header(const Variant* variant, Target target) {
   if (variant->technique == Technique::backprojection) {
     out += "#define BACKPROJECTION_MAX_NODES " +
            std::to_string(keys.max_nodes.value_or(kDefaultMaxNodes)) + "\n";
+  }
+  if (keys.blur_radius) {
+    out += "#define BLUR_RADIUS " + std::to_string(*keys.blur_radius) + "\n";
+    out += "#define PENUMBRA_DEPTH_AWARE " +
+           std::string(keys.depth_aware.value_or(false) ? "1" : "0") + "\n";
+    out += "#define BLUR_DEPTH_TOLERANCE " + glsl_float(kBlurDepthTolerance) + "\n";
+    out += float_array("BLUR_WEIGHTS", variant->blur_weights);
   }
   if (variant->blocker_disk) out += disk_array("BLOCKER_DISK", *variant->blocker_disk);
   if (variant->pcf_disk) out += disk_array("PCF_DISK", *variant->pcf_disk);

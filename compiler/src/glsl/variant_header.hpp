@@ -1,6 +1,6 @@
 // variant.glsl: the generated header every shader includes first. It holds
-// the target's defines and the variant's technique, sample counts and
-// Poisson disks as constant arrays.
+// the target's defines and the variant's technique, sample counts, Poisson
+// disks and blur weights as constant arrays.
 #pragma once
 
 #include <string>

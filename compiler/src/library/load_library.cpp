@@ -41,6 +41,9 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
   if (disks.contains("pcf")) {
     v.pcf_disk = disk_from_json(disks["pcf"], info.value("pcf", json::object()));
   }
+  if (j.contains("blur_weights")) {
+    for (const json& w : j["blur_weights"]) v.blur_weights.push_back(w.get<float>());
+  }
   for (const json& t : j.at("targets")) {
     auto target = parse_target(t.get<std::string>());
     if (!target) {
@@ -51,9 +54,12 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
   for (auto& [pass_name, by_target] : j.at("passes").items()) {
     const std::optional<PassKind> parsed = parse_pass(pass_name);
     if (!parsed) {
+      std::string known;
+      for (PassKind pass : kAllPassKinds) {
+        known += (known.empty() ? "" : ", ") + std::string(to_string(pass));
+      }
       return index_error(file, path + "/passes/" + pass_name,
-                         "unknown pass; this penumbra knows: depth, minmax_init, minmax_reduce, "
-                         "query");
+                         "unknown pass; this penumbra knows: " + known);
     }
     const PassKind pass = *parsed;
     for (auto& [target_name, files] : by_target.items()) {

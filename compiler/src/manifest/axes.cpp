@@ -72,6 +72,18 @@ Result<int> read_max_nodes(const JsonNode& node) {
                     std::to_string(kMaxMaxNodes));
 }
 
+Result<int> read_blur_radius(const JsonNode& node) {
+  Result<int> radius = node.integer();
+  if (!radius) return radius.error();
+  if (*radius >= 1 && *radius <= kMaxBlurRadius) return *radius;
+  return node.error("blur_radius " + std::to_string(*radius) + " is out of range; allowed 1.." +
+                    std::to_string(kMaxBlurRadius));
+}
+
+Result<bool> read_depth_aware(const JsonNode& node) {
+  return node.boolean();
+}
+
 Result<std::string> read_disk(const JsonNode& node,
                               const std::map<std::string, DiskFamily>& disks) {
   Result<std::string> name = node.string();
@@ -106,12 +118,14 @@ bool uses(Technique technique, Axis axis) {
       return axis == Axis::traversal || axis == Axis::max_nodes;
     case Technique::pcss_minmax:
       return axis == Axis::pcf_samples || axis == Axis::disk;
+    case Technique::screen_blur:
+      return axis == Axis::blur_radius || axis == Axis::depth_aware;
   }
   return false;
 }
 
 bool is_optional(Axis axis) {
-  return axis == Axis::traversal || axis == Axis::max_nodes;
+  return axis == Axis::traversal || axis == Axis::max_nodes || axis == Axis::depth_aware;
 }
 
 bool is_given(const AxisValues& values, Axis axis) {
@@ -128,6 +142,10 @@ bool is_given(const AxisValues& values, Axis axis) {
       return !values.traversal.empty();
     case Axis::max_nodes:
       return !values.max_nodes.empty();
+    case Axis::blur_radius:
+      return !values.blur_radius.empty();
+    case Axis::depth_aware:
+      return !values.depth_aware.empty();
   }
   return false;
 }
@@ -162,6 +180,12 @@ Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& 
   }
   if (node.has("max_nodes")) {
     PENUMBRA_TRY(read_list(node.member("max_nodes"), read_max_nodes, out.max_nodes));
+  }
+  if (node.has("blur_radius")) {
+    PENUMBRA_TRY(read_list(node.member("blur_radius"), read_blur_radius, out.blur_radius));
+  }
+  if (node.has("depth_aware")) {
+    PENUMBRA_TRY(read_list(node.member("depth_aware"), read_depth_aware, out.depth_aware));
   }
   if (node.has("target")) PENUMBRA_TRY(read_targets(node.member("target"), out.target));
   return {};

@@ -14,21 +14,31 @@
 namespace penumbra::manifest_detail {
 
 // The keys of a set or an exclusion.
-inline constexpr std::array<std::string_view, 8> kAxisKeys = {
-    "technique", "blocker_samples", "pcf_samples", "kernel",
-    "disk",      "traversal",       "max_nodes",   "target"};
+inline constexpr std::array<std::string_view, 10> kAxisKeys = {
+    "technique", "blocker_samples", "pcf_samples", "kernel",      "disk",
+    "traversal", "max_nodes",       "blur_radius", "depth_aware", "target"};
 
 // The keys a technique may take, in kVariantKeyNames order; every variant has
 // targets.
-enum class Axis { kernel, blocker_samples, pcf_samples, disk, traversal, max_nodes };
-inline constexpr std::array kKeyAxes = {Axis::kernel, Axis::blocker_samples, Axis::pcf_samples,
-                                        Axis::disk,   Axis::traversal,       Axis::max_nodes};
+enum class Axis {
+  kernel,
+  blocker_samples,
+  pcf_samples,
+  disk,
+  traversal,
+  max_nodes,
+  blur_radius,
+  depth_aware
+};
+inline constexpr std::array kKeyAxes = {Axis::kernel,      Axis::blocker_samples, Axis::pcf_samples,
+                                        Axis::disk,        Axis::traversal,       Axis::max_nodes,
+                                        Axis::blur_radius, Axis::depth_aware};
 
 std::string_view axis_name(Axis axis);
 // Whether `technique` takes the key; it ignores the keys it does not take.
 bool uses(Technique technique, Axis axis);
 // Whether a set may leave the key out for a technique that takes it
-// (traversal and max_nodes have defaults).
+// (traversal, max_nodes and depth_aware have defaults).
 bool is_optional(Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
 // "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or
@@ -38,7 +48,8 @@ std::string describe_axes(Technique technique);
 // Reads the axis keys `node` gives into `out`, checking every value: names
 // known, sample counts 1..kMaxSamples, kernels 1..kMaxSamples (odd ones only
 // for pcf_grid: check_kernels), disks built in or declared in `disks`,
-// traversal kBruteForceTraversal, max_nodes 1..kMaxMaxNodes.
+// traversal kBruteForceTraversal, max_nodes 1..kMaxMaxNodes, blur_radius
+// 1..kMaxBlurRadius, depth_aware true or false.
 Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& disks,
                  AxisValues& out);
 

@@ -34,7 +34,17 @@ std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes
         for (const auto& disk : axis_values(technique, Axis::disk, axes.disk)) {
           for (const auto& traversal : axis_values(technique, Axis::traversal, axes.traversal)) {
             for (const auto& nodes : axis_values(technique, Axis::max_nodes, axes.max_nodes)) {
-              out.push_back({kernel, blocker, pcf, disk, traversal, nodes});
+              for (const auto& radius :
+                   axis_values(technique, Axis::blur_radius, axes.blur_radius)) {
+                for (const auto& aware :
+                     axis_values(technique, Axis::depth_aware, axes.depth_aware)) {
+                  // depth_aware false is the default: the key stays unset.
+                  const std::optional<bool> depth_aware =
+                      aware.value_or(false) ? aware : std::nullopt;
+                  out.push_back(
+                      {kernel, blocker, pcf, disk, traversal, nodes, radius, depth_aware});
+                }
+              }
             }
           }
         }
@@ -102,6 +112,7 @@ Result<Variant> make_variant(DiskCache& cache, const Manifest& manifest, Techniq
     if (!disk) return disk.error();
     variant.pcf_disk = std::move(*disk);
   }
+  if (keys.blur_radius) variant.blur_weights = gaussian_weights(*keys.blur_radius);
   return variant;
 }
 
@@ -117,13 +128,23 @@ bool allows(const std::vector<T>& values, const std::optional<T>& value) {
   return values.empty() || (value && contains(values, *value));
 }
 
+// depth_aware is unset for false, so a technique that takes the key matches
+// `false` without it; the others never have it.
+bool allows_depth_aware(const std::vector<bool>& values, const Variant& variant) {
+  if (values.empty()) return true;
+  if (!uses(variant.technique, Axis::depth_aware)) return false;
+  return contains(values, variant.keys.depth_aware.value_or(false));
+}
+
 bool matches(const AxisValues& match, const Variant& variant) {
   return (match.technique.empty() || contains(match.technique, variant.technique)) &&
          allows(match.kernel, variant.keys.kernel) &&
          allows(match.blocker_samples, variant.keys.blocker_samples) &&
          allows(match.pcf_samples, variant.keys.pcf_samples) &&
          allows(match.disk, variant.keys.disk) && allows(match.traversal, variant.keys.traversal) &&
-         allows(match.max_nodes, variant.keys.max_nodes);
+         allows(match.max_nodes, variant.keys.max_nodes) &&
+         allows(match.blur_radius, variant.keys.blur_radius) &&
+         allows_depth_aware(match.depth_aware, variant);
 }
 
 void apply(const Exclusion& exclusion, Variant& variant) {
@@ -141,7 +162,7 @@ bool variant_less(const Variant& a, const Variant& b) {
   const auto key = [](const Variant& v) {
     const VariantKeys& k = v.keys;
     return std::tie(v.technique, k.kernel, k.blocker_samples, k.pcf_samples, k.disk, k.traversal,
-                    k.max_nodes);
+                    k.max_nodes, k.blur_radius, k.depth_aware);
   };
   return key(a) < key(b);
 }

@@ -98,6 +98,11 @@ Result<std::string> JsonNode::string() const {
   return value_->get<std::string>();
 }
 
+Result<bool> JsonNode::boolean() const {
+  if (!value_->is_boolean()) return type_error("true or false");
+  return value_->get<bool>();
+}
+
 std::string JsonNode::where() const {
   std::string out(source_);
   if (!path_.empty()) out += ": " + path_;

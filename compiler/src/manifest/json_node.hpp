@@ -39,6 +39,7 @@ class JsonNode {
   Result<int> integer() const;
   Result<std::uint64_t> unsigned_integer() const;
   Result<std::string> string() const;
+  Result<bool> boolean() const;
 
   // "file: /json/path", or "file" for the document itself.
   std::string where() const;

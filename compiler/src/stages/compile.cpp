@@ -38,7 +38,7 @@ Status CompileStage::process(ShaderJob& job) const {
     return make_error(Error::Kind::compile, job.describe(),
                       "SPIR-V generation failed:\n" + logger.getAllMessages());
   }
-  if (job.variant) name_disk_constants(job.spirv, *job.variant);
+  if (job.variant) name_baked_constants(job.spirv, *job.variant);
   add_banner_string(job.spirv, job.banner());
   return {};
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/runtime/library_programs.hpp"
 
@@ -21,6 +22,21 @@ double max_depth(const EvalInputs& inputs) {
     max_z = std::max(max_z, double(inputs.receivers.data[p * 3 + 2]));
   }
   return max_z;
+}
+
+// screen_blur's chain: the receivers image is the screen; the blurred factor
+// is the visibility, the factor pass's reads the texel reads. The composite
+// is drawn over reference::scene_colour but not returned.
+Result<QueryOutput> eval_screen_blur(const Library& library, const LibraryVariant& variant,
+                                     Target target, const EvalInputs& inputs, const ShadowMap& map,
+                                     const ParamBlock& params, Engine& engine) {
+  auto programs = load_screen_blur(library, variant, target);
+  if (!programs) return programs.error();
+  const FloatImage colour =
+      reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
+  auto chain = engine.run_screen_blur(programs->programs(), map, inputs.receivers, colour, params);
+  if (!chain) return chain.error();
+  return QueryOutput{std::move(chain->blurred), std::move(chain->texel_reads), chain->gpu_ms};
 }
 
 }  // namespace
@@ -62,6 +78,9 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
                                           {inputs.shadow_map.width, inputs.shadow_map.height,
                                            inputs.receivers.width, inputs.receivers.height},
                                           depth_scale);
+  if (variant.variant.technique == Technique::screen_blur) {
+    return eval_screen_blur(library, variant, target, inputs, **map, params, engine);
+  }
   if (uses_minmax_mip(variant.variant.technique)) {
     auto init = load_executable(library, variant, PassKind::minmax_init, target);
     if (!init) return init.error();
@@ -78,6 +97,9 @@ Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInput
   auto image =
       reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light, inputs.receivers);
   if (!image) return image.error();
+  if (variant.variant.technique == Technique::screen_blur) {
+    return reference::screen_blur(variant.variant, image->visibility, inputs.receivers);
+  }
   return std::move(image->visibility);
 }
 

@@ -25,6 +25,31 @@ nlohmann::json minmax_json(const MinmaxCheck& c) {
   return out;
 }
 
+nlohmann::json chain_json(const ChainCheck& c) {
+  return {{"values", c.values},
+          {"over_tolerance", c.over_tolerance},
+          {"max_abs_error", c.max_abs_error},
+          {"tolerance", c.tolerance},
+          {"pass", c.pass}};
+}
+
+// A query's comparison at the top level; screen_blur's three checks under
+// factor, blur and composite, with the scene's pass for all three.
+nlohmann::json scene_json(const SceneRun& s) {
+  nlohmann::json entry;
+  if (s.blur && s.composite) {
+    entry["factor"] = s.comparison;
+    entry["blur"] = chain_json(*s.blur);
+    entry["composite"] = chain_json(*s.composite);
+    entry["pass"] = s.pass();
+  } else {
+    entry = s.comparison;
+  }
+  entry["scene"] = s.scene;
+  entry["mean_texel_reads"] = s.mean_texel_reads;
+  return entry;
+}
+
 nlohmann::json run_json(const TargetRun& run) {
   nlohmann::json out = {
       {"target", to_string(run.target)}, {"backend", run.backend}, {"executed", run.executed}};
@@ -38,12 +63,7 @@ nlohmann::json run_json(const TargetRun& run) {
   out["pass"] = run.pass && run.error.empty();
   if (!run.error.empty()) out["error"] = run.error;
   nlohmann::json scenes = nlohmann::json::array();
-  for (const SceneRun& s : run.scenes) {
-    nlohmann::json entry = s.comparison;
-    entry["scene"] = s.scene;
-    entry["mean_texel_reads"] = s.mean_texel_reads;
-    scenes.push_back(entry);
-  }
+  for (const SceneRun& s : run.scenes) scenes.push_back(scene_json(s));
   out["scenes"] = scenes;
   return out;
 }

@@ -2,8 +2,10 @@
 #include <map>
 
 #include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/runtime/verify.hpp"
+#include "verify/chain_check.hpp"
 #include "verify/gl_backend.hpp"
 #include "verify/minmax_check.hpp"
 #include "verify/scene_fixture.hpp"
@@ -42,47 +44,96 @@ TargetRun failed_run(Target target, std::string backend, const Error& error) {
   return run;
 }
 
-Result<SceneRun> check_scene(const Context& ctx, const QueryOutput& gpu, const Variant& variant,
+// The query's visibility against the reference (screen_blur: the factor).
+Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
+                             const FloatImage& texel_reads, const Variant& variant,
                              const SceneFixture& fixture) {
   auto expected = reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
                                             fixture.receivers, ctx.precision);
   if (!expected) return expected.error();
-  auto comparison = reference::compare(gpu.visibility, expected->visibility, expected->ambiguous,
+  auto comparison = reference::compare(visibility, expected->visibility, expected->ambiguous,
                                        reference::tolerance(variant.technique, ctx.precision));
   if (!comparison) return comparison.error();
   double reads = 0.0;
-  for (float r : gpu.texel_reads.data) reads += r;
+  for (float r : texel_reads.data) reads += r;
   return SceneRun{fixture.scene.name, *comparison,
-                  reads / static_cast<double>(gpu.texel_reads.pixel_count())};
+                  reads / static_cast<double>(texel_reads.pixel_count()), std::nullopt,
+                  std::nullopt};
 }
 
-// Runs `render` on every scene of the target's fixtures and compares each
-// image with the reference.
-template <typename Render>
-Status run_scenes(Context& ctx, const LibraryVariant& entry, TargetRun& run, Render render) {
+Result<SceneRun> check_query_scene(const Context& ctx, Result<QueryOutput> gpu,
+                                   const Variant& variant, const SceneFixture& fixture) {
+  if (!gpu) return gpu.error();
+  return check_scene(ctx, gpu->visibility, gpu->texel_reads, variant, fixture);
+}
+
+// screen_blur's chain checked step by step, so that one ambiguous point
+// compare in the factor does not spread through the blur: the factor against
+// the reference, then each later pass against the CPU's step applied to the
+// GPU's own input to it.
+Result<SceneRun> check_screen_blur_scene(const Context& ctx, const ScreenBlurOutput& gpu,
+                                         const Variant& variant, const SceneFixture& fixture,
+                                         const FloatImage& colour) {
+  auto scene = check_scene(ctx, gpu.factor, gpu.texel_reads, variant, fixture);
+  if (!scene) return scene.error();
+  auto blur =
+      check_chain(gpu.blurred, reference::screen_blur(variant, gpu.factor, fixture.receivers),
+                  reference::kBlurTolerance, "the blurred factor");
+  if (!blur) return blur.error();
+  auto composite = check_chain(gpu.composite, reference::composite(colour, gpu.blurred),
+                               reference::kCompositeTolerance, "the composite");
+  if (!composite) return composite.error();
+  scene->blur = *blur;
+  scene->composite = *composite;
+  return scene;
+}
+
+// Runs `check` (a scene run and its checks) on every scene of the target's
+// fixtures.
+template <typename Check>
+Status run_scenes(Context& ctx, TargetRun& run, Check check) {
   run.executed = true;
   run.pass = true;
   for (const SceneFixture& fixture : ctx.fixtures.at(run.target).scenes) {
-    Result<QueryOutput> gpu = render(fixture);
-    if (!gpu) return gpu.error();
-    auto scene = check_scene(ctx, *gpu, entry.variant, fixture);
+    Result<SceneRun> scene = check(fixture);
     if (!scene) return scene.error();
-    run.pass = run.pass && scene->comparison.pass;
+    run.pass = run.pass && scene->pass();
     run.scenes.push_back(std::move(*scene));
   }
   return {};
+}
+
+// The chain's four passes of `target` on every scene.
+Status run_screen_blur_scenes(Context& ctx, const LibraryVariant& entry, TargetRun& run) {
+  auto programs = load_screen_blur(ctx.library, entry, run.target);
+  if (!programs) return programs.error();
+  run.execution = programs->query.execution;
+  return run_scenes(ctx, run, [&](const SceneFixture& fixture) -> Result<SceneRun> {
+    const FloatImage colour =
+        reference::scene_colour(fixture.receivers.width, fixture.receivers.height);
+    auto gpu = ctx.engine.run_screen_blur(programs->programs(), *fixture.map, fixture.receivers,
+                                          colour, fixture.params);
+    if (!gpu) return gpu.error();
+    return check_screen_blur_scene(ctx, *gpu, entry.variant, fixture, colour);
+  });
 }
 
 Result<TargetRun> run_vulkan(Context& ctx, const LibraryVariant& entry, Target target) {
   TargetRun run;
   run.target = target;
   run.device = ctx.engine.device_info().name;
+  if (entry.variant.technique == Technique::screen_blur) {
+    PENUMBRA_TRY(run_screen_blur_scenes(ctx, entry, run));
+    return run;
+  }
   auto query = load_executable(ctx.library, entry, PassKind::query, target);
   if (!query) return query.error();
   run.execution = query->execution;
-  PENUMBRA_TRY(run_scenes(ctx, entry, run, [&](const SceneFixture& fixture) {
-    return ctx.engine.run_query_output(query->program, *fixture.map, fixture.receivers,
-                                       fixture.params);
+  PENUMBRA_TRY(run_scenes(ctx, run, [&](const SceneFixture& fixture) {
+    return check_query_scene(ctx,
+                             ctx.engine.run_query_output(query->program, *fixture.map,
+                                                         fixture.receivers, fixture.params),
+                             entry.variant, fixture);
   }));
   return run;
 }
@@ -131,6 +182,10 @@ Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target targe
   TargetRun run;
   run.target = target;
   run.backend = "gl";
+  if (entry.variant.technique == Technique::screen_blur) {
+    run.not_executed = std::string(kGlNoScreenBlur);
+    return run;
+  }
   if (!ctx.gl) {
     run.not_executed = ctx.gl_missing;
     return run;
@@ -139,8 +194,10 @@ Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target targe
   run.execution.front_end = "the OpenGL driver's GLSL compiler";
   auto texts = read_query_texts(ctx, entry, target);
   if (!texts) return texts.error();
-  PENUMBRA_TRY(run_scenes(ctx, entry, run, [&](const SceneFixture& fixture) {
-    return ctx.gl->run_query(*texts, fixture.normalized_depth, fixture.receivers, fixture.params);
+  PENUMBRA_TRY(run_scenes(ctx, run, [&](const SceneFixture& fixture) {
+    return check_query_scene(
+        ctx, ctx.gl->run_query(*texts, fixture.normalized_depth, fixture.receivers, fixture.params),
+        entry.variant, fixture);
   }));
   return run;
 }
@@ -205,10 +262,14 @@ void count(VerifyReport& report, const TargetRun& run) {
     return;
   }
   report.runs += run.scenes.size();
-  for (const SceneRun& s : run.scenes) report.failed += s.comparison.pass ? 0 : 1;
+  for (const SceneRun& s : run.scenes) report.failed += s.pass() ? 0 : 1;
 }
 
 }  // namespace
+
+bool SceneRun::pass() const {
+  return comparison.pass && (!blur || blur->pass) && (!composite || composite->pass);
+}
 
 bool VerifyReport::pass() const {
   const bool depth_ok = std::all_of(depth_checks.begin(), depth_checks.end(),

@@ -32,6 +32,8 @@ struct AxisValues {
   std::vector<std::string> disk;       // family names
   std::vector<std::string> traversal;  // kBruteForceTraversal
   std::vector<int> max_nodes;
+  std::vector<int> blur_radius;   // 1..kMaxBlurRadius
+  std::vector<bool> depth_aware;  // false gives variants with the key unset
   std::vector<Target> target;
 };
 

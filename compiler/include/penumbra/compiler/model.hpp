@@ -23,12 +23,14 @@ enum class Technique {
   minmax_pcf,
   backprojection,
   pcss_minmax,
+  screen_blur,
 };
 enum class Target { spirv, glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9 };
 
-inline constexpr std::array kAllTechniques = {
-    Technique::hard,       Technique::pcf_grid,       Technique::pcf_poisson, Technique::pcss,
-    Technique::minmax_pcf, Technique::backprojection, Technique::pcss_minmax};
+inline constexpr std::array kAllTechniques = {Technique::hard,        Technique::pcf_grid,
+                                              Technique::pcf_poisson, Technique::pcss,
+                                              Technique::minmax_pcf,  Technique::backprojection,
+                                              Technique::pcss_minmax, Technique::screen_blur};
 inline constexpr std::array kAllTargets = {Target::spirv,   Target::glsl450,   Target::glsl330,
                                            Target::essl300, Target::hlsl_dx10, Target::hlsl_dx9};
 
@@ -55,6 +57,12 @@ inline constexpr std::string_view kBruteForceTraversal = "brute_force";
 inline constexpr int kDefaultMaxNodes = 16384;  // when the key is unset
 inline constexpr int kMaxMaxNodes = 1048576;
 
+// screen_blur's `blur_radius` R: taps -R..R per blur pass (seed 003).
+inline constexpr int kMaxBlurRadius = 32;
+// screen_blur with depth_aware: a tap is dropped when its receiver z differs
+// from the centre's by more than this fraction of the centre's z.
+inline constexpr float kBlurDepthTolerance = 0.02f;
+
 using Point2 = std::array<float, 2>;
 
 // A Poisson disk exactly as baked into shaders (float32 values).
@@ -74,11 +82,14 @@ struct VariantKeys {
   std::optional<std::string> disk;       // disk family name: pcf_poisson, pcss, pcss_minmax
   std::optional<std::string> traversal;  // minmax_pcf, backprojection: "brute_force"; unset = mip
   std::optional<int> max_nodes;          // backprojection: traversal work bound; unset = default
+  std::optional<int> blur_radius;        // screen_blur: Gaussian taps each side (sigma = R / 2)
+  std::optional<bool> depth_aware;       // screen_blur: true or unset (a manifest's false)
 };
 
 // The keys' names, in the one order every listing of keys follows.
-inline constexpr std::array<std::string_view, 6> kVariantKeyNames = {
-    "kernel", "blocker_samples", "pcf_samples", "disk", "traversal", "max_nodes"};
+inline constexpr std::array<std::string_view, 8> kVariantKeyNames = {
+    "kernel",    "blocker_samples", "pcf_samples", "disk",
+    "traversal", "max_nodes",       "blur_radius", "depth_aware"};
 
 // Calls f(name, key) for each key in kVariantKeyNames order, set or not; `key`
 // is the std::optional member, const when `keys` is.
@@ -91,6 +102,8 @@ void for_each_key(Keys& keys, F&& f) {
   f(kVariantKeyNames[3], keys.disk);
   f(kVariantKeyNames[4], keys.traversal);
   f(kVariantKeyNames[5], keys.max_nodes);
+  f(kVariantKeyNames[6], keys.blur_radius);
+  f(kVariantKeyNames[7], keys.depth_aware);
 }
 
 // minmax_pcf's baked 1 / K^2 (MINMAX_PCF_INV_AREA), rounded to float. The
@@ -109,6 +122,11 @@ inline float minmax_pcf_inv_area(int kernel) {
 // a K x K window, for any map and position (its loop bound).
 int minmax_max_visits(int kernel);
 
+// screen_blur's baked weights (BLUR_WEIGHTS, index.json `blur_weights`) for
+// radius R >= 1: w_k = exp(-k^2 / (2 sigma^2)) with sigma = R / 2 for
+// k = -R..R, divided by their sum in double and then rounded to float.
+std::vector<float> gaussian_weights(int radius);
+
 // One fully specified permutation: what gets compiled and verified.
 struct Variant {
   std::string name;  // stable, e.g. "pcss_b16_p16_whitepaper16"
@@ -117,11 +135,12 @@ struct Variant {
   std::optional<Disk> blocker_disk;  // pcss only
   std::optional<Disk> pcf_disk;      // pcf_poisson and pcss
   std::vector<Target> targets;       // targets this variant is emitted for, in kAllTargets order
+  std::vector<float> blur_weights;   // screen_blur: baked Gaussian weights, taps -R..R
 };
 
 // Builds the stable variant name from technique and keys:
 // hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16,
-// minmax_pcf_k16_brute_force, backprojection_n4096.
+// minmax_pcf_k16_brute_force, backprojection_n4096, screen_blur_r4_depth_aware.
 std::string variant_name(Technique technique, const VariantKeys& keys);
 
 }  // namespace penumbra

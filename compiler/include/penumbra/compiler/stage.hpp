@@ -23,10 +23,14 @@ enum class PassKind {
   depth,          // the shadow map (the whitepaper's step 1)
   minmax_init,    // min-max mip level 1 from the map (seed 002)
   minmax_reduce,  // min-max mip level l + 1 from level l
-  query,          // a technique's visibility per receiver
+  query,          // a technique's visibility per receiver (screen_blur: the unblurred factor)
+  blur_h,         // screen_blur: horizontal Gaussian blur of the factor buffer (seed 003)
+  blur_v,         // screen_blur: vertical Gaussian blur
+  composite,      // screen_blur: a scene colour times the blurred factor
 };
-inline constexpr std::array kAllPassKinds = {PassKind::depth, PassKind::minmax_init,
-                                             PassKind::minmax_reduce, PassKind::query};
+inline constexpr std::array kAllPassKinds = {
+    PassKind::depth,  PassKind::minmax_init, PassKind::minmax_reduce, PassKind::query,
+    PassKind::blur_h, PassKind::blur_v,      PassKind::composite};
 std::string_view to_string(PassKind pass);
 std::optional<PassKind> parse_pass(std::string_view name);
 std::string_view to_string(ShaderStage stage);

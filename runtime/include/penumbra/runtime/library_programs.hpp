@@ -4,6 +4,7 @@
 
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/light.hpp"
+#include "penumbra/runtime/engine.hpp"
 #include "penumbra/runtime/program.hpp"
 
 namespace penumbra {
@@ -24,6 +25,21 @@ struct ExecutableProgram {
 // or HLSL front end. Reflected either way, so the engine binds by name.
 Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
                                           PassKind pass, Target target);
+
+// A screen_blur variant's four passes for `target` (Engine::run_screen_blur).
+struct ScreenBlurExecutables {
+  ExecutableProgram query;
+  ExecutableProgram blur_h;
+  ExecutableProgram blur_v;
+  ExecutableProgram composite;
+
+  ScreenBlurPrograms programs() const {
+    return {query.program, blur_h.program, blur_v.program, composite.program};
+  }
+};
+
+Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
+                                               const LibraryVariant& variant, Target target);
 
 // The emitted text (or .spv bytes) of one stage of a pass.
 Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string_view>
 
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
@@ -18,12 +20,38 @@ struct VerifyOptions {
   bool gl = true;  // also run glsl330/glsl450 through the OpenGL driver when built with GL
 };
 
+// A GPU image against the CPU's next step of screen_blur's chain run on the
+// GPU's own previous image: every channel of every pixel, no ambiguity mask.
+struct ChainCheck {
+  std::size_t values = 0;          // pixels x channels compared
+  std::size_t over_tolerance = 0;  // values with |gpu - cpu| > tolerance (or NaN)
+  double max_abs_error = 0.0;      // infinity for a NaN
+  double tolerance = 0.0;
+  bool pass = false;  // values > 0 and over_tolerance == 0
+};
+
 // One variant on one scene.
 struct SceneRun {
   std::string scene;
+  // The query's visibility against the reference (screen_blur: the
+  // unblurred shadow factor against the reference factor).
   reference::Comparison comparison;
   double mean_texel_reads = 0.0;  // the query's .y over all pixels (QueryOutput::texel_reads)
+  // screen_blur only: the blurred factor against reference::screen_blur of
+  // the GPU's factor (reference::kBlurTolerance), and the composite against
+  // reference::composite of reference::scene_colour and the GPU's blurred
+  // factor (reference::kCompositeTolerance).
+  std::optional<ChainCheck> blur;
+  std::optional<ChainCheck> composite;
+
+  bool pass() const;  // every check above passed
 };
+
+// Why screen_blur's GL runs are not executed (TargetRun::not_executed): not
+// a failure.
+inline constexpr std::string_view kGlNoScreenBlur =
+    "screen_blur is not executed on GL: the GL path runs single-pass queries and the min-max "
+    "mip; the blur chain (query, blur_h, blur_v, composite) runs on Vulkan";
 
 // One variant, one target, one backend ("vulkan" or "gl").
 struct TargetRun {

@@ -1,0 +1,17 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+uniform highp sampler2D scene_colour;
+uniform highp sampler2D screen_factor;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 colour;
+
+void main()
+{
+    vec4 scene = textureLod(scene_colour, screen_uv, 0.0);
+    float factor = textureLod(screen_factor, screen_uv, 0.0).x;
+    colour = vec4(scene.xyz * factor, scene.w);
+}
+

@@ -1,0 +1,59 @@
+#version 330
+
+struct ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
+};
+
+uniform ShadowParams params;
+
+uniform sampler2D shadow_depth;
+uniform sampler2D receivers;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+float shadow_compare_point(vec2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 1.0;
+    float param = z_receiver;
+    return float(shadow_reference(param) <= textureLod(shadow_depth, uv, 0.0).x);
+}
+
+float shadow_visibility(vec3 query)
+{
+    float sum = 0.0;
+    for (int j = -1; j <= 1; j++)
+    {
+        for (int i = -1; i <= 1; i++)
+        {
+            vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
+            float param_1 = query.z;
+            float _105 = shadow_compare_point(param, param_1);
+            sum += _105;
+        }
+    }
+    return sum / 9.0;
+}
+
+void main()
+{
+    penumbra_texel_reads = 0.0;
+    vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
+    vec3 param = query;
+    float _128 = shadow_visibility(param);
+    float visible = _128;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
+}
+
