@@ -47,6 +47,26 @@ FloatImage split_receivers(float left, float right) {
   return receivers;
 }
 
+// Blocks of 5 x 4 texels alternating between 0 (shadow) and 1 (lit), so the
+// factor varies along both axes.
+FloatImage checker_map() {
+  FloatImage map(kWidth, kHeight, 1);
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) map.data[y * kWidth + x] = float((x / 5 + y / 4) % 2);
+  }
+  return map;
+}
+
+// Receivers like split_receivers, but at z `top` in rows y < kHeight / 2 and
+// `bottom` below: a depth step across rows, for blur_v's depth test.
+FloatImage row_split_receivers(float top, float bottom) {
+  FloatImage receivers = split_receivers(top, top);
+  for (int y = kHeight / 2; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) receivers.data[3 * (y * kWidth + x) + 2] = bottom;
+  }
+  return receivers;
+}
+
 double max_difference(const FloatImage& a, const FloatImage& b) {
   double worst = 0.0;
   for (std::size_t i = 0; i < a.data.size(); ++i) {
@@ -131,6 +151,26 @@ TEST_P(ScreenBlurChain, StepMatchesTheCpuBlurOfTheGpuFactor) {
           EXPECT_EQ(output.blurred.at(0, y, 0), 0.0f) << y;
           EXPECT_NEAR(output.blurred.at(kWidth - 1, y, 0), 1.0f, 1e-6) << y;
         }
+      });
+}
+
+// A factor that varies along both axes and receivers with a depth step
+// across rows: blur_v's taps, its clamp at the top and bottom edges and the
+// orientation of each pass against the next all show in the result.
+TEST_P(ScreenBlurChain, CheckerMatchesTheCpuBlurOfTheGpuFactorAlongBothAxes) {
+  run_every_target(
+      checker_map(), row_split_receivers(0.5f, 0.6f),
+      [](const Variant& variant, const ScreenBlurOutput& output) {
+        const FloatImage receivers = row_split_receivers(0.5f, 0.6f);
+        const bool depth_aware = variant.keys.depth_aware.value_or(false);
+        // The factor really varies down a column (3x3 compares across blocks).
+        EXPECT_NE(output.factor.at(2, 0, 0), output.factor.at(2, kHeight - 1, 0));
+        const FloatImage expected_h = reference::blur_horizontal(
+            output.factor, variant.blur_weights, depth_aware ? &receivers : nullptr);
+        EXPECT_LE(max_difference(output.blurred_h, expected_h), reference::kBlurTolerance);
+        EXPECT_LE(max_difference(output.blurred,
+                                 reference::screen_blur(variant, output.factor, receivers)),
+                  reference::kBlurTolerance);
       });
 }
 

@@ -66,9 +66,6 @@ Status check_eval_inputs(const EvalInputs& inputs) {
 Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
                                    Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  auto program = load_executable(library, variant, PassKind::query, target);
-  if (!program) return program.error();
-
   const float depth_scale = depth_scale_for(max_depth(inputs));
   FloatImage normalized = inputs.shadow_map;
   for (float& d : normalized.data) d *= depth_scale;  // exact: a power of two
@@ -81,6 +78,8 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
   if (variant.variant.technique == Technique::screen_blur) {
     return eval_screen_blur(library, variant, target, inputs, **map, params, engine);
   }
+  auto program = load_executable(library, variant, PassKind::query, target);
+  if (!program) return program.error();
   if (uses_minmax_mip(variant.variant.technique)) {
     auto init = load_executable(library, variant, PassKind::minmax_init, target);
     if (!init) return init.error();
