@@ -37,7 +37,7 @@ Result<std::unique_ptr<ShadowMapImages>> render_depth(
   draw.target.depth_final = kMapDepthLayout;
   draw.target.next_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   draw.target.next_access = VK_ACCESS_SHADER_READ_BIT;
-  PENUMBRA_TRY(draw_pass(context, draw));
+  if (auto drawn = draw_pass(context, draw); !drawn) return drawn.error();
   return std::move(*images);
 }
 

@@ -73,7 +73,6 @@ Result<MinmaxBuild> build_minmax(Context& context, ShadowMapImages& map, const P
   const int top = static_cast<int>(sizes.size());
   MinmaxBuild build;
   build.levels = top;
-  if (context.timestamps) build.gpu_ms = 0.0;
   std::vector<vk::Image> levels;
   LevelSize source{width, height};
   for (int level = 1; level <= top; ++level) {
@@ -103,19 +102,11 @@ Result<MinmaxBuild> build_minmax(Context& context, ShadowMapImages& map, const P
       draw.resources.minmax_source = &levels.back();
     }
     draw.positions = kFullScreenTriangle;
-    draw.target.colour = &*target;
     // Read next by the following reduce pass and by the copy into the chain.
-    draw.target.colour_final = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    draw.target.next_stages =
-        VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
-    draw.target.next_access = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-    draw.timer = context.timestamps ? &*context.timestamps : nullptr;
-    PENUMBRA_TRY(draw_pass(context, draw));
-    if (context.timestamps) {
-      auto ms = context.timestamps->elapsed_ms();
-      if (!ms) return ms.error();
-      *build.gpu_ms += *ms;
-    }
+    draw.target = sampled_target(*target);
+    auto elapsed = draw_pass(context, draw);
+    if (!elapsed) return elapsed.error();
+    add_gpu_time(build.gpu_ms, *elapsed);
     levels.push_back(std::move(*target));
     source = size;
   }

@@ -66,7 +66,8 @@ Status check_viewport_support(const Context& context, const PassDraw& draw) {
 
 void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_pass,
                  VkFramebuffer framebuffer, const PassPipeline& pipeline,
-                 const PassDescriptors& descriptors, const std::optional<vk::Buffer>& vertices) {
+                 const PassDescriptors& descriptors, const std::optional<vk::Buffer>& vertices,
+                 const vk::TimestampQueries* timer) {
   const VkExtent2D extent = draw.target.colour->extent();
   VkClearValue clears[2]{};
   clears[0].color.float32[0] = 1.0f;  // the far plane, in normalized depth
@@ -78,7 +79,7 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
   begin.renderArea = {{0, 0}, extent};
   begin.clearValueCount = draw.target.depth ? 2 : 1;
   begin.pClearValues = clears;
-  if (draw.timer) draw.timer->begin(cmd);
+  if (timer) timer->begin(cmd);
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
   const auto& sets = descriptors.sets();
@@ -99,12 +100,25 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
     vkCmdDraw(cmd, count, 1, 0, 0);
   }
   vkCmdEndRenderPass(cmd);
-  if (draw.timer) draw.timer->end(cmd);
+  if (timer) timer->end(cmd);
 }
 
 }  // namespace
 
-Status draw_pass(Context& context, const PassDraw& draw) {
+PassTarget sampled_target(const vk::Image& colour) {
+  PassTarget target;
+  target.colour = &colour;
+  target.colour_final = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  target.next_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+  target.next_access = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  return target;
+}
+
+void add_gpu_time(std::optional<double>& total, std::optional<double> elapsed) {
+  if (elapsed) total = total.value_or(0.0) + *elapsed;
+}
+
+Result<std::optional<double>> draw_pass(Context& context, const PassDraw& draw) {
   PENUMBRA_TRY(check_viewport_support(context, draw));
   const VkDevice device = context.device->get();
   const std::vector<std::string_view> available = draw.resources.available();
@@ -128,12 +142,17 @@ Status draw_pass(Context& context, const PassDraw& draw) {
   auto vertices = create_vertices(*context.device, draw.positions);
   if (!vertices) return vertices.error();
 
-  return context.commands->submit(
+  const vk::TimestampQueries* timer = context.timestamps ? &*context.timestamps : nullptr;
+  PENUMBRA_TRY(context.commands->submit(
       [&](VkCommandBuffer cmd) {
         record_draw(cmd, draw, render_pass->get(), framebuffer->get(), *pipeline, *descriptors,
-                    *vertices);
+                    *vertices, timer);
       },
-      "the " + std::string(draw.shape.name));
+      "the " + std::string(draw.shape.name)));
+  if (!timer) return std::optional<double>();
+  auto ms = timer->elapsed_ms();
+  if (!ms) return ms.error();
+  return std::optional<double>(*ms);
 }
 
 }  // namespace penumbra::detail

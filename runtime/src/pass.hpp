@@ -10,7 +10,6 @@
 #include "pass_descriptors.hpp"
 #include "pass_pipeline.hpp"
 #include "vk/image.hpp"
-#include "vk/timestamp_queries.hpp"
 
 namespace penumbra::detail {
 
@@ -31,14 +30,21 @@ struct PassDraw {
   PassResources resources;
   std::span<const float> positions;  // shape.position_components floats per vertex
   PassTarget target;
-  // When set, brackets the render pass with its timestamps.
-  const vk::TimestampQueries* timer = nullptr;
 };
+
+// A colour target that the next pass samples and a transfer may copy or read
+// back: left in SHADER_READ_ONLY_OPTIMAL (the min-max levels, the screen_blur
+// chain's buffers).
+PassTarget sampled_target(const vk::Image& colour);
 
 // Binds the program's resources by reflection, draws the positions as a
 // triangle list over the whole target (through a flipped viewport for a
-// program with d3d_viewport), and waits for the result; then draw.timer, if
-// any, holds the render pass's GPU time.
-Status draw_pass(Context& context, const PassDraw& draw);
+// program with d3d_viewport), and waits for the result. Returns the render
+// pass's GPU time when the context has timestamp queries, else nullopt.
+Result<std::optional<double>> draw_pass(Context& context, const PassDraw& draw);
+
+// `total` plus `elapsed`: a sum of pass times that stays absent while no pass
+// was timed.
+void add_gpu_time(std::optional<double>& total, std::optional<double> elapsed);
 
 }  // namespace penumbra::detail

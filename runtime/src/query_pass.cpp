@@ -64,15 +64,11 @@ Result<QueryOutput> run_query(Context& context, const PassProgram& program,
   draw.target.colour_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   draw.target.next_stages = VK_PIPELINE_STAGE_TRANSFER_BIT;
   draw.target.next_access = VK_ACCESS_TRANSFER_READ_BIT;
-  draw.timer = context.timestamps ? &*context.timestamps : nullptr;
-  PENUMBRA_TRY(draw_pass(context, draw));
+  auto elapsed = draw_pass(context, draw);
+  if (!elapsed) return elapsed.error();
 
   QueryOutput output;
-  if (context.timestamps) {
-    auto ms = context.timestamps->elapsed_ms();
-    if (!ms) return ms.error();
-    output.gpu_ms = *ms;
-  }
+  output.gpu_ms = *elapsed;
   auto texels = read_image(*context.device, *context.commands, *visibility,
                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 2, "the visibility image");
   if (!texels) return texels.error();

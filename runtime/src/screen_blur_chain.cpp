@@ -65,17 +65,10 @@ Status draw_chain_pass(Context& context, const PassProgram& program, std::string
   draw.shape = {name, shape_target, kQueryPositionFormat, 2, false, false};
   draw.resources = resources;
   draw.positions = kFullScreenTriangle;
-  draw.target.colour = &target;
-  draw.target.colour_final = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  draw.target.next_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
-  draw.target.next_access = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-  draw.timer = context.timestamps ? &*context.timestamps : nullptr;
-  PENUMBRA_TRY(draw_pass(context, draw));
-  if (context.timestamps) {
-    auto ms = context.timestamps->elapsed_ms();
-    if (!ms) return ms.error();
-    *gpu_ms += *ms;
-  }
+  draw.target = sampled_target(target);
+  auto elapsed = draw_pass(context, draw);
+  if (!elapsed) return elapsed.error();
+  add_gpu_time(gpu_ms, *elapsed);
   return {};
 }
 
@@ -107,7 +100,6 @@ Result<ScreenBlurOutput> run_screen_blur(Context& context, const ScreenBlurProgr
   ParamBlock screen_params = params;
   screen_params["screen_size"] = size_vec4(receivers.width, receivers.height);
   ScreenBlurOutput output;
-  if (context.timestamps) output.gpu_ms = 0.0;
 
   auto factor = create_target(context, receivers, kScreenFactorFormat, "the shadow factor image");
   if (!factor) return factor.error();
