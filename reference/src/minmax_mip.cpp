@@ -51,13 +51,17 @@ TexelRect MinMaxMip::extent(int level, int i, int j) const {
   return clip(block, width(0), height(0));
 }
 
-int start_level(const TexelRect& window) {
+int level_spanning(const TexelRect& window, int nodes) {
   int level = 0;
-  while ((window.x1 >> level) - (window.x0 >> level) > 1 ||
-         (window.y1 >> level) - (window.y0 >> level) > 1) {
+  while ((window.x1 >> level) - (window.x0 >> level) >= nodes ||
+         (window.y1 >> level) - (window.y0 >> level) >= nodes) {
     ++level;
   }
   return level;
+}
+
+int start_level(const TexelRect& window) {
+  return level_spanning(window, 2);
 }
 
 }  // namespace penumbra::reference

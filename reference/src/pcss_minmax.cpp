@@ -41,23 +41,13 @@ EdgeChoices edge_choices(float edge, double window) {
   return {{nearest, nearest}, 1};
 }
 
-// The finest level at which `window` spans at most three nodes per axis.
-int search_level(const TexelRect& window) {
-  int level = 0;
-  while ((window.x1 >> level) - (window.x0 >> level) > 2 ||
-         (window.y1 >> level) - (window.y0 >> level) > 2) {
-    ++level;
-  }
-  return level;
-}
-
 // The blocker depth a window gives: over the nodes of the search level that
 // meet it and whose minimum occludes, the minima weighted by the window
 // texels each node holds.
 std::optional<float> blocker_depth(const MinMaxMip& mip, const TexelRect& window, float z_ref) {
   const TexelRect inside = clip(window, mip.width(0), mip.height(0));
   if (inside.empty()) return std::nullopt;
-  const int level = search_level(inside);
+  const int level = level_spanning(inside, 3);
   double depth_sum = 0.0;
   long long texels = 0;
   for (int j = inside.y0 >> level; j <= inside.y1 >> level; ++j) {

@@ -46,22 +46,27 @@ bool minmax_window_empty(vec4 window) {
   return any(greaterThan(window.xy, window.zw));
 }
 
+// The smallest level at which `window` meets at most `nodes` nodes per axis.
+float minmax_level_spanning(vec4 window, float nodes) {
+  float level = 0.0;
+  float inv_span = 1.0;  // 2^-level, exact
+  for (int k = 0; k < MINMAX_MAX_LEVEL; ++k) {
+    vec2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+    if (max(spanned.x, spanned.y) < nodes) break;
+    level += 1.0;
+    inv_span *= 0.5;
+  }
+  return level;
+}
+
 // The cursor on the first of the 2x2 roots: at the smallest level s where
 // the window spans at most two nodes per axis.
 MinmaxCursor minmax_begin(vec4 window) {
   MinmaxCursor cursor;
-  cursor.level = 0.0;
-  cursor.span = 1.0;
-  float inv_span = 1.0;  // 2^-level, exact
-  for (int k = 0; k < MINMAX_MAX_LEVEL; ++k) {
-    vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-    if (max(nodes.x, nodes.y) <= 1.0) break;
-    cursor.level += 1.0;
-    cursor.span *= 2.0;
-    inv_span *= 0.5;
-  }
+  cursor.level = minmax_level_spanning(window, 2.0);
+  cursor.span = exp2(cursor.level);  // exact for an integer level
   cursor.start = cursor.level;
-  cursor.first_root = floor(window.xy * inv_span);
+  cursor.first_root = floor(window.xy / cursor.span);
   cursor.node = cursor.first_root;
   cursor.done = false;
   return cursor;

@@ -8,19 +8,6 @@
 #include "common/minmax_traversal.glsl"
 #include "techniques/pcss_filter.glsl"
 
-// The finest level at which `window` spans at most three nodes per axis.
-float minmax_search_level(vec4 window) {
-  float level = 0.0;
-  float inv_span = 1.0;  // 2^-level, exact
-  for (int k = 0; k < MINMAX_MAX_LEVEL; ++k) {
-    vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-    if (max(nodes.x, nodes.y) <= 2.0) break;
-    level += 1.0;
-    inv_span *= 0.5;
-  }
-  return level;
-}
-
 // Whether the search window holds a blocker, and then the blockers' linear
 // z: node minima weighted by the window texels of each node.
 bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float reference) {
@@ -30,7 +17,7 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
   vec4 window = minmax_clip_window(floor((uv - searchWidth) * map_size),
                                    floor((uv + searchWidth) * map_size));
   if (minmax_window_empty(window)) return false;
-  float level = minmax_search_level(window);
+  float level = minmax_level_spanning(window, 3.0);
   float span = exp2(level);
   vec2 first = floor(window.xy / span);
   float depth_sum = 0.0;

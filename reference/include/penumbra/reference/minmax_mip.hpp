@@ -74,6 +74,10 @@ class MinMaxMip {
 // that the window meets at most 2 x 2 nodes of that level.
 int start_level(const TexelRect& window);
 
+// The smallest l at which a non-empty window inside the map meets at most
+// `nodes` nodes per axis (start_level() is level_spanning(window, 2)).
+int level_spanning(const TexelRect& window, int nodes);
+
 struct MipCount {
   long long count = 0;  // occluding texels (depth < z_ref) in the window, inside the map
   int visits = 0;       // nodes taken from the traversal stack, skipped ones included

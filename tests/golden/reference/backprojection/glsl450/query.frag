@@ -68,25 +68,32 @@ float backprojection_whole_light_area()
     return (4.0 * params.light.x) * params.light.x;
 }
 
-MinmaxCursor minmax_begin(vec4 window)
+float minmax_level_spanning(vec4 window, float nodes)
 {
-    MinmaxCursor cursor;
-    cursor.level = 0.0;
-    cursor.span = 1.0;
+    float level = 0.0;
     float inv_span = 1.0;
     for (int k = 0; k < 16; k++)
     {
-        vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-        if (max(nodes.x, nodes.y) <= 1.0)
+        vec2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
         {
             break;
         }
-        cursor.level += 1.0;
-        cursor.span *= 2.0;
+        level += 1.0;
         inv_span *= 0.5;
     }
+    return level;
+}
+
+MinmaxCursor minmax_begin(vec4 window)
+{
+    vec4 param = window;
+    float param_1 = 2.0;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
     cursor.start = cursor.level;
-    cursor.first_root = floor(window.xy * inv_span);
+    cursor.first_root = floor(window.xy / vec2(cursor.span));
     cursor.node = cursor.first_root;
     cursor.done = false;
     return cursor;
@@ -109,8 +116,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _162 = shadow_texel(param);
-        float depth = _162;
+        float _167 = shadow_texel(param);
+        float depth = _167;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -122,8 +129,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _347 = minmax_node(param, param_1);
-    return _347;
+    vec2 _360 = minmax_node(param, param_1);
+    return _360;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -156,17 +163,17 @@ bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receive
     vec3 param_2 = query;
     vec2 param_3 = receiver_slope;
     vec4 rect = backprojection_project(param, param_1, param_2, param_3);
-    bool _547 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _558;
-    if (_547)
+    bool _560 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _571;
+    if (_560)
     {
-        _558 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _571 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _558 = _547;
+        _571 = _560;
     }
-    return _558;
+    return _571;
 }
 
 float backprojection_light_area(vec4 rect)
@@ -184,19 +191,19 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    vec2 _378;
+    vec2 _391;
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
         if (root)
         {
-            _378 = cursor.first_root;
+            _391 = cursor.first_root;
         }
         else
         {
-            _378 = floor(cursor.node * 0.5) * 2.0;
+            _391 = floor(cursor.node * 0.5) * 2.0;
         }
-        vec2 first_sibling = _378;
+        vec2 first_sibling = _391;
         vec2 offset = cursor.node - first_sibling;
         if (offset.x < 0.5)
         {
@@ -242,38 +249,38 @@ float backprojection_area(vec3 query, vec4 window, float limit)
                 if (!minmax_window_empty(param_4))
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _677 = minmax_cursor_read(param_5);
-                    vec2 range = _677;
+                    vec2 _690 = minmax_cursor_read(param_5);
+                    vec2 range = _690;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params.sampling.w;
-                    bool _691 = range.x < limit;
-                    bool _703;
-                    if (_691)
+                    bool _704 = range.x < limit;
+                    bool _716;
+                    if (_704)
                     {
                         vec4 param_7 = texels;
                         float param_8 = z_min;
                         vec3 param_9 = query;
                         vec2 param_10 = receiver_slope;
-                        _703 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _716 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _703 = _691;
+                        _716 = _704;
                     }
-                    if (_703)
+                    if (_716)
                     {
-                        bool _709 = range.y < limit;
-                        bool _717;
-                        if (_709)
+                        bool _722 = range.y < limit;
+                        bool _730;
+                        if (_722)
                         {
-                            _717 = range.x == range.y;
+                            _730 = range.x == range.y;
                         }
                         else
                         {
-                            _717 = _709;
+                            _730 = _722;
                         }
-                        if (_717)
+                        if (_730)
                         {
                             vec4 param_11 = texels;
                             float param_12 = z_min;
@@ -311,8 +318,8 @@ float shadow_visibility(vec3 query)
 {
     float param = query.z;
     float limit = min(shadow_reference(param), query.z * params.sampling.z);
-    vec2 _781 = minmax_top_node();
-    float map_min = _781.x;
+    vec2 _794 = minmax_top_node();
+    float map_min = _794.x;
     if (!(map_min < limit))
     {
         return 1.0;
@@ -328,8 +335,8 @@ float shadow_visibility(vec3 query)
     vec3 param_4 = query;
     vec4 param_5 = window;
     float param_6 = limit;
-    float _811 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0, 1.0 - (_811 / backprojection_whole_light_area()));
+    float _824 = backprojection_area(param_4, param_5, param_6);
+    return max(0.0, 1.0 - (_824 / backprojection_whole_light_area()));
 }
 
 void main()
@@ -337,8 +344,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _829 = shadow_visibility(param);
-    float visible = _829;
+    float _842 = shadow_visibility(param);
+    float visible = _842;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

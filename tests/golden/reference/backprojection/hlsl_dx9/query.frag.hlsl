@@ -76,25 +76,32 @@ float backprojection_whole_light_area()
     return (4.0f * params_light.x) * params_light.x;
 }
 
-MinmaxCursor minmax_begin(float4 window)
+float minmax_level_spanning(float4 window, float nodes)
 {
-    MinmaxCursor cursor;
-    cursor.level = 0.0f;
-    cursor.span = 1.0f;
+    float level = 0.0f;
     float inv_span = 1.0f;
     for (int k = 0; k < 16; k++)
     {
-        float2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-        if (max(nodes.x, nodes.y) <= 1.0f)
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
         {
             break;
         }
-        cursor.level += 1.0f;
-        cursor.span *= 2.0f;
+        level += 1.0f;
         inv_span *= 0.5f;
     }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
     cursor.start = cursor.level;
-    cursor.first_root = floor(window.xy * inv_span);
+    cursor.first_root = floor(window.xy / cursor.span.xx);
     cursor.node = cursor.first_root;
     cursor.done = false;
     return cursor;
@@ -117,8 +124,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _162 = shadow_texel(param);
-        float depth = _162;
+        float _167 = shadow_texel(param);
+        float depth = _167;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -130,8 +137,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _347 = minmax_node(param, param_1);
-    return _347;
+    float2 _360 = minmax_node(param, param_1);
+    return _360;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -164,19 +171,19 @@ bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 r
     float3 param_2 = query;
     float2 param_3 = receiver_slope;
     float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _545 = params_light.x.xx;
-    bool _547 = all(bool2(rect.xy.x <= _545.x, rect.xy.y <= _545.y));
-    bool _558;
-    if (_547)
+    float2 _558 = params_light.x.xx;
+    bool _560 = all(bool2(rect.xy.x <= _558.x, rect.xy.y <= _558.y));
+    bool _571;
+    if (_560)
     {
-        float2 _555 = (-params_light.x).xx;
-        _558 = all(bool2(rect.zw.x >= _555.x, rect.zw.y >= _555.y));
+        float2 _568 = (-params_light.x).xx;
+        _571 = all(bool2(rect.zw.x >= _568.x, rect.zw.y >= _568.y));
     }
     else
     {
-        _558 = _547;
+        _571 = _560;
     }
-    return _558;
+    return _571;
 }
 
 float backprojection_light_area(float4 rect)
@@ -194,19 +201,19 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    float2 _378;
+    float2 _391;
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
         if (root)
         {
-            _378 = cursor.first_root;
+            _391 = cursor.first_root;
         }
         else
         {
-            _378 = floor(cursor.node * 0.5f) * 2.0f;
+            _391 = floor(cursor.node * 0.5f) * 2.0f;
         }
-        float2 first_sibling = _378;
+        float2 first_sibling = _391;
         float2 offset = cursor.node - first_sibling;
         if (offset.x < 0.5f)
         {
@@ -252,38 +259,38 @@ float backprojection_area(float3 query, float4 window, float limit)
                 if (!minmax_window_empty(param_4))
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _677 = minmax_cursor_read(param_5);
-                    float2 range = _677;
+                    float2 _690 = minmax_cursor_read(param_5);
+                    float2 range = _690;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params_sampling.w;
-                    bool _691 = range.x < limit;
-                    bool _703;
-                    if (_691)
+                    bool _704 = range.x < limit;
+                    bool _716;
+                    if (_704)
                     {
                         float4 param_7 = texels;
                         float param_8 = z_min;
                         float3 param_9 = query;
                         float2 param_10 = receiver_slope;
-                        _703 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _716 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _703 = _691;
+                        _716 = _704;
                     }
-                    if (_703)
+                    if (_716)
                     {
-                        bool _709 = range.y < limit;
-                        bool _717;
-                        if (_709)
+                        bool _722 = range.y < limit;
+                        bool _730;
+                        if (_722)
                         {
-                            _717 = range.x == range.y;
+                            _730 = range.x == range.y;
                         }
                         else
                         {
-                            _717 = _709;
+                            _730 = _722;
                         }
-                        if (_717)
+                        if (_730)
                         {
                             float4 param_11 = texels;
                             float param_12 = z_min;
@@ -321,8 +328,8 @@ float shadow_visibility(float3 query)
 {
     float param = query.z;
     float limit = min(shadow_reference(param), query.z * params_sampling.z);
-    float2 _781 = minmax_top_node();
-    float map_min = _781.x;
+    float2 _794 = minmax_top_node();
+    float map_min = _794.x;
     if (!(map_min < limit))
     {
         return 1.0f;
@@ -338,8 +345,8 @@ float shadow_visibility(float3 query)
     float3 param_4 = query;
     float4 param_5 = window;
     float param_6 = limit;
-    float _811 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0f, 1.0f - (_811 / backprojection_whole_light_area()));
+    float _824 = backprojection_area(param_4, param_5, param_6);
+    return max(0.0f, 1.0f - (_824 / backprojection_whole_light_area()));
 }
 
 void frag_main()
@@ -347,8 +354,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _829 = shadow_visibility(param);
-    float visible = _829;
+    float _842 = shadow_visibility(param);
+    float visible = _842;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

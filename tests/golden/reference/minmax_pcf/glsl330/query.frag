@@ -45,25 +45,32 @@ bool minmax_window_empty(vec4 window)
     return any(greaterThan(window.xy, window.zw));
 }
 
-MinmaxCursor minmax_begin(vec4 window)
+float minmax_level_spanning(vec4 window, float nodes)
 {
-    MinmaxCursor cursor;
-    cursor.level = 0.0;
-    cursor.span = 1.0;
+    float level = 0.0;
     float inv_span = 1.0;
     for (int k = 0; k < 16; k++)
     {
-        vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-        if (max(nodes.x, nodes.y) <= 1.0)
+        vec2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
         {
             break;
         }
-        cursor.level += 1.0;
-        cursor.span *= 2.0;
+        level += 1.0;
         inv_span *= 0.5;
     }
+    return level;
+}
+
+MinmaxCursor minmax_begin(vec4 window)
+{
+    vec4 param = window;
+    float param_1 = 2.0;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
     cursor.start = cursor.level;
-    cursor.first_root = floor(window.xy * inv_span);
+    cursor.first_root = floor(window.xy / vec2(cursor.span));
     cursor.node = cursor.first_root;
     cursor.done = false;
     return cursor;
@@ -86,8 +93,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _123 = shadow_texel(param);
-        float depth = _123;
+        float _128 = shadow_texel(param);
+        float depth = _128;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -99,8 +106,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _294 = minmax_node(param, param_1);
-    return _294;
+    vec2 _307 = minmax_node(param, param_1);
+    return _307;
 }
 
 float minmax_texel_count(vec4 part)
@@ -117,19 +124,19 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    vec2 _325;
+    vec2 _338;
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
         if (root)
         {
-            _325 = cursor.first_root;
+            _338 = cursor.first_root;
         }
         else
         {
-            _325 = floor(cursor.node * 0.5) * 2.0;
+            _338 = floor(cursor.node * 0.5) * 2.0;
         }
-        vec2 first_sibling = _325;
+        vec2 first_sibling = _338;
         vec2 offset = cursor.node - first_sibling;
         if (offset.x < 0.5)
         {
@@ -179,8 +186,8 @@ float minmax_pcf_count(vec2 first, float reference)
                 if (!minmax_window_empty(param_6))
                 {
                     MinmaxCursor param_7 = cursor;
-                    vec2 _462 = minmax_cursor_read(param_7);
-                    vec2 range = _462;
+                    vec2 _475 = minmax_cursor_read(param_7);
+                    vec2 range = _475;
                     if (range.y < reference)
                     {
                         vec4 param_8 = part;
@@ -188,17 +195,17 @@ float minmax_pcf_count(vec2 first, float reference)
                     }
                     else
                     {
-                        bool _478 = reference > range.x;
-                        bool _484;
-                        if (_478)
+                        bool _491 = reference > range.x;
+                        bool _497;
+                        if (_491)
                         {
-                            _484 = cursor.level > 0.5;
+                            _497 = cursor.level > 0.5;
                         }
                         else
                         {
-                            _484 = _478;
+                            _497 = _491;
                         }
-                        descend = _484;
+                        descend = _497;
                     }
                 }
                 if (descend)
@@ -225,18 +232,18 @@ float shadow_visibility(vec3 query)
     float param = query.z;
     vec2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _525 = minmax_pcf_count(param_1, param_2);
-    float count = _525;
-    float _528;
+    float _538 = minmax_pcf_count(param_1, param_2);
+    float count = _538;
+    float _541;
     if (count > 0.0)
     {
-        _528 = (144.0 - count) * 0.0069444444961845874786376953125;
+        _541 = (144.0 - count) * 0.0069444444961845874786376953125;
     }
     else
     {
-        _528 = 1.0;
+        _541 = 1.0;
     }
-    return _528;
+    return _541;
 }
 
 void main()
@@ -244,8 +251,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _551 = shadow_visibility(param);
-    float visible = _551;
+    float _564 = shadow_visibility(param);
+    float visible = _564;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -55,25 +55,32 @@ bool minmax_window_empty(float4 window)
     return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
 }
 
-MinmaxCursor minmax_begin(float4 window)
+float minmax_level_spanning(float4 window, float nodes)
 {
-    MinmaxCursor cursor;
-    cursor.level = 0.0f;
-    cursor.span = 1.0f;
+    float level = 0.0f;
     float inv_span = 1.0f;
     for (int k = 0; k < 16; k++)
     {
-        float2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-        if (max(nodes.x, nodes.y) <= 1.0f)
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
         {
             break;
         }
-        cursor.level += 1.0f;
-        cursor.span *= 2.0f;
+        level += 1.0f;
         inv_span *= 0.5f;
     }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
     cursor.start = cursor.level;
-    cursor.first_root = floor(window.xy * inv_span);
+    cursor.first_root = floor(window.xy / cursor.span.xx);
     cursor.node = cursor.first_root;
     cursor.done = false;
     return cursor;
@@ -96,8 +103,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _123 = shadow_texel(param);
-        float depth = _123;
+        float _128 = shadow_texel(param);
+        float depth = _128;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -109,8 +116,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _294 = minmax_node(param, param_1);
-    return _294;
+    float2 _307 = minmax_node(param, param_1);
+    return _307;
 }
 
 float minmax_texel_count(float4 part)
@@ -127,19 +134,19 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    float2 _325;
+    float2 _338;
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
         if (root)
         {
-            _325 = cursor.first_root;
+            _338 = cursor.first_root;
         }
         else
         {
-            _325 = floor(cursor.node * 0.5f) * 2.0f;
+            _338 = floor(cursor.node * 0.5f) * 2.0f;
         }
-        float2 first_sibling = _325;
+        float2 first_sibling = _338;
         float2 offset = cursor.node - first_sibling;
         if (offset.x < 0.5f)
         {
@@ -189,8 +196,8 @@ float minmax_pcf_count(float2 first, float reference)
                 if (!minmax_window_empty(param_6))
                 {
                     MinmaxCursor param_7 = cursor;
-                    float2 _462 = minmax_cursor_read(param_7);
-                    float2 range = _462;
+                    float2 _475 = minmax_cursor_read(param_7);
+                    float2 range = _475;
                     if (range.y < reference)
                     {
                         float4 param_8 = part;
@@ -198,17 +205,17 @@ float minmax_pcf_count(float2 first, float reference)
                     }
                     else
                     {
-                        bool _478 = reference > range.x;
-                        bool _484;
-                        if (_478)
+                        bool _491 = reference > range.x;
+                        bool _497;
+                        if (_491)
                         {
-                            _484 = cursor.level > 0.5f;
+                            _497 = cursor.level > 0.5f;
                         }
                         else
                         {
-                            _484 = _478;
+                            _497 = _491;
                         }
-                        descend = _484;
+                        descend = _497;
                     }
                 }
                 if (descend)
@@ -235,18 +242,18 @@ float shadow_visibility(float3 query)
     float param = query.z;
     float2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _525 = minmax_pcf_count(param_1, param_2);
-    float count = _525;
-    float _528;
+    float _538 = minmax_pcf_count(param_1, param_2);
+    float count = _538;
+    float _541;
     if (count > 0.0f)
     {
-        _528 = (144.0f - count) * 0.0069444444961845874786376953125f;
+        _541 = (144.0f - count) * 0.0069444444961845874786376953125f;
     }
     else
     {
-        _528 = 1.0f;
+        _541 = 1.0f;
     }
-    return _528;
+    return _541;
 }
 
 void frag_main()
@@ -254,8 +261,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _551 = shadow_visibility(param);
-    float visible = _551;
+    float _564 = shadow_visibility(param);
+    float visible = _564;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

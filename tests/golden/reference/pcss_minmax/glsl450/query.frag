@@ -36,14 +36,14 @@ bool minmax_window_empty(vec4 window)
     return any(greaterThan(window.xy, window.zw));
 }
 
-float minmax_search_level(vec4 window)
+float minmax_level_spanning(vec4 window, float nodes)
 {
     float level = 0.0;
     float inv_span = 1.0;
     for (int k = 0; k < 16; k++)
     {
-        vec2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-        if (max(nodes.x, nodes.y) <= 2.0)
+        vec2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
         {
             break;
         }
@@ -64,8 +64,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _143 = shadow_texel(param);
-        float depth = _143;
+        float _145 = shadow_texel(param);
+        float depth = _145;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -92,7 +92,8 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
         return false;
     }
     vec4 param_3 = window;
-    float level = minmax_search_level(param_3);
+    float param_4 = 3.0;
+    float level = minmax_level_spanning(param_3, param_4);
     float span = exp2(level);
     vec2 first = floor(window.xy / vec2(span));
     float depth_sum = 0.0;
@@ -103,19 +104,19 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
         {
             vec2 node = first + vec2(float(i), float(j));
             vec4 part = vec4(max(node * span, window.xy), min(((node * span) + vec2(span)) - vec2(1.0), window.zw));
-            vec4 param_4 = part;
-            if (minmax_window_empty(param_4))
+            vec4 param_5 = part;
+            if (minmax_window_empty(param_5))
             {
                 continue;
             }
-            float param_5 = level;
-            vec2 param_6 = node;
-            vec2 _462 = minmax_node(param_5, param_6);
-            float node_min = _462.x;
+            float param_6 = level;
+            vec2 param_7 = node;
+            vec2 _466 = minmax_node(param_6, param_7);
+            float node_min = _466.x;
             if (node_min < reference)
             {
-                vec4 param_7 = part;
-                float weight = minmax_texel_count(param_7);
+                vec4 param_8 = part;
+                float weight = minmax_texel_count(param_8);
                 depth_sum += (node_min * weight);
                 texels += weight;
             }
@@ -139,8 +140,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _107 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_107.xy, _107.z), 0.0);
+    vec3 _109 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_109.xy, _109.z), 0.0);
 }
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
@@ -151,8 +152,8 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
         vec2 offset = PCF_DISK[i] * filterRadiusUV;
         vec2 param = uv + offset;
         float param_1 = zReceiver;
-        float _295 = shadow_compare_bilinear(param, param_1);
-        sum += _295;
+        float _339 = shadow_compare_bilinear(param, param_1);
+        sum += _339;
     }
     return sum / 16.0;
 }
@@ -165,9 +166,9 @@ float shadow_visibility(vec3 query)
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _512 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _516 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_512)
+    if (!_516)
     {
         return 1.0;
     }
@@ -178,8 +179,8 @@ float shadow_visibility(vec3 query)
     vec2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _546 = PCF_Filter(param_7, param_8, param_9);
-    return _546;
+    float _550 = PCF_Filter(param_7, param_8, param_9);
+    return _550;
 }
 
 void main()
@@ -187,8 +188,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _560 = shadow_visibility(param);
-    float visible = _560;
+    float _564 = shadow_visibility(param);
+    float visible = _564;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

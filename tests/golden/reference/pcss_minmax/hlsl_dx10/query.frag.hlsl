@@ -49,14 +49,14 @@ bool minmax_window_empty(float4 window)
     return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
 }
 
-float minmax_search_level(float4 window)
+float minmax_level_spanning(float4 window, float nodes)
 {
     float level = 0.0f;
     float inv_span = 1.0f;
     for (int k = 0; k < 16; k++)
     {
-        float2 nodes = floor(window.zw * inv_span) - floor(window.xy * inv_span);
-        if (max(nodes.x, nodes.y) <= 2.0f)
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
         {
             break;
         }
@@ -77,8 +77,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _143 = shadow_texel(param);
-        float depth = _143;
+        float _145 = shadow_texel(param);
+        float depth = _145;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -105,7 +105,8 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
         return false;
     }
     float4 param_3 = window;
-    float level = minmax_search_level(param_3);
+    float param_4 = 3.0f;
+    float level = minmax_level_spanning(param_3, param_4);
     float span = exp2(level);
     float2 first = floor(window.xy / span.xx);
     float depth_sum = 0.0f;
@@ -116,19 +117,19 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
         {
             float2 node = first + float2(float(i), float(j));
             float4 part = float4(max(node * span, window.xy), min(((node * span) + span.xx) - 1.0f.xx, window.zw));
-            float4 param_4 = part;
-            if (minmax_window_empty(param_4))
+            float4 param_5 = part;
+            if (minmax_window_empty(param_5))
             {
                 continue;
             }
-            float param_5 = level;
-            float2 param_6 = node;
-            float2 _462 = minmax_node(param_5, param_6);
-            float node_min = _462.x;
+            float param_6 = level;
+            float2 param_7 = node;
+            float2 _466 = minmax_node(param_6, param_7);
+            float node_min = _466.x;
             if (node_min < reference)
             {
-                float4 param_7 = part;
-                float weight = minmax_texel_count(param_7);
+                float4 param_8 = part;
+                float weight = minmax_texel_count(param_8);
                 depth_sum += (node_min * weight);
                 texels += weight;
             }
@@ -152,8 +153,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _107 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _107.xy, _107.z);
+    float3 _109 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _109.xy, _109.z);
 }
 
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
@@ -164,8 +165,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = PCF_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _295 = shadow_compare_bilinear(param, param_1);
-        sum += _295;
+        float _339 = shadow_compare_bilinear(param, param_1);
+        sum += _339;
     }
     return sum / 16.0f;
 }
@@ -178,9 +179,9 @@ float shadow_visibility(float3 query)
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _512 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _516 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_512)
+    if (!_516)
     {
         return 1.0f;
     }
@@ -191,8 +192,8 @@ float shadow_visibility(float3 query)
     float2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _546 = PCF_Filter(param_7, param_8, param_9);
-    return _546;
+    float _550 = PCF_Filter(param_7, param_8, param_9);
+    return _550;
 }
 
 void frag_main()
@@ -200,8 +201,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _560 = shadow_visibility(param);
-    float visible = _560;
+    float _564 = shadow_visibility(param);
+    float visible = _564;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
