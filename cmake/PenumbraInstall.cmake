@@ -1,6 +1,6 @@
 # Install the CLI and export the libraries for consumers (find_package(penumbra)).
 include(CMakePackageConfigHelpers)
-set(_targets penumbra_support penumbra_shaderlib_sources penumbra_compiler penumbra_reference)
+set(_targets penumbra_support penumbra_model penumbra_shaderlib_sources penumbra_compiler penumbra_reference)
 if(PENUMBRA_BUILD_GL)
   list(APPEND _targets penumbra_gl)
 endif()
@@ -11,7 +11,7 @@ install(TARGETS ${_targets} EXPORT penumbraTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS penumbra_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY support/include/ compiler/include/ reference/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY support/include/ model/include/ compiler/include/ reference/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 if(PENUMBRA_BUILD_RUNTIME)
   install(DIRECTORY runtime/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()

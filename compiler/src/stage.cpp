@@ -7,29 +7,6 @@ namespace penumbra {
 
 namespace {
 
-// Indexed by the enum values, in declaration order.
-constexpr std::array<std::string_view, kAllPassKinds.size()> kPassNames = {
-    "depth", "minmax_init", "minmax_reduce", "query", "blur_h", "blur_v", "composite"};
-
-}  // namespace
-
-std::string_view to_string(PassKind pass) {
-  return kPassNames[static_cast<std::size_t>(pass)];
-}
-
-std::optional<PassKind> parse_pass(std::string_view name) {
-  for (std::size_t i = 0; i < kPassNames.size(); ++i) {
-    if (kPassNames[i] == name) return kAllPassKinds[i];
-  }
-  return std::nullopt;
-}
-
-std::string_view to_string(ShaderStage stage) {
-  return stage == ShaderStage::vertex ? "vertex" : "fragment";
-}
-
-namespace {
-
 std::string value_text(int value) {
   return std::to_string(value);
 }

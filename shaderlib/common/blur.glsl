@@ -9,9 +9,9 @@
 #include "common/params.glsl"
 
 // blur_h: the query pass's factor (.x); blur_v: blur_h's output (.x).
-layout(set = 0, binding = 6) uniform sampler2D screen_factor;
+layout(set = 0, binding = PENUMBRA_SLOT_SCREEN_FACTOR) uniform sampler2D screen_factor;
 #if PENUMBRA_DEPTH_AWARE
-layout(set = 0, binding = 3) uniform sampler2D receivers;  // the screen's (u, v, z_r)
+layout(set = 0, binding = PENUMBRA_SLOT_RECEIVERS) uniform sampler2D receivers;  // the screen's (u, v, z_r)
 #endif
 
 // The blurred factor at the pixel whose centre is `screen_uv`, along `axis`

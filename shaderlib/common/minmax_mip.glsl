@@ -7,7 +7,7 @@
 
 #include "common/shadow_map.glsl"
 
-layout(set = 0, binding = 4) uniform sampler2D shadow_minmax;
+layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_MINMAX) uniform sampler2D shadow_minmax;
 
 // (min, max) normalized depth of hierarchy node `node` at `level`: level 0
 // reads the map, level l its W_l x H_l texels (W_l = ceil(W / 2^l)) at the

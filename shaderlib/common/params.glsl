@@ -3,7 +3,7 @@
 #ifndef PENUMBRA_PARAMS_GLSL
 #define PENUMBRA_PARAMS_GLSL
 
-layout(set = 0, binding = 0, std140) uniform ShadowParams {
+layout(set = 0, binding = PENUMBRA_SLOT_PARAMS, std140) uniform ShadowParams {
   vec4 shadow_map_size;  // W, H, 1/W, 1/H
   vec4 light;            // light_world_size, light_frustum_width, near_plane, light size in uv
   vec4 sampling;         // filter_radius_uv, bias, depth_scale, 1/depth_scale

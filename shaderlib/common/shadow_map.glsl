@@ -7,9 +7,9 @@
 
 #include "common/params.glsl"
 
-layout(set = 0, binding = 1) uniform sampler2D shadow_depth;
+layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_DEPTH) uniform sampler2D shadow_depth;
 #if PENUMBRA_HAS_COMPARISON_SAMPLER
-layout(set = 0, binding = 2) uniform sampler2DShadow shadow_cmp;
+layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_CMP) uniform sampler2DShadow shadow_cmp;
 #endif
 // Shadow-map and mip texels read so far (the query pass's debug output .y):
 // a point read or a min-max node counts 1, a bilinear comparison 4. The

@@ -4,8 +4,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "variant.glsl"
 
-layout(set = 0, binding = 6) uniform sampler2D screen_factor;  // blur_v's output
-layout(set = 0, binding = 7) uniform sampler2D scene_colour;   // RGBA
+layout(set = 0, binding = PENUMBRA_SLOT_SCREEN_FACTOR) uniform sampler2D screen_factor;  // blur_v's output
+layout(set = 0, binding = PENUMBRA_SLOT_SCENE_COLOUR) uniform sampler2D scene_colour;   // RGBA
 
 layout(location = 0) in vec2 screen_uv;  // this pixel's centre in [0, 1]
 layout(location = 0) out vec4 colour;

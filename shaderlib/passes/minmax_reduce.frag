@@ -7,7 +7,7 @@
 #include "variant.glsl"
 #include "common/minmax_reduce.glsl"
 
-layout(set = 0, binding = 5) uniform sampler2D minmax_source;  // level l, (min, max)
+layout(set = 0, binding = PENUMBRA_SLOT_MINMAX_SOURCE) uniform sampler2D minmax_source;  // level l, (min, max)
 
 layout(location = 0) in vec2 screen_uv;
 layout(location = 0) out vec4 minmax;

@@ -6,7 +6,7 @@
 #include "variant.glsl"
 #include "techniques/technique.glsl"
 
-layout(set = 0, binding = 3) uniform sampler2D receivers;
+layout(set = 0, binding = PENUMBRA_SLOT_RECEIVERS) uniform sampler2D receivers;
 
 layout(location = 0) in vec2 screen_uv;  // this pixel's centre in [0, 1]
 layout(location = 0) out vec4 visibility;

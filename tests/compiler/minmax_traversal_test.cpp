@@ -7,7 +7,7 @@
 #include <string>
 
 #include "glsl/variant_header.hpp"
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra {
 namespace {

@@ -1,5 +1,5 @@
 // Names of techniques and targets, and the variant naming rule.
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 #include <gtest/gtest.h>
 

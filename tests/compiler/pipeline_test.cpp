@@ -401,11 +401,18 @@ TEST(LoadLibrary, UnknownPassesAndSchemasAreErrorsNamingTheJsonPath) {
   ASSERT_FALSE(bad_pass.ok());
   EXPECT_THAT(bad_pass.error().to_string(), HasSubstr("/variants/0/passes/blurry"));
   std::string schema = text;
-  schema.replace(schema.find("\"schema\": 1"), 11, "\"schema\": 7");
+  schema.replace(schema.find("\"schema\": 2"), 11, "\"schema\": 7");
   std::ofstream(index) << schema;
   auto bad_schema = load_library(dir.path / "out");
   ASSERT_FALSE(bad_schema.ok());
   EXPECT_THAT(bad_schema.error().to_string(), HasSubstr("/schema"));
+  std::string sampler = text;
+  sampler.replace(sampler.find("\"filter\": \"nearest\""), 19, "\"filter\": \"cubic\"");
+  std::ofstream(index) << sampler;
+  auto bad_sampler = load_library(dir.path / "out");
+  ASSERT_FALSE(bad_sampler.ok());
+  EXPECT_THAT(bad_sampler.error().to_string(), HasSubstr("/variants/0/reflection/"));
+  EXPECT_THAT(bad_sampler.error().to_string(), HasSubstr("unknown filter 'cubic'"));
 }
 
 TEST(BuildLibrary, OutputIsIdenticalAcrossRunsAndThreadCounts) {

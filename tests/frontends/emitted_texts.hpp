@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra::testing {
 

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/gl/engine.hpp"
 #include "penumbra/reference/scene.hpp"

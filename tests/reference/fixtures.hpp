@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/support/image.hpp"
 
 namespace penumbra::testing {

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/minmax_pcf.hpp"
 

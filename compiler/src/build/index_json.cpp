@@ -1,8 +1,10 @@
 #include "build/index_json.hpp"
 
 #include "build/pass_plan.hpp"
+#include "reflect/reflect_target.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/compiler/library.hpp"
 
 namespace penumbra {
 namespace {
@@ -47,17 +49,24 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
   nlohmann::json reflection = nlohmann::json::object();
   for (Target target : variant.targets) {
     targets.push_back(to_string(target));
-    for (const PassStageSource& source : pass_plan()) {
-      if (!runs_pass(source.pass, variant)) continue;
-      const ShaderJob* job = find_job(jobs, variant, target, source);
-      if (!job) continue;
-      const std::string pass(to_string(source.pass));
-      const std::string stage = source.stage == ShaderStage::vertex ? "vert" : "frag";
-      const std::string target_name(to_string(target));
-      passes[pass][target_name][stage] = job->output_path;
-      reflection[pass][target_name][stage] = job->interface;
-      if (job->estimated_slots > 0) {
-        out["estimated_ps30_slots"][pass + "." + stage] = job->estimated_slots;
+    const std::string target_name(to_string(target));
+    for (PassKind kind : describe(variant.technique).passes) {
+      const std::string pass(to_string(kind));
+      const ShaderJob* vert = nullptr;
+      const ShaderJob* frag = nullptr;
+      for (const PassStageSource& source : pass_plan()) {
+        if (source.pass != kind) continue;
+        const ShaderJob* job = find_job(jobs, variant, target, source);
+        if (!job) continue;
+        (source.stage == ShaderStage::vertex ? vert : frag) = job;
+        const std::string stage(stage_key(source.stage));
+        passes[pass][target_name][stage] = job->output_path;
+        if (job->estimated_slots > 0) {
+          out["estimated_ps30_slots"][pass + "." + stage] = job->estimated_slots;
+        }
+      }
+      if (vert && frag) {
+        reflection[pass][target_name] = join_stages(vert->reflection, frag->reflection);
       }
     }
   }
@@ -79,7 +88,7 @@ nlohmann::json variant_keys_json(const VariantKeys& keys) {
 
 nlohmann::json index_json(std::span<const Variant> variants, const std::vector<ShaderJob>& jobs) {
   nlohmann::json out = {{"generator", "penumbra " + std::string(penumbra_version())},
-                        {"schema", 1},
+                        {"schema", kIndexSchema},
                         {"defaults",
                          {{"light_world_size", 0.5},
                           {"light_frustum_width", 3.75},

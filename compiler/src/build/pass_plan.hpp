@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "penumbra/compiler/stage.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra {
 
@@ -17,15 +18,11 @@ struct PassStageSource {
   bool per_variant;            // false: shared by every variant of a target
 };
 
-// Every pass of every technique; a pass's vertex stage comes first. The
-// min-max build passes and screen_blur's blur and composite passes share
-// passes/fullscreen.vert, compiled once per pass.
+// Every pass of every technique, from the shader contract's pass
+// descriptions; a pass's vertex stage comes first. The min-max build passes
+// and screen_blur's blur and composite passes share passes/fullscreen.vert,
+// compiled once per pass. Which passes a variant runs: runs_pass().
 std::span<const PassStageSource> pass_plan();
-
-// Whether `variant` uses the pass: the min-max build passes only for
-// techniques that read the min-max mip, blur_h, blur_v and composite only
-// for screen_blur.
-bool runs_pass(PassKind pass, const Variant& variant);
 
 // "spirv/common/depth.vert.spv" or "hlsl_dx9/pcss_b16_p16_whitepaper16/query.frag.hlsl".
 std::string output_path(const PassStageSource& source, Target target, const Variant* variant);

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra::disk_detail {
 

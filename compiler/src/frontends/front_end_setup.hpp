@@ -8,7 +8,7 @@
 
 #include <string_view>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
 
 namespace penumbra {

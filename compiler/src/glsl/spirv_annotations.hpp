@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra {
 

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/text.hpp"
 
 namespace penumbra {
@@ -28,6 +29,17 @@ std::string float_array(std::string_view name, const std::vector<float>& values)
   return out + ");\n";
 }
 
+// The shader contract's bindings, which the shaderlib's layout qualifiers
+// name: PENUMBRA_SLOT_PARAMS, PENUMBRA_SLOT_SHADOW_DEPTH, ...
+std::string slot_defines() {
+  std::string out = "#define PENUMBRA_SLOT_PARAMS " + std::to_string(kParamsSlot) + "\n";
+  for (const TextureDescription& texture : all_textures()) {
+    out += "#define PENUMBRA_SLOT_" + ascii_upper(texture.name) + " " +
+           std::to_string(texture.slot) + "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string glsl_float(float value) {
@@ -44,6 +56,7 @@ std::string variant_header(const Variant* variant, Target target) {
   out += variant ? variant->name : std::string("shared passes");
   out += ", target " + std::string(to_string(target)) + "\n";
   out += target_defines(target);
+  out += slot_defines();
   if (!variant) return out;
 
   out += "#define PENUMBRA_TECHNIQUE_" + ascii_upper(to_string(variant->technique)) + " 1\n";

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra {
 

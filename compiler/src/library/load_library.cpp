@@ -66,6 +66,14 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
       auto target = parse_target(target_name);
       if (!target) continue;
       out.passes[pass][*target] = PassFiles{files.at("vert"), files.at("frag")};
+      const std::string at = "/reflection/" + pass_name + "/" + target_name;
+      try {
+        out.reflection[pass][*target] = j.at(json::json_pointer(at)).get<PassReflection>();
+      } catch (const json::exception& e) {
+        return index_error(file, path + at,
+                           std::string("malformed reflection (docs/shader-interface.md): ") +
+                               e.what());
+      }
     }
   }
   return out;
@@ -92,8 +100,10 @@ Result<Library> load_library(const std::filesystem::path& root) {
   try {
     const json j = json::parse(*text);
     library.generator = j.at("generator").get<std::string>();
-    if (j.value("schema", 0) != 1) {
-      return index_error(file, "/schema", "unsupported index schema; this penumbra reads 1");
+    if (j.value("schema", 0) != kIndexSchema) {
+      return index_error(file, "/schema",
+                         "unsupported index schema; this penumbra reads " +
+                             std::to_string(kIndexSchema) + " (rebuild the library)");
     }
     const json& variants = j.at("variants");
     for (std::size_t i = 0; i < variants.size(); ++i) {

@@ -4,7 +4,7 @@
 
 #include "penumbra/compiler/targets.hpp"
 #include "stages/stages.hpp"
-#include "targets/dx9_constants.hpp"
+#include "targets/dx9_registers.hpp"
 #include "targets/rules.hpp"
 
 namespace penumbra {
@@ -65,7 +65,7 @@ Status CrossCompileStage::process(ShaderJob& job) const {
                           ": " + error.what());
   }
   if (job.target == Target::hlsl_dx9) {
-    auto rewritten = dx9_constants_as_registers(job.text);
+    auto rewritten = dx9_explicit_registers(job.text);
     if (!rewritten)
       return make_error(Error::Kind::compile, job.describe(), rewritten.error().message);
     job.text = std::move(*rewritten);

@@ -7,7 +7,7 @@
 #include <span>
 #include <string_view>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/support/diagnostics.hpp"

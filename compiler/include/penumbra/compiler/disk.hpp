@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {

@@ -7,9 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/stage.hpp"
+#include "penumbra/model/target_reflection.hpp"
 
 namespace penumbra {
 
@@ -21,7 +22,12 @@ struct PassFiles {
 struct LibraryVariant {
   Variant variant;  // keys, disks (the baked values) and targets
   std::map<PassKind, std::map<Target, PassFiles>> passes;
+  // What each pass's files declare, per target (what engines bind by).
+  std::map<PassKind, std::map<Target, PassReflection>> reflection;
 };
+
+// index.json's `schema`: 2 since the reflection describes each target's text.
+inline constexpr int kIndexSchema = 2;
 
 struct Library {
   std::filesystem::path root;

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {

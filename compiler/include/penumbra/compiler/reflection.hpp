@@ -16,11 +16,10 @@
 #include <string_view>
 #include <vector>
 
+#include "penumbra/model/pass.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {
-
-enum class ShaderStage { vertex, fragment };
 
 // One leaf of a uniform block. Struct members are flattened: a member
 // `params` of struct type ShadowParams yields "params.shadow_map_size",
@@ -29,6 +28,7 @@ struct BlockMember {
   std::string name;  // e.g. "shadow_map_size", "params.light", "params_light", "gl_HalfPixel"
   std::uint32_t offset = 0;
   std::uint32_t size = 0;  // bytes
+  bool used = true;        // the stage reads it (SPIRV-Cross's active buffer ranges)
   bool operator==(const BlockMember&) const = default;
 };
 

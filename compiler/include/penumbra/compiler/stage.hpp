@@ -11,29 +11,14 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
+#include "penumbra/model/pass.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {
-
-// A pass of the shadow pipeline; each is a vertex + fragment pair.
-enum class PassKind {
-  depth,          // the shadow map (the whitepaper's step 1)
-  minmax_init,    // min-max mip level 1 from the map (seed 002)
-  minmax_reduce,  // min-max mip level l + 1 from level l
-  query,          // a technique's visibility per receiver (screen_blur: the unblurred factor)
-  blur_h,         // screen_blur: horizontal Gaussian blur of the factor buffer (seed 003)
-  blur_v,         // screen_blur: vertical Gaussian blur
-  composite,      // screen_blur: a scene colour times the blurred factor
-};
-inline constexpr std::array kAllPassKinds = {
-    PassKind::depth,  PassKind::minmax_init, PassKind::minmax_reduce, PassKind::query,
-    PassKind::blur_h, PassKind::blur_v,      PassKind::composite};
-std::string_view to_string(PassKind pass);
-std::optional<PassKind> parse_pass(std::string_view name);
-std::string_view to_string(ShaderStage stage);
 
 // One shader stage of one pass, for one target, of one variant (or shared by
 // every variant when `variant` is null).
@@ -49,7 +34,8 @@ struct ShaderJob {
   std::string preprocessed;          // preprocess: GLSL with includes and defines resolved
   std::vector<std::uint32_t> spirv;  // compile (then optimize): SPIR-V 1.0
   std::string text;                  // cross-compile: target source (empty for spirv)
-  ShaderInterface interface;         // reflect
+  ShaderInterface interface;         // reflect: of `spirv`
+  PassReflection reflection;         // reflect: this stage's part of the target's reflection
   std::string output_path;           // write: file path relative to the output directory
   // Warnings found by stages (e.g. slot estimates), reported by the build.
   std::vector<Diagnostic> diagnostics;

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
 
 namespace penumbra {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra::reference {
 

@@ -8,7 +8,7 @@
 
 #include <span>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/support/image.hpp"
 
 namespace penumbra::reference {

@@ -2,7 +2,7 @@
 // precision and independent of the shader sources.
 #pragma once
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/reference/light.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/precision.hpp"

@@ -6,7 +6,7 @@
 
 #include <array>
 
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/reference/shadow_map.hpp"
 
 namespace penumbra::reference {

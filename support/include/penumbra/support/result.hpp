@@ -78,3 +78,14 @@ using Status = Result<void>;
     if (auto penumbra_try_status_ = (expr); !penumbra_try_status_) \
       return penumbra_try_status_.error();                         \
   } while (0)
+
+// Assigns the value of an expression yielding Result<T> to `lhs` (an
+// existing variable or member), or propagates its error.
+#define PENUMBRA_TRY_ASSIGN(lhs, expr) \
+  PENUMBRA_TRY_ASSIGN_IMPL(PENUMBRA_TRY_CONCAT(penumbra_try_result_, __LINE__), lhs, expr)
+#define PENUMBRA_TRY_ASSIGN_IMPL(tmp, lhs, expr) \
+  auto tmp = (expr);                             \
+  if (!tmp) return tmp.error();                  \
+  lhs = std::move(*tmp)
+#define PENUMBRA_TRY_CONCAT(a, b) PENUMBRA_TRY_CONCAT_IMPL(a, b)
+#define PENUMBRA_TRY_CONCAT_IMPL(a, b) a##b

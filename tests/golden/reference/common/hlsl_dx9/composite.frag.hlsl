@@ -1,5 +1,5 @@
-uniform sampler2D scene_colour;
-uniform sampler2D screen_factor;
+uniform sampler2D scene_colour : register(s7);
+uniform sampler2D screen_factor : register(s6);
 
 static float2 screen_uv;
 static float4 colour;

@@ -1,4 +1,4 @@
-uniform float4 gl_HalfPixel;
+uniform float4 gl_HalfPixel : register(c6);
 
 static float4 gl_Position;
 static float2 screen_uv;

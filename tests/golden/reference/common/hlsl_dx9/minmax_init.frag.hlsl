@@ -7,7 +7,7 @@ uniform float4 params_source_size : register(c4);
 uniform float4 params_minmax_info : register(c5);
 
 
-uniform sampler2D shadow_depth;
+uniform sampler2D shadow_depth : register(s1);
 
 static float2 screen_uv;
 static float4 minmax;

@@ -7,7 +7,7 @@ uniform float4 params_source_size : register(c4);
 uniform float4 params_minmax_info : register(c5);
 
 
-uniform sampler2D minmax_source;
+uniform sampler2D minmax_source : register(s5);
 
 static float2 screen_uv;
 static float4 minmax;

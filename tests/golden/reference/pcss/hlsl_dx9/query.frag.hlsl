@@ -9,8 +9,8 @@ uniform float4 params_source_size : register(c4);
 uniform float4 params_minmax_info : register(c5);
 
 
-uniform sampler2D shadow_depth;
-uniform sampler2D receivers;
+uniform sampler2D shadow_depth : register(s1);
+uniform sampler2D receivers : register(s3);
 
 static float2 screen_uv;
 static float4 visibility;

@@ -9,7 +9,7 @@ uniform float4 params_source_size : register(c4);
 uniform float4 params_minmax_info : register(c5);
 
 
-uniform sampler2D screen_factor;
+uniform sampler2D screen_factor : register(s6);
 
 static float4 blurred;
 static float2 screen_uv;

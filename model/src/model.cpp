@@ -1,8 +1,9 @@
-#include "penumbra/compiler/model.hpp"
+#include "penumbra/model/model.hpp"
 
 #include <cmath>
 #include <cstddef>
 
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/text.hpp"
 
 namespace penumbra {
@@ -51,8 +52,7 @@ std::string allowed_targets() {
 }
 
 bool uses_minmax_mip(Technique technique) {
-  return technique == Technique::minmax_pcf || technique == Technique::backprojection ||
-         technique == Technique::pcss_minmax;
+  return describe(technique).reads_minmax;
 }
 
 // The walk visits the 4 roots and the 4 children of every node it descends.

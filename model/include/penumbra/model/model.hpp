@@ -1,5 +1,5 @@
-// The data model shared by the compiler, the reference and the runtime:
-// techniques, targets, Poisson disks and variants.
+// The data model shared by the compiler, the reference, the engines and
+// verify: techniques, targets, Poisson disks and variants.
 #pragma once
 
 #include <array>
@@ -42,8 +42,8 @@ std::optional<Target> parse_target(std::string_view name);
 std::string allowed_techniques();
 std::string allowed_targets();
 
-// Whether the technique reads the min-max depth mip (seed 002), so its
-// variants need the mip build passes.
+// Whether the technique reads the min-max depth mip (Dmitriev 2007), so
+// its variants need the mip build passes (describe(technique).reads_minmax).
 bool uses_minmax_mip(Technique technique);
 
 // Largest sample count / kernel size any variant may use.

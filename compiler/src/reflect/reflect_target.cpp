@@ -1,0 +1,216 @@
+#include "reflect/reflect_target.hpp"
+
+#include <string>
+
+namespace penumbra {
+namespace {
+
+bool is_gl(Target target) {
+  return target == Target::glsl450 || target == Target::glsl330 || target == Target::essl300;
+}
+
+bool is_hlsl(Target target) {
+  return target == Target::hlsl_dx10 || target == Target::hlsl_dx9;
+}
+
+class TargetReflector {
+ public:
+  TargetReflector(Target target, PassKind pass) : target_(target), pass_(pass) {}
+
+  // The stage's part: its bindings, and the vertex inputs (vertex stage) or
+  // the render targets, depth target and extensions (fragment stage).
+  Result<PassReflection> reflect(const ShaderInterface& iface) const {
+    PassReflection out;
+    StageBindings bindings;
+    PENUMBRA_TRY_ASSIGN(bindings, stage(iface));
+    if (iface.stage == ShaderStage::vertex) {
+      out.vert = std::move(bindings);
+      for (const StageVariable& input : iface.inputs) out.vertex_inputs.push_back(attribute(input));
+      if (target_ == Target::hlsl_dx9) {
+        out.vert.uniforms.push_back({std::string(kHalfPixelName),
+                                     std::string(kHalfPixelParameter), "float4", std::nullopt,
+                                     kParamMemberSize,
+                                     "c" + std::to_string(half_pixel_register()), 1});
+      }
+      return out;
+    }
+    out.frag = std::move(bindings);
+    const PassDescription& pass = describe(pass_);
+    for (const StageVariable& output : iface.outputs) {
+      if (output.name != pass.output.name || output.location != 0) {
+        return fail("fragment output '" + output.name + "' at location " +
+                    std::to_string(output.location) + " is not the pass's output '" +
+                    std::string(pass.output.name) + "' at location 0");
+      }
+      out.render_targets.push_back(
+          {output.name, output.location, std::string(api_format(target_, pass.output.format))});
+    }
+    if (pass.depth_target) {
+      out.depth_target = target_ == Target::hlsl_dx10
+                             ? "DXGI_FORMAT_D32_FLOAT"
+                             : std::string(api_format(target_, TextureFormat::d32_float));
+    }
+    // WebGL2 and OpenGL ES 3.0 render to float formats only with this.
+    if (target_ == Target::essl300) out.extensions.push_back("EXT_color_buffer_float");
+    return out;
+  }
+
+ private:
+  Error fail(std::string message) const {
+    return make_error(Error::Kind::compile,
+                      std::string(to_string(pass_)) + " pass, " + std::string(to_string(target_)),
+                      std::move(message));
+  }
+
+  Result<StageBindings> stage(const ShaderInterface& iface) const {
+    StageBindings out;
+    for (const UniformBlock& block : iface.uniform_blocks) {
+      if (block.type_name != kParamsBlock || block.binding != kParamsSlot) {
+        return fail("uniform block '" + block.type_name + "' at binding " +
+                    std::to_string(block.binding) + " is not the contract's " +
+                    std::string(kParamsBlock) + " at binding " + std::to_string(kParamsSlot));
+      }
+      params(block, out);
+    }
+    for (const SampledImage& image : iface.sampled_images) {
+      const TextureDescription* texture = find_texture(image.name);
+      if (!texture || texture->slot != image.binding || image.set != 0 ||
+          image.comparison != texture->sampler.comparison) {
+        return fail("sampler '" + image.name + "' at set " + std::to_string(image.set) +
+                    ", binding " + std::to_string(image.binding) +
+                    " is not a texture of the shader contract at its binding "
+                    "(docs/shader-interface.md)");
+      }
+      out.textures.push_back(texture_binding(*texture));
+    }
+    if (!iface.separate_images.empty() || !iface.separate_samplers.empty()) {
+      return fail("separate images and samplers are not part of the shaderlib's source");
+    }
+    return out;
+  }
+
+  // ShadowParams: a block where the target keeps one, else loose uniforms:
+  // Direct3D 9's constant registers, every member as the text declares
+  // them, and GLSL 3.30's struct members that the stage reads, which are
+  // the ones GL reports as active (the others have no location).
+  void params(const UniformBlock& block, StageBindings& out) const {
+    const std::string param_block(kParamsBlock);
+    const std::string instance(kParamsInstance);
+    BlockBinding binding{param_block, std::nullopt, std::nullopt, "", block.size, {}};
+    for (const BlockMember& member : block.members) {
+      ConstantBinding constant{"", member.name, is_hlsl(target_) ? "float4" : "vec4",
+                               member.offset, member.size, "", 0};
+      switch (target_) {
+        case Target::spirv:
+          constant.name = member.name;
+          break;
+        case Target::glsl450:
+        case Target::essl300:
+          constant.name = param_block + "." + member.name;  // as GL reports block members
+          break;
+        case Target::glsl330:
+          constant.name = instance + "." + member.name;
+          constant.offset.reset();
+          if (member.used) out.uniforms.push_back(constant);
+          continue;
+        case Target::hlsl_dx10:
+          constant.name = instance + "_" + member.name;
+          break;
+        case Target::hlsl_dx9:
+          constant.name = instance + "_" + member.name;
+          constant.offset.reset();
+          constant.reg = "c" + std::to_string(member.offset / kParamMemberSize);
+          constant.registers = member.size / kParamMemberSize;
+          out.uniforms.push_back(constant);  // the shim declares every member
+          continue;
+      }
+      binding.members.push_back(std::move(constant));
+    }
+    if (binding.members.empty()) return;
+    if (target_ == Target::spirv) binding.set = block.set;
+    if (target_ == Target::spirv || target_ == Target::glsl450) binding.binding = block.binding;
+    if (target_ == Target::hlsl_dx10) binding.reg = "b" + std::to_string(block.binding);
+    out.blocks.push_back(std::move(binding));
+  }
+
+  TextureBinding texture_binding(const TextureDescription& texture) const {
+    TextureBinding out;
+    out.name = std::string(texture.name);
+    const TextureFormat format = target_ == Target::hlsl_dx9 ? texture.dx9_format : texture.format;
+    out.format = std::string(api_format(target_, format));
+    out.view_format = std::string(api_view_format(target_, format));
+    out.mipmapped = texture.mipmapped;
+    out.sampler.state = texture.sampler;
+    const std::string slot = std::to_string(texture.slot);
+    switch (target_) {
+      case Target::spirv:
+        out.set = 0;
+        out.binding = texture.slot;
+        break;
+      case Target::glsl450:
+        out.binding = texture.slot;
+        break;
+      case Target::glsl330:
+      case Target::essl300:
+        break;
+      case Target::hlsl_dx10:
+        out.type = "Texture2D";
+        out.reg = "t" + slot;
+        out.sampler.name = "_" + out.name + "_sampler";
+        out.sampler.type =
+            texture.sampler.comparison ? "SamplerComparisonState" : "SamplerState";
+        out.sampler.reg = "s" + slot;
+        break;
+      case Target::hlsl_dx9:
+        out.type = "sampler2D";
+        out.reg = "s" + slot;
+        break;
+    }
+    if (out.type.empty()) out.type = texture.sampler.comparison ? "sampler2DShadow" : "sampler2D";
+    return out;
+  }
+
+  VertexAttribute attribute(const StageVariable& input) const {
+    static constexpr std::string_view kVulkan[] = {"VK_FORMAT_R32_SFLOAT", "VK_FORMAT_R32G32_SFLOAT",
+                                                   "VK_FORMAT_R32G32B32_SFLOAT",
+                                                   "VK_FORMAT_R32G32B32A32_SFLOAT"};
+    static constexpr std::string_view kDxgi[] = {
+        "DXGI_FORMAT_R32_FLOAT", "DXGI_FORMAT_R32G32_FLOAT", "DXGI_FORMAT_R32G32B32_FLOAT",
+        "DXGI_FORMAT_R32G32B32A32_FLOAT"};
+    static constexpr std::string_view kD3d9[] = {"D3DDECLTYPE_FLOAT1", "D3DDECLTYPE_FLOAT2",
+                                                 "D3DDECLTYPE_FLOAT3", "D3DDECLTYPE_FLOAT4"};
+    VertexAttribute out;
+    out.name = input.name;
+    out.components = input.components;
+    const std::size_t row = input.components - 1;
+    if (is_hlsl(target_)) {
+      // SPIRV-Cross names location N's input TEXCOORD<N> in both shader models.
+      out.semantic = "TEXCOORD" + std::to_string(input.location);
+      out.format = std::string(target_ == Target::hlsl_dx9 ? kD3d9[row] : kDxgi[row]);
+    } else {
+      out.location = input.location;
+      out.format = is_gl(target_) ? "GL_FLOAT" : std::string(kVulkan[row]);
+    }
+    return out;
+  }
+
+  Target target_;
+  PassKind pass_;
+};
+
+}  // namespace
+
+Result<PassReflection> reflect_target(Target target, PassKind pass,
+                                      const ShaderInterface& iface) {
+  return TargetReflector(target, pass).reflect(iface);
+}
+
+PassReflection join_stages(PassReflection vert, const PassReflection& frag) {
+  vert.frag = frag.frag;
+  vert.render_targets = frag.render_targets;
+  vert.depth_target = frag.depth_target;
+  vert.extensions = frag.extensions;
+  return vert;
+}
+
+}  // namespace penumbra

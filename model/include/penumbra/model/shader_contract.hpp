@@ -1,0 +1,140 @@
+// The shader contract, described once: the parameter block, the textures a
+// pass may read and how an engine must create and sample each, the passes
+// (their sources, vertex inputs and render targets) and the passes each
+// technique runs. The compiler writes every target's reflection from this
+// description (target_reflection.hpp) and the shaderlib takes its bindings
+// from it (variant.glsl); engines read the reflection, never this table.
+// docs/shader-interface.md is its prose.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "penumbra/model/model.hpp"
+#include "penumbra/model/pass.hpp"
+
+namespace penumbra {
+
+// Texel formats, named by their layout; each API's own name comes from
+// api_format() (target_reflection.hpp).
+enum class TextureFormat {
+  r32_float,     // one 32-bit float
+  rg32_float,    // two 32-bit floats
+  rgba32_float,  // four 32-bit floats
+  d32_float,     // a 32-bit float depth format, sampled (and compared) as depth
+};
+
+enum class Filter { nearest, linear };
+
+// How a texture's mip levels are chosen: `none` for textures read at LOD 0
+// only (minification filter without mipmaps), `nearest` for the min-max mip,
+// read at explicit levels.
+enum class MipFilter { none, nearest };
+
+// The sampler state a texture needs. Every texture of the contract is
+// addressed clamp-to-edge (the contract's addressing), so no border colour
+// is ever read.
+struct SamplerState {
+  bool comparison = false;          // compare with LESS_EQUAL: lit when reference <= texel
+  Filter filter = Filter::nearest;  // minification and magnification
+  MipFilter mip_filter = MipFilter::none;
+};
+
+// The textures of the contract, in binding order.
+enum class TextureId {
+  shadow_depth,   // the map, point reads
+  shadow_cmp,     // the same map through a comparison sampler
+  receivers,      // receiver (u, v, z_r) per pixel
+  shadow_minmax,  // the min-max mip (Dmitriev 2007)
+  minmax_source,  // the level a minmax_reduce pass reduces
+  screen_factor,  // screen_blur's factor buffer
+  scene_colour,   // screen_blur's scene colour
+};
+
+struct TextureDescription {
+  TextureId id;
+  std::string_view name;  // the variable's name in every target's text
+  // Vulkan binding in set 0, GLSL 4.50 binding, and the number of the
+  // Direct3D t# and s# registers.
+  std::uint32_t slot;
+  // What the engine creates. The map is a depth texture on targets with a
+  // comparison sampler and an R32F colour texture for Direct3D 9.
+  TextureFormat format;
+  TextureFormat dx9_format;
+  SamplerState sampler;
+  bool mipmapped;            // read at explicit mip levels (shadow_minmax)
+  std::string_view content;  // one line for docs and messages
+};
+
+const TextureDescription& describe(TextureId texture);
+std::span<const TextureDescription> all_textures();
+// The texture named `name` in the text, or none.
+const TextureDescription* find_texture(std::string_view name);
+
+// The parameter block, ShadowParams: every member a vec4, so that Direct3D
+// 9 constant registers map one to one (member i is register c<i>).
+inline constexpr std::string_view kParamsBlock = "ShadowParams";
+inline constexpr std::string_view kParamsInstance = "params";
+inline constexpr std::uint32_t kParamsSlot = 0;  // set 0 binding, Direct3D b0
+
+struct ParamMember {
+  std::string_view name;     // e.g. "shadow_map_size"
+  std::string_view content;  // "W, H, 1/W, 1/H"
+};
+std::span<const ParamMember> param_members();
+inline constexpr std::uint32_t kParamMemberSize = 16;  // bytes: one vec4
+
+// Direct3D 9 vertex shaders: SPIRV-Cross's half-pixel constant, which the
+// engine sets to (1 / width, 1 / height) of the render target (the offset
+// that aligns D3D9's pixel centres with the other APIs'). It takes the
+// register after ShadowParams in every vertex shader.
+inline constexpr std::string_view kHalfPixelName = "gl_HalfPixel";
+inline constexpr std::string_view kHalfPixelParameter = "half_pixel";
+std::uint32_t half_pixel_register();
+
+// A vertex attribute: position, in location 0.
+struct VertexInput {
+  std::string_view name;
+  std::uint32_t components;  // float components
+  std::string_view content;
+};
+
+// A fragment output, written to colour target 0.
+struct PassOutput {
+  std::string_view name;
+  TextureFormat format;
+};
+
+struct PassDescription {
+  PassKind kind;
+  std::string_view vertex_source;    // in shaderlib/
+  std::string_view fragment_source;  // in shaderlib/
+  std::string_view vertex_file;      // output file stem of the vertex stage, e.g. "fullscreen"
+  bool per_variant;  // the fragment stage depends on the variant (else one per target)
+  VertexInput input;
+  PassOutput output;
+  bool depth_target;  // also writes depth (the depth pass fills a depth map)
+  // Every texture the pass may read; which appear in a target's text
+  // depends on the technique and the target (no shadow_cmp for hlsl_dx9).
+  std::span<const TextureId> reads;
+};
+
+const PassDescription& describe(PassKind pass);
+
+// A technique: the passes it runs, in order, and whether it reads the
+// min-max mip.
+struct TechniqueDescription {
+  Technique technique;
+  std::span<const PassKind> passes;
+  bool reads_minmax;
+};
+
+const TechniqueDescription& describe(Technique technique);
+
+// True when `variant`'s technique runs `pass`.
+bool runs_pass(PassKind pass, const Variant& variant);
+
+}  // namespace penumbra

@@ -1,0 +1,33 @@
+#include "penumbra/model/pass.hpp"
+
+#include <cstddef>
+
+namespace penumbra {
+namespace {
+
+// Indexed by the enum values, in declaration order.
+constexpr std::array<std::string_view, kAllPassKinds.size()> kPassNames = {
+    "depth", "minmax_init", "minmax_reduce", "query", "blur_h", "blur_v", "composite"};
+
+}  // namespace
+
+std::string_view to_string(PassKind pass) {
+  return kPassNames[static_cast<std::size_t>(pass)];
+}
+
+std::optional<PassKind> parse_pass(std::string_view name) {
+  for (std::size_t i = 0; i < kPassNames.size(); ++i) {
+    if (kPassNames[i] == name) return kAllPassKinds[i];
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(ShaderStage stage) {
+  return stage == ShaderStage::vertex ? "vertex" : "fragment";
+}
+
+std::string_view stage_key(ShaderStage stage) {
+  return stage == ShaderStage::vertex ? "vert" : "frag";
+}
+
+}  // namespace penumbra

@@ -1,0 +1,149 @@
+#include "penumbra/model/shader_contract.hpp"
+
+#include <cstddef>
+
+namespace penumbra {
+namespace {
+
+constexpr SamplerState kPoint{false, Filter::nearest, MipFilter::none};
+
+// Indexed by TextureId.
+constexpr TextureDescription kTextures[] = {
+    {TextureId::shadow_depth, "shadow_depth", 1, TextureFormat::d32_float,
+     TextureFormat::r32_float, kPoint, false,
+     "the shadow map, normalized linear depth d = z * depth_scale, point reads"},
+    {TextureId::shadow_cmp, "shadow_cmp", 2, TextureFormat::d32_float, TextureFormat::r32_float,
+     SamplerState{true, Filter::linear, MipFilter::none}, false,
+     "the same shadow map through a LESS_EQUAL comparison sampler (bilinear comparisons)"},
+    {TextureId::receivers, "receivers", 3, TextureFormat::rgba32_float,
+     TextureFormat::rgba32_float, kPoint, false,
+     "the receivers image: (u, v, z_r, unused) per pixel"},
+    {TextureId::shadow_minmax, "shadow_minmax", 4, TextureFormat::rg32_float,
+     TextureFormat::rg32_float, SamplerState{false, Filter::nearest, MipFilter::nearest}, true,
+     "the min-max mip: (min, max) normalized depth, level l at texel (0, 0) of mip l - 1"},
+    {TextureId::minmax_source, "minmax_source", 5, TextureFormat::rg32_float,
+     TextureFormat::rg32_float, kPoint, false,
+     "the min-max level a minmax_reduce pass reduces: (min, max)"},
+    {TextureId::screen_factor, "screen_factor", 6, TextureFormat::rg32_float,
+     TextureFormat::rg32_float, kPoint, false,
+     "screen_blur: the screen-sized shadow factor of the previous pass, .x"},
+    {TextureId::scene_colour, "scene_colour", 7, TextureFormat::rgba32_float,
+     TextureFormat::rgba32_float, kPoint, false, "screen_blur: the scene colour, RGBA"},
+};
+
+constexpr ParamMember kParams[] = {
+    {"shadow_map_size", "W, H, 1/W, 1/H of the shadow map"},
+    {"light", "light_world_size L, light_frustum_width Fw, near_plane n, L / Fw"},
+    {"sampling", "filter_radius_uv, bias, depth_scale, 1 / depth_scale"},
+    {"screen_size", "width, height, 1/width, 1/height of the pass's render target"},
+    {"source_size", "min-max build passes: W, H, 1/W, 1/H of the level they read"},
+    {"minmax_info", "N, the min-max mip's top level; 0; 0; 0"},
+};
+
+constexpr TextureId kMinmaxInitReads[] = {TextureId::shadow_depth};
+constexpr TextureId kMinmaxReduceReads[] = {TextureId::minmax_source};
+constexpr TextureId kQueryReads[] = {TextureId::receivers, TextureId::shadow_depth,
+                                     TextureId::shadow_cmp, TextureId::shadow_minmax};
+constexpr TextureId kBlurReads[] = {TextureId::screen_factor, TextureId::receivers};
+constexpr TextureId kCompositeReads[] = {TextureId::screen_factor, TextureId::scene_colour};
+
+constexpr VertexInput kLightSpacePosition{"position", 3, "light-view space position"};
+constexpr VertexInput kClipPosition{
+    "position", 2, "clip-space position of one triangle covering the target: (-1,-1), (3,-1), (-1,3)"};
+
+// Indexed by PassKind.
+constexpr PassDescription kPasses[] = {
+    {PassKind::depth, "passes/depth.vert", "passes/depth.frag", "depth", false,
+     kLightSpacePosition, {"depth_out", TextureFormat::r32_float}, true,
+     {}},
+    {PassKind::minmax_init, "passes/fullscreen.vert", "passes/minmax_init.frag", "minmax_init",
+     false, kClipPosition, {"minmax", TextureFormat::rg32_float}, false, kMinmaxInitReads},
+    {PassKind::minmax_reduce, "passes/fullscreen.vert", "passes/minmax_reduce.frag",
+     "minmax_reduce", false, kClipPosition, {"minmax", TextureFormat::rg32_float}, false,
+     kMinmaxReduceReads},
+    {PassKind::query, "passes/fullscreen.vert", "passes/query.frag", "fullscreen", true,
+     kClipPosition, {"visibility", TextureFormat::rg32_float}, false, kQueryReads},
+    {PassKind::blur_h, "passes/fullscreen.vert", "passes/blur_h.frag", "blur_h", true,
+     kClipPosition, {"blurred", TextureFormat::rg32_float}, false, kBlurReads},
+    {PassKind::blur_v, "passes/fullscreen.vert", "passes/blur_v.frag", "blur_v", true,
+     kClipPosition, {"blurred", TextureFormat::rg32_float}, false, kBlurReads},
+    {PassKind::composite, "passes/fullscreen.vert", "passes/composite.frag", "composite", false,
+     kClipPosition, {"colour", TextureFormat::rgba32_float}, false, kCompositeReads},
+};
+
+constexpr PassKind kSinglePass[] = {PassKind::depth, PassKind::query};
+constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
+                                      PassKind::minmax_reduce, PassKind::query};
+constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
+                                          PassKind::blur_v, PassKind::composite};
+
+// Indexed by Technique.
+constexpr TechniqueDescription kTechniques[] = {
+    {Technique::hard, kSinglePass, false},
+    {Technique::pcf_grid, kSinglePass, false},
+    {Technique::pcf_poisson, kSinglePass, false},
+    {Technique::pcss, kSinglePass, false},
+    {Technique::minmax_pcf, kMinmaxPasses, true},
+    {Technique::backprojection, kMinmaxPasses, true},
+    {Technique::pcss_minmax, kMinmaxPasses, true},
+    {Technique::screen_blur, kScreenBlurPasses, false},
+};
+
+// The tables are indexed by their enums: each row's enum must be its index.
+constexpr bool rows_in_enum_order() {
+  for (std::size_t i = 0; i < std::size(kTextures); ++i) {
+    if (static_cast<std::size_t>(kTextures[i].id) != i) return false;
+  }
+  for (std::size_t i = 0; i < std::size(kPasses); ++i) {
+    if (static_cast<std::size_t>(kPasses[i].kind) != i) return false;
+  }
+  for (std::size_t i = 0; i < std::size(kTechniques); ++i) {
+    if (static_cast<std::size_t>(kTechniques[i].technique) != i) return false;
+  }
+  return true;
+}
+static_assert(rows_in_enum_order());
+static_assert(std::size(kPasses) == kAllPassKinds.size());
+static_assert(std::size(kTechniques) == kAllTechniques.size());
+
+}  // namespace
+
+const TextureDescription& describe(TextureId texture) {
+  return kTextures[static_cast<std::size_t>(texture)];
+}
+
+std::span<const TextureDescription> all_textures() {
+  return kTextures;
+}
+
+const TextureDescription* find_texture(std::string_view name) {
+  for (const TextureDescription& texture : kTextures) {
+    if (texture.name == name) return &texture;
+  }
+  return nullptr;
+}
+
+std::span<const ParamMember> param_members() {
+  return kParams;
+}
+
+std::uint32_t half_pixel_register() {
+  return static_cast<std::uint32_t>(std::size(kParams));
+}
+
+const PassDescription& describe(PassKind pass) {
+  return kPasses[static_cast<std::size_t>(pass)];
+}
+
+const TechniqueDescription& describe(Technique technique) {
+  return kTechniques[static_cast<std::size_t>(technique)];
+}
+
+bool runs_pass(PassKind pass, const Variant& variant) {
+  for (PassKind run : describe(variant.technique).passes) {
+    if (run == pass) return true;
+  }
+  return false;
+}
+
+}  // namespace penumbra
