@@ -70,8 +70,8 @@ Enum parse_enum(const nlohmann::json& j, const std::string_view (&names)[N], con
   for (std::size_t i = 0; i < N; ++i) {
     if (names[i] == text) return static_cast<Enum>(i);
   }
-  throw nlohmann::json::other_error::create(
-      501, std::string("unknown ") + what + " '" + text + "'", &j);
+  throw nlohmann::json::other_error::create(501, std::string("unknown ") + what + " '" + text + "'",
+                                            &j);
 }
 
 constexpr std::string_view kFilterNames[] = {"nearest", "linear"};

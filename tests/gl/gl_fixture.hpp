@@ -6,9 +6,9 @@
 #include <ostream>
 #include <string>
 
-#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/gl/engine.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/runtime/program.hpp"
 

@@ -1,10 +1,10 @@
 #include "build/index_json.hpp"
 
 #include "build/pass_plan.hpp"
-#include "reflect/reflect_target.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "reflect/reflect_target.hpp"
 
 namespace penumbra {
 namespace {

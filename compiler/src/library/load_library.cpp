@@ -70,9 +70,9 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
       try {
         out.reflection[pass][*target] = j.at(json::json_pointer(at)).get<PassReflection>();
       } catch (const json::exception& e) {
-        return index_error(file, path + at,
-                           std::string("malformed reflection (docs/shader-interface.md): ") +
-                               e.what());
+        return index_error(
+            file, path + at,
+            std::string("malformed reflection (docs/shader-interface.md): ") + e.what());
       }
     }
   }

@@ -27,9 +27,8 @@ class TargetReflector {
       out.vert = std::move(bindings);
       for (const StageVariable& input : iface.inputs) out.vertex_inputs.push_back(attribute(input));
       if (target_ == Target::hlsl_dx9) {
-        out.vert.uniforms.push_back({std::string(kHalfPixelName),
-                                     std::string(kHalfPixelParameter), "float4", std::nullopt,
-                                     kParamMemberSize,
+        out.vert.uniforms.push_back({std::string(kHalfPixelName), std::string(kHalfPixelParameter),
+                                     "float4", std::nullopt, kParamMemberSize,
                                      "c" + std::to_string(half_pixel_register()), 1});
       }
       return out;
@@ -98,8 +97,8 @@ class TargetReflector {
     const std::string instance(kParamsInstance);
     BlockBinding binding{param_block, std::nullopt, std::nullopt, "", block.size, {}};
     for (const BlockMember& member : block.members) {
-      ConstantBinding constant{"", member.name, is_hlsl(target_) ? "float4" : "vec4",
-                               member.offset, member.size, "", 0};
+      ConstantBinding constant{
+          "", member.name, is_hlsl(target_) ? "float4" : "vec4", member.offset, member.size, "", 0};
       switch (target_) {
         case Target::spirv:
           constant.name = member.name;
@@ -157,8 +156,7 @@ class TargetReflector {
         out.type = "Texture2D";
         out.reg = "t" + slot;
         out.sampler.name = "_" + out.name + "_sampler";
-        out.sampler.type =
-            texture.sampler.comparison ? "SamplerComparisonState" : "SamplerState";
+        out.sampler.type = texture.sampler.comparison ? "SamplerComparisonState" : "SamplerState";
         out.sampler.reg = "s" + slot;
         break;
       case Target::hlsl_dx9:
@@ -171,9 +169,9 @@ class TargetReflector {
   }
 
   VertexAttribute attribute(const StageVariable& input) const {
-    static constexpr std::string_view kVulkan[] = {"VK_FORMAT_R32_SFLOAT", "VK_FORMAT_R32G32_SFLOAT",
-                                                   "VK_FORMAT_R32G32B32_SFLOAT",
-                                                   "VK_FORMAT_R32G32B32A32_SFLOAT"};
+    static constexpr std::string_view kVulkan[] = {
+        "VK_FORMAT_R32_SFLOAT", "VK_FORMAT_R32G32_SFLOAT", "VK_FORMAT_R32G32B32_SFLOAT",
+        "VK_FORMAT_R32G32B32A32_SFLOAT"};
     static constexpr std::string_view kDxgi[] = {
         "DXGI_FORMAT_R32_FLOAT", "DXGI_FORMAT_R32G32_FLOAT", "DXGI_FORMAT_R32G32B32_FLOAT",
         "DXGI_FORMAT_R32G32B32A32_FLOAT"};
@@ -200,8 +198,7 @@ class TargetReflector {
 
 }  // namespace
 
-Result<PassReflection> reflect_target(Target target, PassKind pass,
-                                      const ShaderInterface& iface) {
+Result<PassReflection> reflect_target(Target target, PassKind pass, const ShaderInterface& iface) {
   return TargetReflector(target, pass).reflect(iface);
 }
 

@@ -7,9 +7,9 @@
 #include <span>
 #include <string_view>
 
-#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/stage.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/support/diagnostics.hpp"
 
 namespace penumbra {

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/stage.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/model/target_reflection.hpp"
 
 namespace penumbra {

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/pass.hpp"
 #include "penumbra/model/target_reflection.hpp"
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/result.hpp"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <string_view>
 
-#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/model/model.hpp"
 
 namespace penumbra {
 

@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/model/model.hpp"
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/model/model.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {

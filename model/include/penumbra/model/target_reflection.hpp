@@ -34,14 +34,14 @@ struct ConstantBinding {
   std::string type;       // "vec4" or "float4"
   std::optional<std::uint32_t> offset;  // bytes, in its block
   std::uint32_t size = kParamMemberSize;
-  std::string reg;  // hlsl_dx9: "c0"
+  std::string reg;              // hlsl_dx9: "c0"
   std::uint32_t registers = 0;  // hlsl_dx9: float4 registers it spans
   bool operator==(const ConstantBinding&) const = default;
 };
 
 // A uniform block or constant buffer.
 struct BlockBinding {
-  std::string name;  // the block as the API names it: "ShadowParams"
+  std::string name;                      // the block as the API names it: "ShadowParams"
   std::optional<std::uint32_t> set;      // spirv, glsl450 (set is spirv only)
   std::optional<std::uint32_t> binding;  // spirv, glsl450
   std::string reg;                       // hlsl_dx10: "b0"
@@ -61,8 +61,8 @@ struct SamplerBinding {
 };
 
 struct TextureBinding {
-  std::string name;  // the variable, as the API reports it: "shadow_cmp"
-  std::string type;  // "sampler2D", "sampler2DShadow", "Texture2D"
+  std::string name;                      // the variable, as the API reports it: "shadow_cmp"
+  std::string type;                      // "sampler2D", "sampler2DShadow", "Texture2D"
   std::optional<std::uint32_t> set;      // spirv
   std::optional<std::uint32_t> binding;  // spirv, glsl450
   std::string reg;                       // hlsl_dx10: "t2"; hlsl_dx9: "s1"
@@ -82,9 +82,9 @@ struct StageBindings {
 };
 
 struct VertexAttribute {
-  std::string name;      // the text's input variable: "position"
+  std::string name;                       // the text's input variable: "position"
   std::optional<std::uint32_t> location;  // spirv, GLSL targets
-  std::string semantic;  // HLSL: "TEXCOORD0"
+  std::string semantic;                   // HLSL: "TEXCOORD0"
   std::uint32_t components = 0;
   std::string format;  // "VK_FORMAT_R32G32_SFLOAT", "D3DDECLTYPE_FLOAT2", "GL_FLOAT"
   bool operator==(const VertexAttribute&) const = default;
@@ -100,7 +100,7 @@ struct RenderTarget {
 struct PassReflection {
   std::vector<VertexAttribute> vertex_inputs;
   std::vector<RenderTarget> render_targets;
-  std::string depth_target;            // the depth pass: the depth format; else empty
+  std::string depth_target;             // the depth pass: the depth format; else empty
   std::vector<std::string> extensions;  // what the API must enable: "EXT_color_buffer_float"
   StageBindings vert;
   StageBindings frag;
