@@ -10,9 +10,6 @@ namespace penumbra {
 namespace {
 
 // Indexed by the enum values, so the order must follow the enum declarations.
-constexpr std::array<std::string_view, kAllTechniques.size()> kTechniqueNames = {
-    "hard",       "pcf_grid",       "pcf_poisson", "pcss",
-    "minmax_pcf", "backprojection", "pcss_minmax", "screen_blur"};
 constexpr std::array<std::string_view, kAllTargets.size()> kTargetNames = {
     "spirv", "glsl450", "glsl330", "essl300", "hlsl_dx10", "hlsl_dx9"};
 
@@ -28,7 +25,7 @@ std::optional<Enum> parse_name(const std::array<std::string_view, N>& names,
 }  // namespace
 
 std::string_view to_string(Technique technique) {
-  return kTechniqueNames[static_cast<std::size_t>(technique)];
+  return describe(technique).name;
 }
 
 std::string_view to_string(Target target) {
@@ -36,7 +33,10 @@ std::string_view to_string(Target target) {
 }
 
 std::optional<Technique> parse_technique(std::string_view name) {
-  return parse_name(kTechniqueNames, kAllTechniques, name);
+  for (Technique technique : kAllTechniques) {
+    if (describe(technique).name == name) return technique;
+  }
+  return std::nullopt;
 }
 
 std::optional<Target> parse_target(std::string_view name) {
@@ -44,7 +44,11 @@ std::optional<Target> parse_target(std::string_view name) {
 }
 
 std::string allowed_techniques() {
-  return join(kTechniqueNames, ", ");
+  std::string out;
+  for (Technique technique : kAllTechniques) {
+    out += (out.empty() ? "" : ", ") + std::string(describe(technique).name);
+  }
+  return out;
 }
 
 std::string allowed_targets() {

@@ -123,16 +123,26 @@ constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
 constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
                                           PassKind::blur_v, PassKind::composite};
 
+constexpr std::string_view kGridKeys[] = {"kernel"};
+constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk"};
+constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples", "disk"};
+constexpr std::string_view kMinmaxPcfKeys[] = {"kernel", "traversal"};
+constexpr std::string_view kBackprojectionKeys[] = {"traversal", "max_nodes"};
+constexpr std::string_view kScreenBlurKeys[] = {"blur_radius", "depth_aware"};
+constexpr std::string_view kTraversal[] = {"traversal"};
+constexpr std::string_view kDepthAware[] = {"depth_aware"};
+
 // Indexed by Technique.
 constexpr TechniqueDescription kTechniques[] = {
-    {Technique::hard, kSinglePass, false},
-    {Technique::pcf_grid, kSinglePass, false},
-    {Technique::pcf_poisson, kSinglePass, false},
-    {Technique::pcss, kSinglePass, false},
-    {Technique::minmax_pcf, kMinmaxPasses, true},
-    {Technique::backprojection, kMinmaxPasses, true},
-    {Technique::pcss_minmax, kMinmaxPasses, true},
-    {Technique::screen_blur, kScreenBlurPasses, false},
+    {Technique::hard, "hard", {}, {}, kSinglePass, false},
+    {Technique::pcf_grid, "pcf_grid", kGridKeys, {}, kSinglePass, false},
+    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, {}, kSinglePass, false},
+    {Technique::pcss, "pcss", kPcssKeys, {}, kSinglePass, false},
+    {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversal, kMinmaxPasses, true},
+    {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
+     kMinmaxPasses, true},
+    {Technique::pcss_minmax, "pcss_minmax", kPoissonKeys, {}, kMinmaxPasses, true},
+    {Technique::screen_blur, "screen_blur", kScreenBlurKeys, kDepthAware, kScreenBlurPasses, false},
 };
 
 // The tables are indexed by their enums: each row's enum must be its index.

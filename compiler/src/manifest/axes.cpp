@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra::manifest_detail {
 namespace {
@@ -103,29 +104,13 @@ std::string_view axis_name(Axis axis) {
 }
 
 bool uses(Technique technique, Axis axis) {
-  switch (technique) {
-    case Technique::hard:
-      return false;
-    case Technique::pcf_grid:
-      return axis == Axis::kernel;
-    case Technique::pcf_poisson:
-      return axis == Axis::pcf_samples || axis == Axis::disk;
-    case Technique::pcss:
-      return axis == Axis::blocker_samples || axis == Axis::pcf_samples || axis == Axis::disk;
-    case Technique::minmax_pcf:
-      return axis == Axis::kernel || axis == Axis::traversal;
-    case Technique::backprojection:
-      return axis == Axis::traversal || axis == Axis::max_nodes;
-    case Technique::pcss_minmax:
-      return axis == Axis::pcf_samples || axis == Axis::disk;
-    case Technique::screen_blur:
-      return axis == Axis::blur_radius || axis == Axis::depth_aware;
-  }
-  return false;
+  return std::ranges::find(describe(technique).keys, axis_name(axis)) !=
+         describe(technique).keys.end();
 }
 
-bool is_optional(Axis axis) {
-  return axis == Axis::traversal || axis == Axis::max_nodes || axis == Axis::depth_aware;
+bool is_optional(Technique technique, Axis axis) {
+  return std::ranges::find(describe(technique).optional_keys, axis_name(axis)) !=
+         describe(technique).optional_keys.end();
 }
 
 bool is_given(const AxisValues& values, Axis axis) {
@@ -156,7 +141,7 @@ std::string describe_axes(Technique technique) {
     if (!uses(technique, axis)) continue;
     if (!out.empty()) out += ", ";
     out += axis_name(axis);
-    if (is_optional(axis)) out += " (optional)";
+    if (is_optional(technique, axis)) out += " (optional)";
   }
   return out.empty() ? "no keys" : out;
 }

@@ -35,11 +35,12 @@ inline constexpr std::array kKeyAxes = {Axis::kernel,      Axis::blocker_samples
                                         Axis::blur_radius, Axis::depth_aware};
 
 std::string_view axis_name(Axis axis);
-// Whether `technique` takes the key; it ignores the keys it does not take.
+// Whether `technique` takes the key (its TechniqueDescription's keys); it
+// ignores the keys it does not take.
 bool uses(Technique technique, Axis axis);
-// Whether a set may leave the key out for a technique that takes it
-// (traversal, max_nodes and depth_aware have defaults).
-bool is_optional(Axis axis);
+// Whether a set may leave the key out for `technique` (its description's
+// optional_keys: traversal, max_nodes and depth_aware have defaults).
+bool is_optional(Technique technique, Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
 // "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or
 // "no keys" for hard.

@@ -19,7 +19,7 @@ Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
     bool used = false;
     for (Technique technique : axes.technique) {
       used = used || uses(technique, axis);
-      if (!given && !is_optional(axis) && uses(technique, axis)) {
+      if (!given && !is_optional(technique, axis) && uses(technique, axis)) {
         const std::string name(to_string(technique));
         return node.error("technique " + name + " needs key '" + key + "'; " + name + " uses " +
                           describe_axes(technique));

@@ -124,10 +124,14 @@ struct PassDescription {
 
 const PassDescription& describe(PassKind pass);
 
-// A technique: the passes it runs, in order, and whether it reads the
-// min-max mip.
+// A technique: its name, the keys that select its variants, the passes it
+// runs, in order, and whether it reads the min-max mip. Its CPU reference is
+// reference/'s evaluate().
 struct TechniqueDescription {
   Technique technique;
+  std::string_view name;                            // in manifests and index.json
+  std::span<const std::string_view> keys;           // from kVariantKeyNames, in that order
+  std::span<const std::string_view> optional_keys;  // keys with a default a manifest may omit
   std::span<const PassKind> passes;
   bool reads_minmax;
 };
