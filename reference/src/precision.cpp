@@ -26,7 +26,7 @@ double tolerance(Technique technique, const SamplingPrecision& precision) {
       // An integer count of point compares, 1 - C / K^2 in float: bit-exact.
       return 0.0;
     case Technique::backprojection:
-      // Exact compares; only float32 sums of patch areas differ (issue 4).
+      // Exact compares; only float32 sums of patch areas differ.
       return 1e-4;
     case Technique::pcf_grid:
     case Technique::pcf_poisson:

@@ -1,4 +1,4 @@
-// The built-in scenes. The first two use the whitepaper's light (L = 0.5,
+// The built-in scenes. The first two use the NVIDIA PCSS whitepaper's light (L = 0.5,
 // Fw = 3.75, n = 9.5), for which u = 0.5 + x * 2.533 / z: the map spans |x| < 2.07 at
 // z = 10.5 and |x| < 3.4 at z = 17. Occluders sit at several heights so that
 // penumbrae of several widths appear, and each scene has an occluder that

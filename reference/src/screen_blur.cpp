@@ -1,5 +1,5 @@
-// screen_blur's separable Gaussian blur (seed 003, design "Semantics for the
-// CPU reference"): one routine for both axes, clamp-to-edge taps, sums in
+// screen_blur's separable Gaussian blur ("Soft-Edged Shadows";
+// docs/techniques.md): one routine for both axes, clamp-to-edge taps, sums in
 // double.
 #include "penumbra/reference/screen_blur.hpp"
 

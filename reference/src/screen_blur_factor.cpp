@@ -1,4 +1,5 @@
-// screen_blur's factor pass (seed 003; the step-2 shader of the article): a
+// screen_blur's factor pass (the step-2 shader of the GameDev.net article
+// "Soft-Edged Shadows"): a
 // 3x3 point-compare PCF at whole-texel offsets. Each compare is hard's point
 // sample, so the ambiguity rule is hard's, applied to all nine.
 #include "technique_parts.hpp"

@@ -1,8 +1,8 @@
-// The techniques of contract section 2, each a direct reading of its row:
+// The techniques of docs/techniques.md, each a direct reading of its row:
 // the first four here, the min-max mip ones and screen_blur's factor in
 // their own files (technique_parts.hpp). Every comparison uses z_r - bias;
 // geometry (search width, penumbra, filter radius) uses the unbiased z_r, as
-// in the whitepaper.
+// in the NVIDIA PCSS whitepaper.
 #include "penumbra/reference/techniques.hpp"
 
 #include <optional>

@@ -1,4 +1,5 @@
-// A line-by-line transliteration of the whitepaper's "PCSS Shader Code".
+// A line-by-line transliteration of the NVIDIA PCSS whitepaper's "PCSS Shader
+// Code".
 // Names, constants and statement order are the whitepaper's; only the HLSL
 // texture calls are emulated (below), in double precision. Deliberately no
 // code is shared with techniques.cpp, so that the two readings check each

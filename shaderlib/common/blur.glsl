@@ -1,4 +1,5 @@
-// screen_blur's separable Gaussian (seed 003), shared by blur_h and blur_v.
+// screen_blur's separable Gaussian (after the GameDev.net article "Soft-Edged
+// Shadows"), shared by blur_h and blur_v.
 // BLUR_RADIUS R, BLUR_WEIGHTS[2R + 1] (taps -R..R), PENUMBRA_DEPTH_AWARE and
 // BLUR_DEPTH_TOLERANCE come from variant.glsl. Taps sit at pixel centres of
 // the screen-sized input; a tap past the screen's edge reads the edge pixel

@@ -1,4 +1,4 @@
-// Depth-first walk of the min-max hierarchy over a texel window (seed 002),
+// Depth-first walk of the min-max hierarchy over a texel window (Dmitriev 2007),
 // shared by minmax_pcf, backprojection and pcss_minmax. Node coordinates are
 // floats holding exact integers: Direct3D 9 has no integer bit operations.
 // No recursion, arrays or stack (ps_3_0 cannot index temporaries): the

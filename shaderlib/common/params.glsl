@@ -12,7 +12,7 @@ layout(set = 0, binding = PENUMBRA_SLOT_PARAMS, std140) uniform ShadowParams {
   vec4 minmax_info;      // x: the min-max mip's top level N (1x1); y, z, w: 0
 } params;
 
-// The whitepaper's names for the same quantities.
+// The NVIDIA PCSS whitepaper's names for the same quantities.
 #define LIGHT_WORLD_SIZE (params.light.x)
 #define LIGHT_FRUSTUM_WIDTH (params.light.y)
 #define NEAR_PLANE (params.light.z)

@@ -1,5 +1,5 @@
 #version 450
-// screen_blur's blur_h pass (seed 003), horizontal: taps along the row.
+// screen_blur's blur_h pass ("Soft-Edged Shadows"), horizontal: taps along the row.
 // Reads screen_factor .x (and, depth-aware, receivers .z) and writes
 // vec4(blurred, 0, 0, 0).
 #extension GL_GOOGLE_include_directive : require

@@ -1,5 +1,5 @@
 #version 450
-// screen_blur's blur_v pass (seed 003), vertical: taps along the column.
+// screen_blur's blur_v pass ("Soft-Edged Shadows"), vertical: taps along the column.
 // Reads screen_factor .x (and, depth-aware, receivers .z) and writes
 // vec4(blurred, 0, 0, 0).
 #extension GL_GOOGLE_include_directive : require

@@ -1,5 +1,5 @@
 #version 450
-// screen_blur's composite pass (seed 003), shared by every screen_blur
+// screen_blur's composite pass ("Soft-Edged Shadows"), shared by every screen_blur
 // variant: the scene colour darkened by the blurred factor, alpha kept.
 #extension GL_GOOGLE_include_directive : require
 #include "variant.glsl"

@@ -1,5 +1,5 @@
 #version 450
-// The whitepaper's step 1: write linear light-view z (normalized by the
+// The NVIDIA PCSS whitepaper's step 1: write linear light-view z (normalized by the
 // power-of-two DEPTH_SCALE, so exact) to the R32F target and to the depth
 // buffer, so one pass fills an R32F map (Direct3D 9) or a depth map.
 #extension GL_GOOGLE_include_directive : require

@@ -1,5 +1,5 @@
 #version 450
-// Min-max mip, level 1 (seed 002): (min, max) of the 2x2 map texels under
+// Min-max mip, level 1 (Dmitriev 2007): (min, max) of the 2x2 map texels under
 // this texel. The target is ceil(W/2) x ceil(H/2); a read past the map's
 // last texel is clamped to it, which leaves min and max unchanged.
 #extension GL_GOOGLE_include_directive : require

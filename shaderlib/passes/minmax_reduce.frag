@@ -1,5 +1,5 @@
 #version 450
-// Min-max mip, level l + 1 from level l (seed 002): min of the 2x2 minima
+// Min-max mip, level l + 1 from level l (Dmitriev 2007): min of the 2x2 minima
 // and max of the maxima under this texel. The target is ceil(Ws/2) x
 // ceil(Hs/2); a read past the source's last texel is clamped to it, which
 // leaves min and max unchanged.

@@ -1,4 +1,5 @@
-// backprojection: seed 002's accurate algorithm (Guennebaud et al. 2006).
+// backprojection: the accurate algorithm of Dmitriev 2007 ("Soft Shadows",
+// NVIDIA), after Guennebaud et al. 2006.
 // Each occluding texel is the square patch of its frustum footprint at its
 // depth; projected from the receiver P onto the light plane z = 0 it covers
 // [(a0 - a_r) g(z), (a1 - a_r) g(z)] per axis, where a is the slope

@@ -1,4 +1,4 @@
-// minmax_pcf: seed 002's fast algorithm. 1 - C / K^2, C the occluding texels
+// minmax_pcf: the fast algorithm of Dmitriev 2007. 1 - C / K^2, C the occluding texels
 // (d < reference) of the KERNEL_SIZE x KERNEL_SIZE window at
 // floor(uv * size) - floor(K / 2); texels outside the map do not occlude.
 // C is counted exactly: whole min-max nodes that all occlude or none do are

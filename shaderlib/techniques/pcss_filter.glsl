@@ -1,4 +1,4 @@
-// PCSS steps 2 and 3 (the whitepaper's names), shared by pcss and
+// PCSS steps 2 and 3 (the NVIDIA PCSS whitepaper's names), shared by pcss and
 // pcss_minmax: penumbra size and filtering over PCF_DISK.
 #ifndef PENUMBRA_PCSS_FILTER_GLSL
 #define PENUMBRA_PCSS_FILTER_GLSL

@@ -1,6 +1,7 @@
-// screen_blur (seed 003): the unblurred screen factor, the mean of 3x3 point
-// compares at whole-texel offsets (i / W, j / H), i, j in -1..1, around the
-// receiver. blur_h, blur_v and composite (common/blur.glsl) filter it later.
+// screen_blur (GameDev.net, "Soft-Edged Shadows"): the unblurred screen
+// factor, the mean of 3x3 point compares at whole-texel offsets (i / W,
+// j / H), i, j in -1..1, around the receiver. blur_h, blur_v and composite
+// (common/blur.glsl) filter it later.
 float shadow_visibility(vec3 query) {
   float sum = 0.0;
   for (int j = -1; j <= 1; ++j) {

@@ -1,5 +1,5 @@
 // Bad input gets exit code 2, a message naming what is wrong and where, and
-// no output written (contract section 4).
+// no output written (the exit codes of cli/exit_codes.hpp).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

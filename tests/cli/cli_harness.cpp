@@ -71,7 +71,7 @@ void EvalFixture::set_up_eval(const std::string& name, const std::string& manife
   const CliRun run =
       run_penumbra("build '" + manifest_file.string() + "' -o '" + lib().string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  // The whitepaper's own setting: its constants are the scenes' defaults.
+  // The NVIDIA PCSS whitepaper's own setting: its constants are the scenes' defaults.
   const reference::Scene scene = reference::builtin_scenes().front();
   map_ = reference::ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);
   receivers_ = reference::receivers(scene, scene.receivers_width, scene.receivers_height);

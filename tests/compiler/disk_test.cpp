@@ -1,4 +1,4 @@
-// Poisson disks: determinism, range errors, geometry and the whitepaper set.
+// Poisson disks: determinism, range errors, geometry and the NVIDIA PCSS whitepaper set.
 #include "penumbra/compiler/disk.hpp"
 
 #include <gtest/gtest.h>

@@ -185,7 +185,7 @@ TEST_P(MinmaxPcfTest, TraversalEqualsBruteForceBitForBitOnEveryScene) {
 TEST_P(MinmaxPcfTest, FlatRegionsReadFarFewerTexelsThanTheKernel) {
   reference::Scene scene;
   scene.name = "flat_halves";
-  // u < 0.5 at z = 12: x < 0 with the whitepaper's light.
+  // u < 0.5 at z = 12: x < 0 with the NVIDIA PCSS whitepaper's light.
   scene.occluders = {{-6.0, -6.0, 0.0, 6.0, 12.0}};
   scene.plane_z0 = 16.0;
   scene.receivers_width = 128;

@@ -38,7 +38,7 @@ constexpr const char* kRepresentatives[] = {
     "minmax_pcf_k12", "backprojection", "pcss_minmax_p16_whitepaper16", "screen_blur_r4"};
 
 // Representatives the default manifest does not build: an even kernel, and
-// the whitepaper's disk for pcss_minmax.
+// the NVIDIA PCSS whitepaper's disk for pcss_minmax.
 constexpr const char* kExtraVariants = R"({
   "schema": 1,
   "sets": [

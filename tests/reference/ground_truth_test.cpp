@@ -1,4 +1,4 @@
-// Issue 4's claim: against the exact visibility of the built-in scenes,
+// The claim of docs/verification.md: against the exact visibility of the built-in scenes,
 // backprojection is more accurate than PCSS. Every technique runs on the
 // scene's ray-cast map and receivers. Receivers whose exact visibility depends
 // on occluder parts outside the map's frustum are left out: no shadow-map

@@ -20,7 +20,7 @@ Sample pcss_minmax_at(const FloatImage& map, const Query& q, const std::vector<P
   return evaluate(pcss_minmax_variant(pcf), ShadowMapView(map), light, q);
 }
 
-// The whitepaper's light: the search width at z_r = 16 is L_uv (16 - 9.5) / 16,
+// The NVIDIA PCSS whitepaper's light: the search width at z_r = 16 is L_uv (16 - 9.5) / 16,
 // 0.0542 uv or 13.9 texels of 256.
 TEST(PcssMinMax, NoBlockerIsFullyLitAndFullOcclusionBlack) {
   EXPECT_EQ(

@@ -1,4 +1,4 @@
-// The pcss reference against the whitepaper's own code on the built-in
+// The pcss reference against the NVIDIA PCSS whitepaper's own code on the built-in
 // scenes: two independent readings of one specification must agree.
 #include <gtest/gtest.h>
 

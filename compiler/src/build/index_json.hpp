@@ -1,4 +1,4 @@
-// OUT/index.json (contract section 5) from the jobs of a finished build.
+// OUT/index.json (docs/shader-interface.md) from the jobs of a finished build.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // The variant axes that sets and exclusions give, and which ones a technique
-// uses (contract section 2).
+// uses (docs/techniques.md).
 #pragma once
 
 #include <array>

@@ -14,7 +14,7 @@ struct ForbiddenOp {
   const char* why;
 };
 
-// Shader Model 3.0 limits (contract section 3).
+// Shader Model 3.0 limits (docs/targets.md).
 constexpr ForbiddenOp kDx9Forbidden[] = {
     {spv::OpImageSampleDrefImplicitLod, "comparison sampling (SampleCmp)",
      "SM 3.0 has no comparison samplers; compare in the shader"},

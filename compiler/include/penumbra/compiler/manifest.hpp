@@ -14,7 +14,7 @@
 
 namespace penumbra {
 
-// The built-in disk family (the whitepaper's 16 points); never declared.
+// The built-in disk family (the NVIDIA PCSS whitepaper's 16 points); never declared.
 inline constexpr std::string_view kWhitepaperDisk = "whitepaper16";
 
 // A generated disk family from "disks": one disk per sample count.

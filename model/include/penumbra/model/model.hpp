@@ -57,7 +57,7 @@ inline constexpr std::string_view kBruteForceTraversal = "brute_force";
 inline constexpr int kDefaultMaxNodes = 16384;  // when the key is unset
 inline constexpr int kMaxMaxNodes = 1048576;
 
-// screen_blur's `blur_radius` R: taps -R..R per blur pass (seed 003).
+// screen_blur's `blur_radius` R: taps -R..R per blur pass ("Soft-Edged Shadows").
 inline constexpr int kMaxBlurRadius = 32;
 // screen_blur with depth_aware: a tap is dropped when its receiver z differs
 // from the centre's by more than this fraction of the centre's z.

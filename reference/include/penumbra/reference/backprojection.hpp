@@ -1,4 +1,4 @@
-// backprojection (contract section 2, design "Semantics"; Guennebaud et al.
+// backprojection (docs/techniques.md; Dmitriev 2007, after Guennebaud et al.
 // 2006): every occluding texel is the patch of its frustum footprint at its
 // depth; seen from the receiver point each patch projects onto the light
 // plane, and the light's covered fraction is the sum of the projected areas

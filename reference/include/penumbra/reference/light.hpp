@@ -1,5 +1,5 @@
-// The light and the shadow map's projection (contract section 1), in the
-// whitepaper's terms. Light-view space: light centre at the origin, looking
+// The light and the shadow map's projection (docs/shader-interface.md), in the
+// NVIDIA PCSS whitepaper's terms. Light-view space: light centre at the origin, looking
 // down +z; the area light is the square x, y in [-L, L] at z = 0.
 #pragma once
 

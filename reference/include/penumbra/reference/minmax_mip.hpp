@@ -1,4 +1,4 @@
-// The min-max depth mip of seed 002 (docs/verification.md, "Min-max mip"):
+// The min-max depth mip of Dmitriev 2007 (docs/verification.md, "Min-max mip"):
 // level 0 is the map, level l holds the (min, max) of the map texels
 // [i 2^l, (i+1) 2^l) x [j 2^l, (j+1) 2^l) clipped to the map, up to the 1x1
 // level N. Also the hierarchical count of occluding texels the minmax_pcf
@@ -84,7 +84,7 @@ struct MipCount {
   int reads = 0;        // nodes whose (min, max) was read: what the shader's .y counts
 };
 
-// minmax_pcf's traversal (design "GPU traversal"): from the 2 x 2 roots of
+// minmax_pcf's traversal (docs/techniques.md): from the 2 x 2 roots of
 // start_level(), depth first with children (2i, 2j), (2i+1, 2j), (2i, 2j+1),
 // (2i+1, 2j+1); a node missing the window is skipped unread, a node with
 // z_ref <= min adds nothing, one with max < z_ref adds its texels in the

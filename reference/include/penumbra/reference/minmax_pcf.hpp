@@ -1,4 +1,4 @@
-// minmax_pcf (contract section 2, design "Semantics"): the fraction of the
+// minmax_pcf (docs/techniques.md; Dmitriev 2007): the fraction of the
 // K x K texel window around a receiver whose texels do not occlude it,
 // computed in float exactly as a correct shader does.
 #pragma once

@@ -1,4 +1,4 @@
-// screen_blur's chain after the factor pass (seed 003, docs/verification.md
+// screen_blur's chain after the factor pass ("Soft-Edged Shadows", docs/verification.md
 // "screen_blur"): a separable Gaussian blur of the screen-space shadow factor
 // and a composite onto a scene colour. The factor itself is what evaluate()
 // and evaluate_image() return for screen_blur. Images are screen-sized and

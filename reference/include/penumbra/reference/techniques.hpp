@@ -1,4 +1,4 @@
-// The CPU reference of every technique (contract section 2), in double
+// The CPU reference of every technique (docs/techniques.md), in double
 // precision and independent of the shader sources.
 #pragma once
 

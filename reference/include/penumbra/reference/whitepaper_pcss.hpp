@@ -1,4 +1,5 @@
-// The whitepaper's PCSS shader code (seed 000, "PCSS Shader Code"),
+// The PCSS shader code ("PCSS Shader Code") of the NVIDIA PCSS whitepaper,
+// "Integrating Realistic Soft Shadows into Your Game Engine" (2008),
 // transliterated line by line to C++ with its own constants and 16-point
 // Poisson disk. A second, independent reading of the specification that the
 // pcss reference (and `penumbra eval`) is checked against.
