@@ -35,7 +35,7 @@ constexpr const char* kManifest = R"({
     {"technique": "minmax_pcf", "kernel": [8, 16, 32, 64], "traversal": "brute_force"}
   ]})";
 
-// 512 x 512, the whitepaper's light: the left half of the map under an
+// 512 x 512, the NVIDIA PCSS whitepaper's light: the left half of the map under an
 // occluder at z = 12, a square of the right half under one at z = 13, the
 // rest open over a flat receiver at z = 16.
 reference::Scene bench_scene() {

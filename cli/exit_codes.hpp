@@ -1,4 +1,4 @@
-// Exit codes (contract section 4) and error reporting for the commands.
+// Exit codes (docs: README "The penumbra command") and error reporting for the commands.
 #pragma once
 
 #include "penumbra/support/diagnostics.hpp"
