@@ -1,7 +1,8 @@
-// The per-technique references that evaluate() (techniques.cpp) dispatches
-// to, each in its own file, and the point and PCF steps several of them share.
+// The per-technique references that technique_table.cpp assigns to each
+// technique, and the point and PCF steps several of them share.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "penumbra/reference/light.hpp"
@@ -17,6 +18,13 @@ namespace penumbra::reference::detail {
 // boundary compares differently (hard, and each of screen_blur's 9 compares).
 Sample point_compare(const ShadowMapView& map, double u, double v, double z_ref,
                      const SamplingPrecision& precision);
+
+// The mean of bilinear comparisons at texel offsets over a K x K grid.
+double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kernel);
+
+// The NVIDIA PCSS whitepaper's three steps.
+Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, double z_ref,
+            const Disk& blocker_disk, const Disk& pcf_disk, const SamplingPrecision& precision);
 
 // The mean of bilinear comparisons at uv + d * radius over the disk's points
 // (pcf_poisson, and step 3 of pcss and pcss_minmax).
@@ -35,5 +43,14 @@ Sample screen_blur_factor(const ShadowMapView& map, const Query& q, double z_ref
 
 Sample pcss_minmax(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                    const Query& q, const Disk& pcf_disk, const SamplingPrecision& precision);
+
+// What check_variant() asks of a variant's parts (variant_checks.cpp); errors
+// (bad_input) name the variant.
+Status check_disk(const Variant& variant, const std::optional<Disk>& disk, const char* role,
+                  const std::optional<int>& samples, const char* samples_key);
+Status check_kernel(const Variant& variant, int max_kernel, bool odd);
+Status check_traversal(const Variant& variant);
+Status check_max_nodes(const Variant& variant);
+Status check_blur(const Variant& variant);
 
 }  // namespace penumbra::reference::detail

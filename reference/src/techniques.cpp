@@ -1,6 +1,7 @@
 // The techniques of docs/techniques.md, each a direct reading of its row:
 // the first four here, the min-max mip ones and screen_blur's factor in
-// their own files (technique_parts.hpp). Every comparison uses z_r - bias;
+// their own files (technique_parts.hpp); technique_table.cpp says which
+// serves which technique. Every comparison uses z_r - bias;
 // geometry (search width, penumbra, filter radius) uses the unbiased z_r, as
 // in the NVIDIA PCSS whitepaper.
 #include "penumbra/reference/techniques.hpp"
@@ -9,6 +10,7 @@
 
 #include "penumbra/reference/sampling.hpp"
 #include "technique_parts.hpp"
+#include "technique_table.hpp"
 
 namespace penumbra::reference {
 namespace detail {
@@ -19,12 +21,6 @@ Sample point_compare(const ShadowMapView& map, double u, double v, double z_ref,
   auto lit_at = [&](Texel t) { return lit(z_ref, map.depth(t.i, t.j)); };
   return {lit_at(texels.texels[0]) ? 1.0 : 0.0, varies(texels, lit_at)};
 }
-
-}  // namespace detail
-
-namespace {
-
-using detail::poisson_pcf;
 
 double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kernel) {
   const int half = (kernel - 1) / 2;
@@ -73,38 +69,21 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   return {poisson_pcf(map, q, z_ref, pcf_disk.points, filter_radius_uv), ambiguous};
 }
 
+}  // namespace detail
+
+namespace {
+
 // `mip` may be null for the techniques whose reference does not read it.
 Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMip* mip,
                 const LightParams& light, const Query& query, const SamplingPrecision& precision) {
-  const double z_ref = query.z - light.bias;
-  switch (variant.technique) {
-    case Technique::hard:
-      return detail::point_compare(map, query.u, query.v, z_ref, precision);
-    case Technique::pcf_grid:
-      return {pcf_grid(map, query, z_ref, variant.keys.kernel.value()), false};
-    case Technique::pcf_poisson:
-      return {poisson_pcf(map, query, z_ref, variant.pcf_disk.value().points,
-                          light.filter_radius(map.width())),
-              false};
-    case Technique::pcss:
-      return pcss(map, light, query, z_ref, variant.blocker_disk.value(), variant.pcf_disk.value(),
-                  precision);
-    case Technique::minmax_pcf:
-      return detail::minmax_pcf(map, light, query, variant.keys.kernel.value());
-    case Technique::backprojection:
-      return detail::backprojection(map, *mip, light, query);
-    case Technique::pcss_minmax:
-      return detail::pcss_minmax(map, *mip, light, query, variant.pcf_disk.value(), precision);
-    case Technique::screen_blur:
-      return detail::screen_blur_factor(map, query, z_ref, precision);
-  }
-  return {};
+  return detail::reference_for(variant.technique)
+      .evaluate({variant, map, mip, light, query, query.z - light.bias, precision});
 }
 
 }  // namespace
 
 bool reference_reads_mip(Technique technique) {
-  return technique == Technique::backprojection || technique == Technique::pcss_minmax;
+  return detail::reference_for(technique).reads_mip;
 }
 
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const MinMaxMip& mip,
