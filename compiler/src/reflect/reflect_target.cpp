@@ -88,10 +88,11 @@ class TargetReflector {
     return out;
   }
 
-  // ShadowParams: a block where the target keeps one, else loose uniforms:
-  // Direct3D 9's constant registers, every member as the text declares
-  // them, and GLSL 3.30's struct members that the stage reads, which are
-  // the ones GL reports as active (the others have no location).
+  // ShadowParams: a block where the target keeps one, else loose uniforms
+  // (Direct3D 9's constant registers, GLSL 3.30's struct members), every
+  // member as the text declares it: GL reports every member of the struct
+  // active once a stage reads one (Mesa does), and D3D9 engines set
+  // registers, read or not.
   void params(const UniformBlock& block, StageBindings& out) const {
     const std::string param_block(kParamsBlock);
     const std::string instance(kParamsInstance);
@@ -110,7 +111,7 @@ class TargetReflector {
         case Target::glsl330:
           constant.name = instance + "." + member.name;
           constant.offset.reset();
-          if (member.used) out.uniforms.push_back(constant);
+          out.uniforms.push_back(constant);
           continue;
         case Target::hlsl_dx10:
           constant.name = instance + "_" + member.name;
@@ -120,7 +121,7 @@ class TargetReflector {
           constant.offset.reset();
           constant.reg = "c" + std::to_string(member.offset / kParamMemberSize);
           constant.registers = member.size / kParamMemberSize;
-          out.uniforms.push_back(constant);  // the shim declares every member
+          out.uniforms.push_back(constant);
           continue;
       }
       binding.members.push_back(std::move(constant));
