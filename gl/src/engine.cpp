@@ -6,17 +6,17 @@
 #include "device_selection.hpp"
 #include "minmax_mip.hpp"
 #include "query_pass.hpp"
+#include "screen_blur_chain.hpp"
 #include "textures.hpp"
 
 namespace penumbra {
 
 namespace gl {
 
-// What an engine owns: the context (and through it the display) and the
-// objects every call reuses, which destroying the context frees.
+// What an engine owns: the context (and through it the display). Each call
+// creates and deletes its own objects.
 struct Context {
   EglContext egl;
-  SamplerObjects samplers;
   GlInfo info;
 };
 
@@ -27,21 +27,17 @@ Result<std::unique_ptr<GlEngine>> GlEngine::create(const GlEngineOptions& option
   auto opened = gl::open_context(options.device);
   if (!opened) return opened.error();
   GlInfo info;
-  gl::SamplerObjects samplers;
   {
     auto current = opened->context.make_current();
     if (!current) return current.error();
     info = gl::current_context_info();
-    auto created = gl::create_sampler_objects();
-    if (!created) return created.error();
-    samplers = *created;
   }
   if (diagnostics) {
     diagnostics(
         {Severity::note, "OpenGL", info.renderer + ", " + info.version + " on " + opened->display});
   }
-  auto context = std::make_unique<gl::Context>(
-      gl::Context{std::move(opened->context), samplers, std::move(info)});
+  auto context =
+      std::make_unique<gl::Context>(gl::Context{std::move(opened->context), std::move(info)});
   return std::unique_ptr<GlEngine>(new GlEngine(std::move(context)));
 }
 
@@ -58,7 +54,7 @@ Result<GlQueryOutput> GlEngine::run_query(const GlQueryPasses& passes,
                                           const FloatImage& receivers, const ParamBlock& params) {
   auto current = context_->egl.make_current();
   if (!current) return current.error();
-  return gl::run_query_pass(context_->samplers, {passes, normalized_depth, receivers, params});
+  return gl::run_query_pass(passes, {normalized_depth, receivers, params});
 }
 
 Result<std::vector<FloatImage>> GlEngine::build_minmax(const GlMinmaxPasses& passes,
@@ -67,12 +63,22 @@ Result<std::vector<FloatImage>> GlEngine::build_minmax(const GlMinmaxPasses& pas
   auto current = context_->egl.make_current();
   if (!current) return current.error();
   PENUMBRA_TRY(gl::check_shadow_map(normalized_depth));
-  auto depth = gl::upload_depth(normalized_depth);
-  if (!depth) return depth.error();
-  auto mip = gl::build_minmax_mip(context_->samplers, passes, *depth,
-                                  {normalized_depth.width, normalized_depth.height}, params);
+  gl::PassInputs inputs;
+  inputs.give(TextureId::shadow_depth, normalized_depth);
+  auto mip = gl::build_minmax_mip(passes, inputs, {normalized_depth.width, normalized_depth.height},
+                                  params);
   if (!mip) return mip.error();
   return gl::read_minmax_mip(*mip);
+}
+
+Result<GlScreenBlurOutput> GlEngine::run_screen_blur(const GlScreenBlurPasses& passes,
+                                                     const FloatImage& normalized_depth,
+                                                     const FloatImage& receivers,
+                                                     const FloatImage& scene_colour,
+                                                     const ParamBlock& params) {
+  auto current = context_->egl.make_current();
+  if (!current) return current.error();
+  return gl::run_screen_blur_chain(passes, {normalized_depth, receivers, scene_colour, params});
 }
 
 }  // namespace penumbra

@@ -1,10 +1,12 @@
 #include "full_screen_draw.hpp"
 
 #include <cstdio>
+#include <vector>
 
 #include "gl_check.hpp"
 #include "param_binding.hpp"
 #include "penumbra/support/full_screen_triangle.hpp"
+#include "textures.hpp"
 
 namespace penumbra::gl {
 namespace {
@@ -14,45 +16,48 @@ struct Geometry {
   VertexArray layout;
 };
 
-// `position` at attribute location 0: two floats per vertex.
-Geometry full_screen_triangle() {
+// The triangle's two floats per vertex at each of the reflection's vertex
+// inputs (build_program admitted only 2-float inputs).
+Geometry full_screen_triangle(const PassReflection& reflection) {
   Geometry geometry{create_buffer(), create_vertex_array()};
   glNamedBufferStorage(geometry.vertices.get(), sizeof kFullScreenTriangle,
                        kFullScreenTriangle.data(), 0);
   glVertexArrayVertexBuffer(geometry.layout.get(), 0, geometry.vertices.get(), 0,
                             2 * sizeof(float));
-  glVertexArrayAttribFormat(geometry.layout.get(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(geometry.layout.get(), 0, 0);
-  glEnableVertexArrayAttrib(geometry.layout.get(), 0);
+  for (std::size_t i = 0; i < reflection.vertex_inputs.size(); ++i) {
+    const GLuint location =
+        reflection.vertex_inputs[i].location.value_or(static_cast<std::uint32_t>(i));
+    glVertexArrayAttribFormat(geometry.layout.get(), location, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(geometry.layout.get(), location, 0);
+    glEnableVertexArrayAttrib(geometry.layout.get(), location);
+  }
   return geometry;
 }
 
-Result<Framebuffer> framebuffer_for(const Texture& target, const std::string& what) {
+Result<Framebuffer> framebuffer_for(const PassProgram& pass, const Texture& target,
+                                    const std::string& what) {
   Framebuffer framebuffer = create_framebuffer();
-  glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, target.get(), 0);
-  glNamedFramebufferDrawBuffer(framebuffer.get(), GL_COLOR_ATTACHMENT0);
+  const GLenum attachment = GL_COLOR_ATTACHMENT0 + pass.reflection->render_targets.front().index;
+  glNamedFramebufferTexture(framebuffer.get(), attachment, target.get(), 0);
+  glNamedFramebufferDrawBuffer(framebuffer.get(), attachment);
   const GLenum status = glCheckNamedFramebufferStatus(framebuffer.get(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     char code[16];
     std::snprintf(code, sizeof code, "0x%04X", status);
     return make_error(Error::Kind::device, "glCheckNamedFramebufferStatus",
-                      "the RG32F target of " + what + " is not renderable: status " + code);
+                      "the " + std::string(pass.target_format->name) + " target of " + what +
+                          " is not renderable: status " + code);
   }
   return framebuffer;
 }
 
-Status bind_samplers(const PassProgram& pass, std::span<const ImageSource> sources) {
-  for (const SamplerUnit& unit : pass.units) {
-    const ImageSource* source = nullptr;
-    for (const ImageSource& candidate : sources) {
-      if (candidate.name == unit.name) source = &candidate;
-    }
-    if (source == nullptr) {
-      return make_error(Error::Kind::internal, std::string(pass.role->where),
-                        "no image to bind to the active sampler '" + unit.name + "'");
-    }
-    glBindTextureUnit(unit.unit, source->texture);
-    glBindSampler(unit.unit, source->sampler);
+Status bind_textures(const PassProgram& pass, PassInputs& inputs) {
+  for (std::size_t i = 0; i < pass.bindings.textures.size(); ++i) {
+    const TextureSlot& slot = pass.bindings.textures[i];
+    auto texture = inputs.texture_for(slot.texture, *slot.binding, pass.where);
+    if (!texture) return texture.error();
+    glBindTextureUnit(slot.unit, *texture);
+    glBindSampler(slot.unit, pass.samplers[i].get());
   }
   return {};
 }
@@ -68,20 +73,24 @@ class ProgramInUse {
 
 }  // namespace
 
-Status draw_full_screen(const PassProgram& pass, const ParamBlock& params,
-                        std::span<const ImageSource> sources, const DrawTarget& target,
-                        const std::string& what) {
-  // Kept until the draw: the uniform buffer of a ShadowParams block.
-  auto param_buffer = bind_params(pass.program.get(), pass.iface, params, *pass.role);
-  if (!param_buffer) return param_buffer.error();
-  auto framebuffer = framebuffer_for(target.texture, what);
+Result<Texture> create_pass_target(const PassProgram& pass, int width, int height,
+                                   const std::string& what) {
+  return create_target(*pass.target_format, width, height, what);
+}
+
+Status draw_full_screen(const PassProgram& pass, const ParamBlock& params, PassInputs& inputs,
+                        const DrawTarget& target, const std::string& what) {
+  // Kept until the draw: the uniform buffers of the pass's blocks.
+  auto param_buffers = bind_params(pass.program.get(), pass.bindings, params, pass.where);
+  if (!param_buffers) return param_buffers.error();
+  auto framebuffer = framebuffer_for(pass, target.texture, what);
   if (!framebuffer) return framebuffer.error();
-  const Geometry geometry = full_screen_triangle();
+  const Geometry geometry = full_screen_triangle(*pass.reflection);
   PENUMBRA_TRY(check_gl("setting up " + what));
 
   // Depth test, blending and culling stay off: this context never enables them.
   const ProgramInUse in_use(pass.program.get());
-  PENUMBRA_TRY(bind_samplers(pass, sources));
+  PENUMBRA_TRY(bind_textures(pass, inputs));
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer->get());
   glViewport(0, 0, target.width, target.height);
   glBindVertexArray(geometry.layout.get());

@@ -49,6 +49,9 @@ struct DeleteFramebuffer {
 struct DeleteVertexArray {
   void operator()(GLuint name) const { glDeleteVertexArrays(1, &name); }
 };
+struct DeleteSampler {
+  void operator()(GLuint name) const { glDeleteSamplers(1, &name); }
+};
 
 using Shader = Name<DeleteShader>;
 using Program = Name<DeleteProgram>;
@@ -56,6 +59,7 @@ using Texture = Name<DeleteTexture>;
 using Buffer = Name<DeleteBuffer>;
 using Framebuffer = Name<DeleteFramebuffer>;
 using VertexArray = Name<DeleteVertexArray>;
+using Sampler = Name<DeleteSampler>;
 
 // New objects of each kind (glCreate*: created and initialized at once).
 inline Texture create_texture_2d() {
@@ -77,6 +81,11 @@ inline VertexArray create_vertex_array() {
   GLuint name = 0;
   glCreateVertexArrays(1, &name);
   return VertexArray(name);
+}
+inline Sampler create_sampler() {
+  GLuint name = 0;
+  glCreateSamplers(1, &name);
+  return Sampler(name);
 }
 
 }  // namespace penumbra::gl

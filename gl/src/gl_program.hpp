@@ -1,27 +1,31 @@
 // Compiling and linking a pass from GLSL text, as a GL engine does: the
-// driver's own compiler, its logs turned into errors.
+// driver's own compiler, its logs turned into errors, and the stages'
+// interface (vertex inputs, fragment outputs) placed and checked by the
+// pass's reflection.
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "gl_names.hpp"
-#include "pass_role.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra::gl {
 
-// Compiles both stages and links them. The vertex input `position` is bound
-// to location 0 and the fragment output role.output to colour 0 before
-// linking (shaders with explicit locations keep theirs), and both are checked
-// afterwards. Every error has `where` = role.where. Errors: compile (the
+// Compiles both stages and links them. Before linking, each of the
+// reflection's vertex inputs is bound to its location and each render
+// target's output to its colour index (shaders with explicit locations keep
+// theirs); afterwards every active input and output must be in the
+// reflection at that place. Every error has `where`. Errors: compile (the
 // message names the stage, or the link, and holds the driver's log);
-// bad_input when `position` (vec2, location 0) or the output (colour 0) is
-// missing or elsewhere, the output has fewer than 2 components (every pass
-// draws into an RG32F target), or the vertex stage has another input.
+// bad_input when the program and the reflection disagree (an active input or
+// output the reflection lacks, another location, a render target the
+// program does not write, an output with fewer components than its target's
+// format), or the reflection asks for what the engine cannot draw (a vertex
+// input other than one of 2 floats, for its full-screen triangle; other than
+// one render target).
 Result<Program> build_program(std::string_view vertex_text, std::string_view fragment_text,
-                              const PassRole& role);
-
-// The number N of the text's "#version N" line (330, 450), or 0 without one.
-int glsl_version(std::string_view text);
+                              const PassReflection& reflection, const std::string& where);
 
 }  // namespace penumbra::gl

@@ -5,35 +5,38 @@
 #include <vector>
 
 #include "gl_names.hpp"
+#include "pass_inputs.hpp"
 #include "penumbra/gl/engine.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/minmax_levels.hpp"
 #include "penumbra/support/param_block.hpp"
 #include "penumbra/support/result.hpp"
-#include "sampler_objects.hpp"
+#include "texel_formats.hpp"
 
 namespace penumbra::gl {
 
-// Hierarchy level l (1..N) in level l - 1 of a GL_RG32F texture whose level
-// 0 is 2^(N-1) x 2^(N-1), at texels [0, sizes[l - 1]); the rest of each level
-// is padding, (1, 1).
+// Hierarchy level l (1..N) in level l - 1 of a texture whose level 0 is
+// 2^(N-1) x 2^(N-1), at texels [0, sizes[l - 1]); the rest of each level
+// is padding, 1 in every channel.
 struct MinmaxMip {
   Texture chain;
-  std::vector<LevelSize> sizes;  // minmax_level_sizes of the map
+  const TexelFormat* format = nullptr;  // the passes' render-target format
+  std::vector<LevelSize> sizes;         // minmax_level_sizes of the map
 };
 
-// Prepares both passes, then draws level 1 with minmax_init reading `depth`
-// (the map, map_size) as shadow_depth, and each level l up to N with
-// minmax_reduce reading level l - 1 as minmax_source, each into a texture of
-// its own that is then copied into the chain. Each draw gets `params` with
-// source_size set to the level it reads and screen_size to the level it
-// writes (W, H, 1/W, 1/H). Errors: those of prepare_pass and
-// draw_full_screen, naming the pass (and the level).
-Result<MinmaxMip> build_minmax_mip(const SamplerObjects& samplers, const GlMinmaxPasses& passes,
-                                   const Texture& depth, LevelSize map_size,
-                                   const ParamBlock& params);
+// Prepares both passes, then draws level 1 with minmax_init reading what
+// `inputs` gives it (the map, map_size, as shadow_depth) and each level l up
+// to N with minmax_reduce reading level l - 1 as minmax_source, each into a
+// texture of its own that is then copied into the chain. Each draw gets
+// `params` with source_size set to the level it reads and screen_size to the
+// level it writes (W, H, 1/W, 1/H). Errors: those of prepare_pass and
+// draw_full_screen, naming the pass (and the level); bad_input when the two
+// passes' render targets differ in format.
+Result<MinmaxMip> build_minmax_mip(const GlMinmaxPasses& passes, PassInputs& inputs,
+                                   LevelSize map_size, const ParamBlock& params);
 
-// Levels 1..N (index 0 is level 1) at their sizes, two channels (min, max).
+// Levels 1..N (index 0 is level 1) at their sizes, every channel of the
+// chain's format ((min, max)).
 Result<std::vector<FloatImage>> read_minmax_mip(const MinmaxMip& mip);
 
 }  // namespace penumbra::gl

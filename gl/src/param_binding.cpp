@@ -1,9 +1,8 @@
 #include "param_binding.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
-#include <string>
-#include <vector>
 
 namespace penumbra::gl {
 namespace {
@@ -14,45 +13,44 @@ std::string given(const ParamBlock& params) {
   return names.empty() ? "nothing" : names;
 }
 
-Result<std::array<float, 4>> value_of(const ParamMember& member, const ParamBlock& params,
-                                      const PassRole& role) {
-  const auto found = params.find(member.member);
+Result<std::array<float, 4>> value_of(const ConstantBinding& constant, const ParamBlock& params,
+                                      const std::string& where) {
+  const auto found = params.find(constant.parameter);
   if (found == params.end()) {
-    return make_error(Error::Kind::bad_input, std::string(role.where),
-                      "ShadowParams member '" + member.member +
-                          "' has no value in the params (given: " + given(params) + ")");
+    return make_error(Error::Kind::bad_input, where,
+                      "ShadowParams member '" + constant.parameter + "' (uniform '" +
+                          constant.name + "') has no value in the params (given: " + given(params) +
+                          ")");
   }
   return found->second;
 }
 
 }  // namespace
 
-Result<Buffer> bind_params(GLuint program, const ProgramInterface& iface, const ParamBlock& params,
-                           const PassRole& role) {
-  if (!iface.block) {
-    for (const ParamMember& member : iface.members) {
-      auto value = value_of(member, params, role);
-      if (!value) return value.error();
-      glProgramUniform4fv(program, member.location, 1, value->data());
-    }
-    return Buffer();
-  }
-  // Offsets come from the driver, so no std140 arithmetic is assumed here.
-  std::vector<std::byte> bytes(static_cast<std::size_t>(iface.block->size));
-  for (const ParamMember& member : iface.members) {
-    auto value = value_of(member, params, role);
+Result<std::vector<Buffer>> bind_params(GLuint program, const PassBindings& bindings,
+                                        const ParamBlock& params, const std::string& where) {
+  // bind_by_reflection admitted only vec4 constants.
+  for (const UniformSlot& uniform : bindings.uniforms) {
+    auto value = value_of(*uniform.constant, params, where);
     if (!value) return value.error();
-    const std::size_t offset = static_cast<std::size_t>(member.offset);
-    if (offset + sizeof(*value) > bytes.size()) {
-      return make_error(Error::Kind::internal, std::string(role.where),
-                        "ShadowParams member '" + member.member + "' lies outside its block");
-    }
-    std::memcpy(bytes.data() + offset, value->data(), sizeof(*value));
+    glProgramUniform4fv(program, uniform.location, 1, value->data());
   }
-  Buffer buffer = create_buffer();
-  glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes.size()), bytes.data(), 0);
-  glBindBufferBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(iface.block->binding), buffer.get());
-  return buffer;
+  std::vector<Buffer> buffers;
+  for (const BlockSlot& slot : bindings.blocks) {
+    std::vector<std::byte> bytes(slot.block->size);
+    for (const ConstantBinding* member : slot.members) {
+      auto value = value_of(*member, params, where);
+      if (!value) return value.error();
+      // bind_by_reflection checked that the member lies inside the block.
+      std::memcpy(bytes.data() + *member->offset, value->data(),
+                  std::min<std::size_t>(member->size, sizeof(*value)));
+    }
+    Buffer buffer = create_buffer();
+    glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(bytes.size()), bytes.data(), 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, slot.binding, buffer.get());
+    buffers.push_back(std::move(buffer));
+  }
+  return buffers;
 }
 
 }  // namespace penumbra::gl

@@ -1,35 +1,40 @@
 #include "pass_program.hpp"
 
 #include <algorithm>
-#include <string>
 
 #include "gl_check.hpp"
 #include "gl_program.hpp"
+#include "sampler_objects.hpp"
 
 namespace penumbra::gl {
 
-bool PassProgram::reads(std::string_view name) const {
-  return std::any_of(units.begin(), units.end(),
-                     [&](const SamplerUnit& unit) { return unit.name == name; });
+bool PassProgram::reads(TextureId texture) const {
+  return std::any_of(bindings.textures.begin(), bindings.textures.end(),
+                     [&](const TextureSlot& slot) { return slot.texture == texture; });
 }
 
-Result<PassProgram> prepare_pass(std::string_view vertex_text, std::string_view fragment_text,
-                                 const PassRole& role) {
-  PassProgram pass;
-  pass.role = &role;
-  auto program = build_program(vertex_text, fragment_text, role);
+Result<PassProgram> prepare_pass(const GlPass& pass, PassKind kind) {
+  PassProgram prepared;
+  prepared.where = std::string(to_string(kind)) + " pass";
+  prepared.reflection = &pass.reflection;
+  auto program = build_program(pass.vert, pass.frag, pass.reflection, prepared.where);
   if (!program) return program.error();
-  pass.program = std::move(*program);
-  auto iface = reflect_program(pass.program.get(), role);
-  if (!iface) return iface.error();
-  pass.iface = std::move(*iface);
-  // The fragment text's #version decides whether the shader declares units.
-  auto units =
-      assign_sampler_units(pass.program.get(), pass.iface, glsl_version(fragment_text), role);
-  if (!units) return units.error();
-  pass.units = std::move(*units);
-  PENUMBRA_TRY(check_gl("preparing the " + std::string(role.where)));
-  return pass;
+  prepared.program = std::move(*program);
+  // build_program admitted one render target.
+  const RenderTarget& target = pass.reflection.render_targets.front();
+  auto format = texel_format(target.format, prepared.where, "render target '" + target.name + "'");
+  if (!format) return format.error();
+  prepared.target_format = *format;
+  auto bindings = bind_by_reflection(prepared.program.get(), pass.reflection, prepared.where);
+  if (!bindings) return bindings.error();
+  prepared.bindings = std::move(*bindings);
+  for (const TextureSlot& slot : prepared.bindings.textures) {
+    auto sampler = create_sampler_object(slot.binding->sampler.state);
+    if (!sampler) return sampler.error();
+    prepared.samplers.push_back(std::move(*sampler));
+  }
+  PENUMBRA_TRY(check_gl("preparing the " + prepared.where));
+  return prepared;
 }
 
 }  // namespace penumbra::gl

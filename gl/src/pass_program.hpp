@@ -1,31 +1,34 @@
-// A pass's program, ready to draw: compiled, linked, its interface reflected
-// and its samplers given units.
+// A pass's program, ready to draw: compiled, linked and bound by its
+// reflection, with a sampler object per texture it samples.
 #pragma once
 
-#include <string_view>
+#include <string>
 #include <vector>
 
 #include "gl_names.hpp"
-#include "pass_role.hpp"
+#include "penumbra/gl/engine.hpp"
+#include "penumbra/model/pass.hpp"
 #include "penumbra/support/result.hpp"
-#include "program_interface.hpp"
-#include "sampler_units.hpp"
+#include "reflected_bindings.hpp"
+#include "texel_formats.hpp"
 
 namespace penumbra::gl {
 
 struct PassProgram {
-  const PassRole* role = nullptr;
+  std::string where;  // "query pass": Error::where of everything the pass reports
+  const PassReflection* reflection = nullptr;
   Program program;
-  ProgramInterface iface;
-  std::vector<SamplerUnit> units;
+  PassBindings bindings;
+  std::vector<Sampler> samplers;               // bindings.textures[i] samples through samplers[i]
+  const TexelFormat* target_format = nullptr;  // of its one render target
 
-  // Whether the fragment stage reads the image `name` (a kImageSlots name).
-  bool reads(std::string_view name) const;
+  // Whether the program samples `texture`.
+  bool reads(TextureId texture) const;
 };
 
-// Errors: those of build_program, reflect_program and assign_sampler_units,
-// all with `where` = role.where; device for a GL error.
-Result<PassProgram> prepare_pass(std::string_view vertex_text, std::string_view fragment_text,
-                                 const PassRole& role);
+// `pass` as the `kind` pass. Errors: those of build_program and
+// bind_by_reflection, all with `where` = "<kind> pass"; device for a GL
+// error.
+Result<PassProgram> prepare_pass(const GlPass& pass, PassKind kind);
 
 }  // namespace penumbra::gl

@@ -1,24 +1,19 @@
-// The sampler objects every pass binds (docs/shader-interface.md): `point`
-// for shadow_depth, receivers and minmax_source (nearest, no comparison),
-// `compare` for shadow_cmp (linear, LEQUAL comparison) and `mip` for
-// shadow_minmax (nearest texel of the nearest level, every level reachable);
-// all clamp to the edge.
+// Sampler objects made from the sampler state a reflection gives each
+// texture (docs/shader-interface.md): filter, mip filter, comparison, and
+// clamp-to-edge addressing.
 #pragma once
 
-#include "gl_api.hpp"
+#include "gl_names.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra::gl {
 
-// Plain names, not owning wrappers: they live as long as the context, and
-// destroying the context frees them.
-struct SamplerObjects {
-  GLuint point = 0;
-  GLuint compare = 0;
-  GLuint mip = 0;
-};
-
-// Creates all three in the current context. Errors (device): a GL error.
-Result<SamplerObjects> create_sampler_objects();
+// A new sampler object in the current context for `state`: GL_NEAREST or
+// GL_LINEAR; with mip_filter nearest, GL_NEAREST_MIPMAP_NEAREST (or
+// GL_LINEAR_MIPMAP_NEAREST) minification with the LOD range from 0 up, so
+// an integer LOD reads that level; comparison as GL_COMPARE_REF_TO_TEXTURE
+// with GL_LEQUAL; GL_CLAMP_TO_EDGE. Errors (device): a GL error.
+Result<Sampler> create_sampler_object(const SamplerState& state);
 
 }  // namespace penumbra::gl

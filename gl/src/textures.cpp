@@ -1,6 +1,5 @@
 #include "textures.hpp"
 
-#include <string>
 #include <vector>
 
 #include "gl_check.hpp"
@@ -24,17 +23,15 @@ Status check_size(const char* where, const FloatImage& image) {
   return {};
 }
 
-// A width x height texture of one level, filled from `data` (rows of floats
-// in `format`, row 0 first) unless it is null.
-Result<Texture> create_texture(GLenum internal_format, int width, int height, GLenum format,
-                               const float* data, const std::string& what) {
-  Texture texture = create_texture_2d();
-  glTextureStorage2D(texture.get(), 1, internal_format, width, height);
-  if (data != nullptr) {
-    glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, format, GL_FLOAT, data);
+// `image`'s texels with `channels` channels each, the missing ones 0.
+std::vector<float> padded(const FloatImage& image, int channels) {
+  std::vector<float> texels(image.pixel_count() * static_cast<std::size_t>(channels), 0.0f);
+  for (std::size_t p = 0; p < image.pixel_count(); ++p) {
+    for (int c = 0; c < image.channels; ++c) {
+      texels[p * channels + c] = image.data[p * image.channels + c];
+    }
   }
-  PENUMBRA_TRY(check_gl(what));
-  return texture;
+  return texels;
 }
 
 }  // namespace
@@ -50,43 +47,72 @@ Status check_query_inputs(const FloatImage& normalized_depth, const FloatImage& 
   return check_size("receivers", receivers);
 }
 
-Result<Texture> upload_depth(const FloatImage& normalized_depth) {
-  return create_texture(GL_DEPTH_COMPONENT32F, normalized_depth.width, normalized_depth.height,
-                        GL_DEPTH_COMPONENT, normalized_depth.data.data(),
-                        "uploading the shadow map (GL_DEPTH_COMPONENT32F)");
-}
-
-Result<Texture> upload_receivers(const FloatImage& receivers) {
-  const std::vector<float> rgba = receivers_to_rgba(receivers);
-  return create_texture(GL_RGBA32F, receivers.width, receivers.height, GL_RGBA, rgba.data(),
-                        "uploading the receivers (GL_RGBA32F)");
-}
-
-Result<Texture> create_rg_target(int width, int height, const std::string& what) {
-  return create_texture(GL_RG32F, width, height, GL_RG, nullptr,
-                        "creating " + what + " (GL_RG32F)");
-}
-
-Result<Texture> create_rg_chain(int side, int levels, const std::string& what) {
-  Texture texture = create_texture_2d();
-  glTextureStorage2D(texture.get(), levels, GL_RG32F, side, side);
-  // Immutable storage already limits sampling to these levels; said here too.
-  glTextureParameteri(texture.get(), GL_TEXTURE_MAX_LEVEL, levels - 1);
-  const float far[2] = {1.0f, 1.0f};
-  for (int level = 0; level < levels; ++level) {
-    glClearTexImage(texture.get(), level, GL_RG, GL_FLOAT, far);
+Status check_scene_colour(const FloatImage& scene_colour, const FloatImage& receivers) {
+  if (scene_colour.channels != 4 || scene_colour.data.size() != scene_colour.pixel_count() * 4) {
+    return input_error("scene colour",
+                       "expected four channels (RGBA) of width * height values, "
+                       "got " +
+                           std::to_string(scene_colour.channels) + " channel(s)");
   }
-  PENUMBRA_TRY(check_gl("creating " + what + " (GL_RG32F, " + std::to_string(levels) + " levels)"));
+  if (scene_colour.width != receivers.width || scene_colour.height != receivers.height) {
+    return input_error("scene colour", "is " + std::to_string(scene_colour.width) + "x" +
+                                           std::to_string(scene_colour.height) +
+                                           " but the screen (receivers) is " +
+                                           std::to_string(receivers.width) + "x" +
+                                           std::to_string(receivers.height));
+  }
+  return {};
+}
+
+Result<Texture> upload(const FloatImage& image, const TexelFormat& format,
+                       const std::string& what) {
+  const std::vector<float> texels = padded(image, format.channels);
+  Texture texture = create_texture_2d();
+  glTextureStorage2D(texture.get(), 1, format.internal_format, image.width, image.height);
+  glTextureSubImage2D(texture.get(), 0, 0, 0, image.width, image.height, format.pixel_format,
+                      GL_FLOAT, texels.data());
+  PENUMBRA_TRY(check_gl("uploading " + what + " (" + std::string(format.name) + ")"));
   return texture;
 }
 
-Result<FloatImage> read_rg(const Texture& texture, int level, int width, int height,
-                           const std::string& what) {
-  FloatImage image(width, height, 2);
-  glGetTextureSubImage(texture.get(), level, 0, 0, 0, width, height, 1, GL_RG, GL_FLOAT,
-                       static_cast<GLsizei>(image.data.size() * sizeof(float)), image.data.data());
+Result<Texture> create_target(const TexelFormat& format, int width, int height,
+                              const std::string& what) {
+  Texture texture = create_texture_2d();
+  glTextureStorage2D(texture.get(), 1, format.internal_format, width, height);
+  PENUMBRA_TRY(check_gl("creating " + what + " (" + std::string(format.name) + ")"));
+  return texture;
+}
+
+Result<Texture> create_chain(const TexelFormat& format, int side, int levels,
+                             const std::string& what) {
+  Texture texture = create_texture_2d();
+  glTextureStorage2D(texture.get(), levels, format.internal_format, side, side);
+  // Immutable storage already limits sampling to these levels; said here too.
+  glTextureParameteri(texture.get(), GL_TEXTURE_MAX_LEVEL, levels - 1);
+  const float far[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  for (int level = 0; level < levels; ++level) {
+    glClearTexImage(texture.get(), level, format.pixel_format, GL_FLOAT, far);
+  }
+  PENUMBRA_TRY(check_gl("creating " + what + " (" + std::string(format.name) + ", " +
+                        std::to_string(levels) + " levels)"));
+  return texture;
+}
+
+Result<FloatImage> read_texture(const Texture& texture, const TexelFormat& format, int level,
+                                int width, int height, const std::string& what) {
+  FloatImage image(width, height, format.channels);
+  glGetTextureSubImage(texture.get(), level, 0, 0, 0, width, height, 1, format.pixel_format,
+                       GL_FLOAT, static_cast<GLsizei>(image.data.size() * sizeof(float)),
+                       image.data.data());
   PENUMBRA_TRY(check_gl("reading back " + what));
   return image;
+}
+
+FloatImage channel(const FloatImage& image, int c) {
+  FloatImage out(image.width, image.height, 1);
+  for (std::size_t p = 0; p < out.data.size(); ++p)
+    out.data[p] = image.data[p * image.channels + c];
+  return out;
 }
 
 }  // namespace penumbra::gl

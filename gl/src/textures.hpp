@@ -1,8 +1,7 @@
-// The passes' images as GL textures: the shadow map as normalized depth in a
-// GL_DEPTH_COMPONENT32F texture, the receivers as GL_RGBA32F, the query's
-// output and the min-max levels as GL_RG32F (docs/shader-interface.md). Row 0
-// of an image is GL's first row (t = 0, window y = 0), the contract's row
-// j = 0: nothing flips.
+// The passes' images as GL textures, in the formats the reflection names
+// (texel_formats.hpp): the caller's images uploaded, the passes' targets,
+// the min-max mip's chain, and readbacks. Row 0 of an image is GL's first
+// row (t = 0, window y = 0), the contract's row j = 0: nothing flips.
 #pragma once
 
 #include <string>
@@ -10,6 +9,7 @@
 #include "gl_names.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
+#include "texel_formats.hpp"
 
 namespace penumbra::gl {
 
@@ -21,20 +21,30 @@ Status check_shadow_map(const FloatImage& normalized_depth);
 // check_shadow_map, and for the receivers likewise with check_receivers.
 Status check_query_inputs(const FloatImage& normalized_depth, const FloatImage& receivers);
 
-// One immutable level; the sampler objects decide filtering.
-Result<Texture> upload_depth(const FloatImage& normalized_depth);
-Result<Texture> upload_receivers(const FloatImage& receivers);  // 3 channels padded to 4
-// One level of GL_RG32F: the query pass's (visibility, texel reads) and each
-// min-max pass's (min, max). `what` names it in errors.
-Result<Texture> create_rg_target(int width, int height, const std::string& what);
+// Errors (bad_input, "scene colour"): not four channels of the receivers' size.
+Status check_scene_colour(const FloatImage& scene_colour, const FloatImage& receivers);
 
-// A GL_RG32F texture of `levels` levels, level 0 `side` x `side`, every texel
-// (1, 1). Errors (device): a GL error.
-Result<Texture> create_rg_chain(int side, int levels, const std::string& what);
+// One immutable level in `format` holding `image`, which has at most the
+// format's channels; channels the image lacks are zero (receivers' (u, v,
+// z_r) in GL_RGBA32F). Errors (device): a GL error. `what` names it in
+// errors.
+Result<Texture> upload(const FloatImage& image, const TexelFormat& format, const std::string& what);
 
-// Texels [0, width) x [0, height) of `level` of a GL_RG32F texture, two
-// channels. Errors (device): a GL error.
-Result<FloatImage> read_rg(const Texture& texture, int level, int width, int height,
-                           const std::string& what);
+// One level in `format`, a pass's colour target.
+Result<Texture> create_target(const TexelFormat& format, int width, int height,
+                              const std::string& what);
+
+// `levels` levels in `format`, level 0 `side` x `side`, every texel 1 in
+// every channel. Errors (device): a GL error.
+Result<Texture> create_chain(const TexelFormat& format, int side, int levels,
+                             const std::string& what);
+
+// Texels [0, width) x [0, height) of `level`, every channel of `format`.
+// Errors (device): a GL error.
+Result<FloatImage> read_texture(const Texture& texture, const TexelFormat& format, int level,
+                                int width, int height, const std::string& what);
+
+// Channel `c` of `image` as a one-channel image.
+FloatImage channel(const FloatImage& image, int c);
 
 }  // namespace penumbra::gl

@@ -69,12 +69,6 @@ Result<std::unique_ptr<Context>> create_context(const EngineOptions& options,
   context->info = describe(*context->device);
   PENUMBRA_TRY(check_format_support(*context->device));
 
-  auto nearest = vk::create_sampler(context->device->get(), vk::SamplerKind::nearest);
-  if (!nearest) return nearest.error();
-  context->nearest = std::move(*nearest);
-  auto comparison = vk::create_sampler(context->device->get(), vk::SamplerKind::comparison);
-  if (!comparison) return comparison.error();
-  context->comparison = std::move(*comparison);
   auto commands = vk::CommandContext::create(*context->device);
   if (!commands) return commands.error();
   context->commands.emplace(std::move(*commands));

@@ -11,7 +11,6 @@
 #include "vk/debug_messenger.hpp"
 #include "vk/device.hpp"
 #include "vk/instance.hpp"
-#include "vk/sampler.hpp"
 #include "vk/timestamp_queries.hpp"
 
 namespace penumbra::detail {
@@ -25,8 +24,6 @@ struct Context {
   std::optional<vk::DebugMessenger> messenger;
   std::shared_ptr<const vk::Device> device;  // shared with every ShadowMap
   DeviceInfo info;
-  vk::Sampler nearest;
-  vk::Sampler comparison;
   std::optional<vk::CommandContext> commands;
   std::optional<vk::TimestampQueries> timestamps;  // none when the queue writes no timestamps
 

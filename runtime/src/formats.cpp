@@ -7,6 +7,9 @@
 namespace penumbra::detail {
 namespace {
 
+constexpr TextureFormat kTextureFormats[] = {TextureFormat::r32_float, TextureFormat::rg32_float,
+                                             TextureFormat::rgba32_float, TextureFormat::d32_float};
+
 struct Requirement {
   VkFormat format;
   bool vertex_buffer;  // a buffer feature rather than an optimal-tiling image feature
@@ -84,6 +87,40 @@ FormatFeatures features_of(const vk::Device& device, VkFormat format) {
 }
 
 }  // namespace
+
+VkFormat vk_format(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::r32_float:
+      return VK_FORMAT_R32_SFLOAT;
+    case TextureFormat::rg32_float:
+      return VK_FORMAT_R32G32_SFLOAT;
+    case TextureFormat::rgba32_float:
+      return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case TextureFormat::d32_float:
+      return VK_FORMAT_D32_SFLOAT;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+Result<TextureFormat> reflected_format(Target target, std::string_view api_name,
+                                       std::string_view where) {
+  std::string allowed;
+  for (TextureFormat format : kTextureFormats) {
+    if (api_format(target, format) == api_name) return format;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(api_format(target, format));
+  }
+  return make_error(Error::Kind::bad_input, std::string(where),
+                    "index.json's reflection gives the format '" + std::string(api_name) +
+                        "', which is not a " + std::string(to_string(target)) +
+                        " format of the shader contract (" + allowed + ")");
+}
+
+std::string_view api_name(Target target, VkFormat format) {
+  for (TextureFormat known : kTextureFormats) {
+    if (vk_format(known) == format) return api_format(target, known);
+  }
+  return "an unknown format";
+}
 
 Status check_format_support(const vk::Device& device) {
   static_assert(kVisibilityFormat == kMinmaxFormat && kScreenFactorFormat == kMinmaxFormat,

@@ -54,6 +54,18 @@ Result<StageCode> text_stage(const Library& library, const LibraryVariant& varia
   return reflected(std::move(compiled->spirv), path->string());
 }
 
+// index.json's reflection.<pass>.<target>: what the engine binds.
+Result<PassReflection> pass_reflection(const LibraryVariant& variant, PassKind pass,
+                                       Target target) {
+  const auto by_pass = variant.reflection.find(pass);
+  if (by_pass == variant.reflection.end() || !by_pass->second.contains(target)) {
+    return make_error(Error::Kind::bad_input, variant.variant.name,
+                      "index.json has no reflection." + std::string(to_string(pass)) + "." +
+                          std::string(to_string(target)) + " to bind the pass by");
+  }
+  return by_pass->second.at(target);
+}
+
 }  // namespace
 
 Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
@@ -66,6 +78,8 @@ Result<std::string> read_pass_file(const Library& library, const LibraryVariant&
 Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
                                           PassKind pass, Target target) {
   ExecutableProgram out;
+  out.program.target = target;
+  PENUMBRA_TRY_ASSIGN(out.program.reflection, pass_reflection(variant, pass, target));
   if (target == Target::spirv) {
     for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
       auto path = stage_path(library, variant, pass, target, stage);

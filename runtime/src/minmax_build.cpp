@@ -96,10 +96,10 @@ Result<MinmaxBuild> build_minmax(Context& context, ShadowMapImages& map, const P
     draw.resources.params = &level_params;
     if (level == 1) {
       // The map's depth only, as the GL engine offers it (docs/runtime.md).
-      draw.resources.shadow_map = &map;
-      draw.resources.map_comparison = false;
+      draw.resources.offer_map(map, /*comparison=*/false);
     } else {
-      draw.resources.minmax_source = &levels.back();
+      draw.resources.offer(TextureId::minmax_source, levels.back(),
+                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
     draw.positions = kFullScreenTriangle;
     // Read next by the following reduce pass and by the copy into the chain.

@@ -22,29 +22,30 @@ constexpr std::array<float, 4> kNoHalfPixelOffset{};
 
 }  // namespace
 
-Result<std::vector<std::byte>> pack_params(const ParamsLayout& layout, const ParamBlock& params,
+Result<std::vector<std::byte>> pack_params(const PlannedBinding& buffer, const ParamBlock& params,
                                            std::string_view pass) {
-  std::vector<std::byte> bytes(layout.size);
-  for (const BlockMember& member : layout.members) {
-    const std::string_view key = param_block_key(member.name);
-    std::string name = layout.block + " member '" + member.name + "'";
-    if (key != member.name) name += " (ParamBlock key '" + std::string(key) + "')";
-    const auto entry = params.find(std::string(key));
-    if (key != kHalfPixel && entry == params.end()) {
+  std::vector<std::byte> bytes(buffer.size);
+  for (const ConstantFill& constant : buffer.constants) {
+    const bool half_pixel = constant.parameter == kHalfPixelParameter;
+    std::string name = "'" + constant.name + "'";
+    if (constant.parameter != constant.name) name += " (parameter '" + constant.parameter + "')";
+    const auto entry = params.find(constant.parameter);
+    if (!half_pixel && entry == params.end()) {
       return make_error(
           Error::Kind::bad_input, std::string(pass),
           name + " has no value in the ParamBlock (given: " + given_names(params) + ")");
     }
-    const std::array<float, 4>& value = key == kHalfPixel ? kNoHalfPixelOffset : entry->second;
-    const bool fits = member.size % sizeof(float) == 0 && member.size >= sizeof(float) &&
-                      member.size <= sizeof(value) && member.offset + member.size <= layout.size;
+    const std::array<float, 4>& value = half_pixel ? kNoHalfPixelOffset : entry->second;
+    const bool fits = constant.size % sizeof(float) == 0 && constant.size >= sizeof(float) &&
+                      constant.size <= sizeof(value) &&
+                      constant.offset + constant.size <= buffer.size;
     if (!fits) {
       return make_error(Error::Kind::bad_input, std::string(pass),
-                        name + " is " + std::to_string(member.size) + " bytes at offset " +
-                            std::to_string(member.offset) +
-                            "; members must be float to vec4 inside the block");
+                        name + " is " + std::to_string(constant.size) + " bytes at offset " +
+                            std::to_string(constant.offset) + " of '" + buffer.name +
+                            "'; constants must be float to vec4 inside the buffer");
     }
-    std::memcpy(bytes.data() + member.offset, value.data(), member.size);
+    std::memcpy(bytes.data() + constant.offset, value.data(), constant.size);
   }
   return bytes;
 }

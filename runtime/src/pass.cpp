@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "formats.hpp"
 #include "vk/buffer.hpp"
 #include "vk/framebuffer.hpp"
 #include "vk/render_pass.hpp"
@@ -62,6 +63,53 @@ Status check_viewport_support(const Context& context, const PassDraw& draw) {
                     "the program asks for a Direct3D viewport (d3d_viewport), which needs a "
                     "negative viewport height: Vulkan 1.1, and " +
                         context.info.name + " offers Vulkan 1.0");
+}
+
+Error io_error(const PassDraw& draw, std::string message) {
+  return make_error(Error::Kind::bad_input, std::string(draw.shape.name), std::move(message));
+}
+
+// The vertex input and the targets the reflection describes are the ones
+// the pass creates.
+Status check_reflected_io(const PassDraw& draw) {
+  const PassReflection& reflection = draw.program->reflection;
+  const std::string pass(draw.shape.name);
+  const std::uint32_t components = draw.shape.position_components;
+  const auto& inputs = reflection.vertex_inputs;
+  if (inputs.size() != 1 || inputs[0].components != components ||
+      inputs[0].location.value_or(0) != 0) {
+    std::string given;
+    for (const VertexAttribute& input : inputs) {
+      given += (given.empty() ? "" : ", ") + input.name + " (" + std::to_string(input.components) +
+               " floats)";
+    }
+    return io_error(draw, "index.json's reflection gives the vertex inputs " +
+                              (given.empty() ? std::string("none") : given) + "; the " + pass +
+                              " supplies position (" + std::to_string(components) +
+                              " floats) at location 0");
+  }
+  const auto& targets = reflection.render_targets;
+  const VkFormat colour = draw.target.colour->desc().format;
+  const std::string drawn = std::string(api_name(draw.program->target, colour));
+  if (targets.size() != 1 || targets[0].index != 0) {
+    return io_error(draw, "index.json's reflection gives " + std::to_string(targets.size()) +
+                              " render targets; the " + pass + " draws into one " + drawn +
+                              " target, index 0");
+  }
+  TextureFormat format{};
+  PENUMBRA_TRY_ASSIGN(format, reflected_format(draw.program->target, targets[0].format, pass));
+  if (vk_format(format) != colour) {
+    return io_error(draw, "index.json's reflection gives render target '" + targets[0].name +
+                              "' the format " + targets[0].format + "; the " + pass +
+                              " draws into " + drawn);
+  }
+  if (reflection.depth_target.empty() == (draw.target.depth != nullptr)) {
+    return io_error(draw,
+                    std::string("index.json's reflection ") +
+                        (draw.target.depth ? "gives no depth target; the " + pass + " writes one"
+                                           : "gives a depth target; the " + pass + " writes none"));
+  }
+  return {};
 }
 
 void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_pass,
@@ -121,8 +169,8 @@ void add_gpu_time(std::optional<double>& total, std::optional<double> elapsed) {
 Result<std::optional<double>> draw_pass(Context& context, const PassDraw& draw) {
   PENUMBRA_TRY(check_viewport_support(context, draw));
   const VkDevice device = context.device->get();
-  const std::vector<std::string_view> available = draw.resources.available();
-  auto plan = plan_bindings(*draw.program, draw.shape.name, available);
+  PENUMBRA_TRY(check_reflected_io(draw));
+  auto plan = plan_bindings(*draw.program, draw.shape.name);
   if (!plan) return plan.error();
 
   auto render_pass = vk::create_render_pass(device, render_pass_desc(draw.target));
@@ -136,8 +184,8 @@ Result<std::optional<double>> draw_pass(Context& context, const PassDraw& draw) 
   auto pipeline =
       PassPipeline::create(device, *draw.program, *plan, draw.shape, render_pass->get());
   if (!pipeline) return pipeline.error();
-  auto descriptors =
-      PassDescriptors::create(context, *plan, *pipeline, draw.resources, draw.shape.name);
+  auto descriptors = PassDescriptors::create(context, *plan, *pipeline, draw.resources,
+                                             draw.program->target, draw.shape.name);
   if (!descriptors) return descriptors.error();
   auto vertices = create_vertices(*context.device, draw.positions);
   if (!vertices) return vertices.error();

@@ -6,20 +6,21 @@
 #include <string>
 #include <utility>
 
+#include "formats.hpp"
 #include "param_block.hpp"
 #include "vk/descriptor_set.hpp"
 
 namespace penumbra::detail {
 namespace {
 
-Result<vk::Buffer> create_uniforms(const Context& context, const ParamsLayout& layout,
+Result<vk::Buffer> create_uniforms(const Context& context, const PlannedBinding& binding,
                                    const ParamBlock& params, std::string_view pass) {
-  auto bytes = pack_params(layout, params, pass);
+  auto bytes = pack_params(binding, params, pass);
   if (!bytes) return bytes.error();
   // A buffer cannot be empty, even for a block without members.
   const VkDeviceSize size = std::max<VkDeviceSize>(bytes->size(), 16);
   auto buffer = vk::Buffer::create(*context.device, size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                   "the " + layout.block + " uniform buffer");
+                                   "the " + binding.name + " uniform buffer");
   if (!buffer) return buffer.error();
   std::memcpy(buffer->bytes().data(), bytes->data(), bytes->size());
   return std::move(*buffer);
@@ -33,48 +34,44 @@ Result<vk::DescriptorPool> create_pool(VkDevice device, const BindingPlan& plan)
   return vk::DescriptorPool::create(device, sizes, plan.set_count);
 }
 
-// The image (in the layout it rests in) and the sampler a role binds.
-struct RoleImage {
-  VkImageView view = VK_NULL_HANDLE;
-  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkSampler sampler = VK_NULL_HANDLE;
-};
-
-RoleImage role_image(const Context& context, const PassResources& resources, BindingRole role) {
-  const ShadowMapImages* map = resources.shadow_map;
-  switch (role) {
-    case BindingRole::map_depth:
-      return {map->depth.view(), kMapDepthLayout, context.nearest.get()};
-    case BindingRole::map_colour:
-      return {map->colour.view(), kMapColourLayout, context.nearest.get()};
-    case BindingRole::map_comparison:
-      return {map->depth.view(), kMapDepthLayout, context.comparison.get()};
-    case BindingRole::receivers:
-      return {resources.receivers->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-              context.nearest.get()};
-    case BindingRole::minmax_mip:
-      return {resources.minmax_mip->view(), kMinmaxLayout, context.nearest.get()};
-    case BindingRole::minmax_source:
-      return {resources.minmax_source->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-              context.nearest.get()};
-    case BindingRole::screen_factor:
-      return {resources.screen_factor->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-              context.nearest.get()};
-    case BindingRole::scene_colour:
-      return {resources.scene_colour->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-              context.nearest.get()};
-    case BindingRole::params:
-      break;
-  }
-  return {};
+// The reflection's sampler state as Vulkan sampler parameters.
+vk::SamplerDesc sampler_desc(const SamplerState& state) {
+  vk::SamplerDesc desc;
+  desc.filter = state.filter == Filter::linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  // The min-max mip is read at explicit levels (textureLod(shadow_minmax, uv, l - 1)).
+  desc.max_lod = state.mip_filter == MipFilter::nearest ? VK_LOD_CLAMP_NONE : 0.0f;
+  desc.comparison = state.comparison;
+  return desc;
 }
 
-// A separate image or sampler takes its half of the role's pair.
+// The offered image of the binding's texture in the format the reflection
+// gives it.
+Result<const OfferedImage*> find_image(const PassResources& resources,
+                                       const PlannedBinding& binding, Target target,
+                                       std::string_view pass) {
+  const VkFormat format = vk_format(binding.format);
+  std::string offered;
+  for (const OfferedImage& image : resources.images) {
+    if (image.texture != binding.texture->id) continue;
+    if (image.image->desc().format == format) return &image;
+    offered +=
+        (offered.empty() ? "" : ", ") + std::string(api_name(target, image.image->desc().format));
+  }
+  if (offered.empty()) {
+    return make_error(Error::Kind::bad_input, std::string(pass),
+                      "'" + binding.name + "' has nothing to bind to in the " + std::string(pass) +
+                          ", which binds: " + resources.available());
+  }
+  return make_error(Error::Kind::bad_input, std::string(pass),
+                    "'" + binding.name + "' is " + std::string(api_format(target, binding.format)) +
+                        " in index.json's reflection; the " + std::string(pass) + " has it as " +
+                        offered);
+}
+
+// A separate image or sampler alone on its binding.
 void write_separate(VkDevice device, VkDescriptorSet set, const PlannedBinding& binding,
-                    const RoleImage& image) {
-  const bool is_sampler = binding.type == VK_DESCRIPTOR_TYPE_SAMPLER;
-  const VkDescriptorImageInfo info{is_sampler ? image.sampler : VK_NULL_HANDLE,
-                                   is_sampler ? VK_NULL_HANDLE : image.view, image.layout};
+                    VkImageView view, VkImageLayout layout, VkSampler sampler) {
+  const VkDescriptorImageInfo info{sampler, view, layout};
   VkWriteDescriptorSet write{};
   write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
   write.dstSet = set;
@@ -87,58 +84,80 @@ void write_separate(VkDevice device, VkDescriptorSet set, const PlannedBinding& 
 
 }  // namespace
 
-std::vector<std::string_view> PassResources::available() const {
-  std::vector<std::string_view> names;
-  if (params) names.push_back(kParamsBlock);
-  if (shadow_map) names.push_back(kShadowDepth);
-  if (shadow_map && map_comparison) names.push_back(kShadowCmp);
-  if (receivers) names.push_back(kReceivers);
-  if (minmax_mip) names.push_back(kShadowMinmax);
-  if (minmax_source) names.push_back(kMinmaxSource);
-  if (screen_factor) names.push_back(kScreenFactor);
-  if (scene_colour) names.push_back(kSceneColour);
-  return names;
+void PassResources::offer(TextureId texture, const vk::Image& image, VkImageLayout layout) {
+  images.push_back({texture, &image, layout});
+}
+
+void PassResources::offer_map(const ShadowMapImages& map, bool comparison) {
+  offer(TextureId::shadow_depth, map.depth, kMapDepthLayout);
+  offer(TextureId::shadow_depth, map.colour, kMapColourLayout);
+  if (comparison) offer(TextureId::shadow_cmp, map.depth, kMapDepthLayout);
+  if (map.minmax) offer(TextureId::shadow_minmax, map.minmax->image, kMinmaxLayout);
+}
+
+std::string PassResources::available() const {
+  std::string names = params ? std::string(kParamsBlock) : "";
+  for (const TextureDescription& texture : all_textures()) {
+    const bool offered = std::any_of(images.begin(), images.end(), [&](const OfferedImage& i) {
+      return i.texture == texture.id;
+    });
+    if (offered) names += (names.empty() ? "" : ", ") + std::string(texture.name);
+  }
+  return names.empty() ? "nothing" : names;
 }
 
 Result<PassDescriptors> PassDescriptors::create(const Context& context, const BindingPlan& plan,
                                                 const PassPipeline& pipeline,
-                                                const PassResources& resources,
+                                                const PassResources& resources, Target target,
                                                 std::string_view pass) {
-  if (plan.set_count == 0) return PassDescriptors({}, std::nullopt, {});
+  PassDescriptors out;
+  if (plan.set_count == 0) return out;
   const VkDevice device = context.device->get();
   auto pool = create_pool(device, plan);
   if (!pool) return pool.error();
-  std::vector<VkDescriptorSet> sets;
   for (std::uint32_t set = 0; set < plan.set_count; ++set) {
     auto allocated = pool->allocate(pipeline.set_layout(set));
     if (!allocated) return allocated.error();
-    sets.push_back(*allocated);
+    out.sets_.push_back(*allocated);
   }
+  out.pool_.emplace(std::move(*pool));
 
-  std::vector<vk::Buffer> uniforms;
   for (const PlannedBinding& binding : plan.bindings) {
-    const VkDescriptorSet set = sets[binding.set];
-    if (binding.role == BindingRole::params) {
-      auto buffer = create_uniforms(context, binding.params, *resources.params, pass);
+    const VkDescriptorSet set = out.sets_[binding.set];
+    if (binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
+      if (!resources.params) {
+        return make_error(Error::Kind::bad_input, std::string(pass),
+                          "'" + binding.name + "' has nothing to bind to in the " +
+                              std::string(pass) + ", which binds: " + resources.available());
+      }
+      auto buffer = create_uniforms(context, binding, *resources.params, pass);
       if (!buffer) return buffer.error();
       vk::write_uniform_buffer(device, set, binding.binding, buffer->get(), buffer->size());
-      uniforms.push_back(std::move(*buffer));
+      out.uniforms_.push_back(std::move(*buffer));
       continue;
     }
-    const RoleImage image = role_image(context, resources, binding.role);
+    VkSampler sampler = VK_NULL_HANDLE;
+    if (binding.sampler) {
+      auto created = vk::create_sampler(device, sampler_desc(*binding.sampler));
+      if (!created) return created.error();
+      sampler = created->get();
+      out.samplers_.push_back(std::move(*created));
+    }
+    VkImageView view = VK_NULL_HANDLE;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (binding.texture) {
+      const OfferedImage* image = nullptr;
+      PENUMBRA_TRY_ASSIGN(image, find_image(resources, binding, target, pass));
+      view = image->image->view();
+      layout = image->layout;
+    }
     if (binding.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER) {
-      vk::write_sampled_image(device, set, binding.binding, image.view, image.layout,
-                              image.sampler);
+      vk::write_sampled_image(device, set, binding.binding, view, layout, sampler);
     } else {
-      write_separate(device, set, binding, image);
+      write_separate(device, set, binding, view, layout, sampler);
     }
   }
-  return PassDescriptors(std::move(uniforms), std::move(*pool), std::move(sets));
+  return out;
 }
-
-PassDescriptors::PassDescriptors(std::vector<vk::Buffer> uniforms,
-                                 std::optional<vk::DescriptorPool> pool,
-                                 std::vector<VkDescriptorSet> sets)
-    : uniforms_(std::move(uniforms)), pool_(std::move(pool)), sets_(std::move(sets)) {}
 
 }  // namespace penumbra::detail

@@ -1,53 +1,65 @@
 // PassDescriptors: the descriptor sets of one pass, pointing every planned
-// binding at its resource, and the uniform buffers holding ShadowParams.
+// binding at its resource, with the uniform buffers and samplers they use.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
-#include "binding_plan.hpp"
 #include "context.hpp"
 #include "pass_pipeline.hpp"
+#include "reflection_binding.hpp"
 #include "shadow_map_images.hpp"
 #include "vk/buffer.hpp"
 #include "vk/descriptor_pool.hpp"
+#include "vk/sampler.hpp"
 
 namespace penumbra::detail {
 
-// What a pass can bind; absent resources are null.
+// An image a pass can bind as one of the contract's textures.
+struct OfferedImage {
+  TextureId texture;
+  const vk::Image* image = nullptr;
+  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // the layout it rests in
+};
+
+// What a pass can bind. A texture may be offered as more than one image:
+// the reflection's format picks one (the map as shadow_depth: its D32 depth
+// image or its R32F colour twin, the Direct3D 9 style).
 struct PassResources {
   const ParamBlock* params = nullptr;
-  const ShadowMapImages* shadow_map = nullptr;  // in its resting layouts
-  bool map_comparison = true;  // offer shadow_map as shadow_cmp too, not only shadow_depth
-  const vk::Image* receivers = nullptr;      // in SHADER_READ_ONLY_OPTIMAL
-  const vk::Image* minmax_mip = nullptr;     // shadow_minmax, in kMinmaxLayout
-  const vk::Image* minmax_source = nullptr;  // in SHADER_READ_ONLY_OPTIMAL
-  const vk::Image* screen_factor = nullptr;  // in SHADER_READ_ONLY_OPTIMAL
-  const vk::Image* scene_colour = nullptr;   // in SHADER_READ_ONLY_OPTIMAL
+  std::vector<OfferedImage> images;
 
-  // The interface names these resources serve, for plan_bindings().
-  std::vector<std::string_view> available() const;
+  void offer(TextureId texture, const vk::Image& image, VkImageLayout layout);
+  // The map as shadow_depth (both images) and, with `comparison`, as
+  // shadow_cmp (its depth image); its min-max mip, when built, as shadow_minmax.
+  void offer_map(const ShadowMapImages& map, bool comparison);
+  // "ShadowParams, shadow_depth, receivers": what the pass binds, for messages.
+  std::string available() const;
 };
 
 class PassDescriptors {
  public:
-  // `plan` must come from plan_bindings() with `resources.available()`.
-  // Each uniform block binding gets its own buffer, packed from the ParamBlock.
+  // Each uniform buffer is packed from the ParamBlock; each texture is the
+  // offered image of its name and format; each sampler is created from the
+  // reflection's state. Errors (bad_input, where = `pass`) name a texture
+  // the pass has no image for.
   static Result<PassDescriptors> create(const Context& context, const BindingPlan& plan,
                                         const PassPipeline& pipeline,
-                                        const PassResources& resources, std::string_view pass);
+                                        const PassResources& resources, Target target,
+                                        std::string_view pass);
 
   // One per set of the plan, set 0 first.
   const std::vector<VkDescriptorSet>& sets() const { return sets_; }
 
  private:
-  PassDescriptors(std::vector<vk::Buffer> uniforms, std::optional<vk::DescriptorPool> pool,
-                  std::vector<VkDescriptorSet> sets);
+  PassDescriptors() = default;
 
   std::vector<vk::Buffer> uniforms_;
+  std::vector<vk::Sampler> samplers_;
   std::optional<vk::DescriptorPool> pool_;  // absent when the program binds nothing
   std::vector<VkDescriptorSet> sets_;
 };

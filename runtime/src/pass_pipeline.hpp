@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
-#include "binding_plan.hpp"
 #include "formats.hpp"
 #include "penumbra/runtime/program.hpp"
+#include "reflection_binding.hpp"
 #include "vk/descriptor_set_layout.hpp"
 #include "vk/graphics_pipeline.hpp"
 #include "vk/pipeline_layout.hpp"

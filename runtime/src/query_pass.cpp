@@ -3,12 +3,12 @@
 #include <string>
 #include <utility>
 
-#include "binding_roles.hpp"
 #include "formats.hpp"
 #include "image_transfer.hpp"
 #include "pass.hpp"
 #include "penumbra/support/full_screen_triangle.hpp"
 #include "penumbra/support/image_checks.hpp"
+#include "reflection_binding.hpp"
 
 namespace penumbra::detail {
 
@@ -32,7 +32,7 @@ Result<QueryOutput> run_query(Context& context, const PassProgram& program,
                               const ShadowMapImages& map, const FloatImage& receivers,
                               const ParamBlock& params) {
   // Said here rather than as "nothing to bind": the map could have one.
-  if (!map.minmax && declares_image(program, kShadowMinmax)) {
+  if (!map.minmax && reads_texture(program.reflection, TextureId::shadow_minmax)) {
     return make_error(Error::Kind::bad_input, "query pass",
                       "the program reads shadow_minmax, the shadow map's min-max mip, but this " +
                           std::to_string(map.colour.desc().width) + "x" +
@@ -56,9 +56,9 @@ Result<QueryOutput> run_query(Context& context, const PassProgram& program,
   draw.program = &program;
   draw.shape = {"query pass", kVisibilityTarget, kQueryPositionFormat, 2, false, false};
   draw.resources.params = &params;
-  draw.resources.shadow_map = &map;
-  draw.resources.receivers = &*receivers_image;
-  draw.resources.minmax_mip = map.minmax ? &map.minmax->image : nullptr;
+  draw.resources.offer_map(map, /*comparison=*/true);
+  draw.resources.offer(TextureId::receivers, *receivers_image,
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
   draw.positions = kFullScreenTriangle;
   draw.target.colour = &*visibility;
   draw.target.colour_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;

@@ -15,6 +15,9 @@
 namespace penumbra::detail {
 namespace {
 
+// Where every image the chain samples rests.
+constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
 Status check_scene_colour(const FloatImage& scene_colour, const FloatImage& receivers) {
   if (scene_colour.channels != 4) {
     return make_error(
@@ -105,9 +108,8 @@ Result<ScreenBlurOutput> run_screen_blur(Context& context, const ScreenBlurProgr
   if (!factor) return factor.error();
   PassResources query;
   query.params = &screen_params;
-  query.shadow_map = &map;
-  query.receivers = &*receivers_image;
-  query.minmax_mip = map.minmax ? &map.minmax->image : nullptr;
+  query.offer_map(map, /*comparison=*/true);
+  query.offer(TextureId::receivers, *receivers_image, kRead);
   PENUMBRA_TRY(draw_chain_pass(context, programs.query, "screen_blur query pass",
                                kScreenFactorTarget, query, *factor, output.gpu_ms));
 
@@ -122,8 +124,8 @@ Result<ScreenBlurOutput> run_screen_blur(Context& context, const ScreenBlurProgr
     if (!target) return target.error();
     PassResources blur;
     blur.params = &screen_params;
-    blur.receivers = &*receivers_image;
-    blur.screen_factor = source;
+    blur.offer(TextureId::receivers, *receivers_image, kRead);
+    blur.offer(TextureId::screen_factor, *source, kRead);
     PENUMBRA_TRY(draw_chain_pass(context, *program, name, kScreenFactorTarget, blur, *target,
                                  output.gpu_ms));
     blurred.push_back(std::move(*target));
@@ -134,8 +136,8 @@ Result<ScreenBlurOutput> run_screen_blur(Context& context, const ScreenBlurProgr
   if (!composite) return composite.error();
   PassResources composite_resources;
   composite_resources.params = &screen_params;
-  composite_resources.screen_factor = source;
-  composite_resources.scene_colour = &*colour_image;
+  composite_resources.offer(TextureId::screen_factor, *source, kRead);
+  composite_resources.offer(TextureId::scene_colour, *colour_image, kRead);
   PENUMBRA_TRY(draw_chain_pass(context, programs.composite, "composite pass", kCompositeTarget,
                                composite_resources, *composite, output.gpu_ms));
 

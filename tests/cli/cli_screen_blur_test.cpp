@@ -128,13 +128,12 @@ TEST_F(ScreenBlurCommand, VerifyRecordsTheThreeChecksPerScene) {
   for (const auto& variant : report.at("variants")) {
     int vulkan_runs = 0;
     for (const auto& target_run : variant.at("runs")) {
-      if (target_run.at("backend") == "gl") {
-        EXPECT_FALSE(target_run.at("executed").get<bool>()) << target_run.dump();
-        EXPECT_THAT(target_run.at("not_executed").get<std::string>(),
-                    HasSubstr("blur chain (query, blur_h, blur_v, composite) runs on Vulkan"));
+      // The chain runs on OpenGL too; a GL run is skipped only where there is no GL.
+      if (!target_run.at("executed").get<bool>()) {
+        EXPECT_EQ(target_run.at("backend"), "gl") << target_run.dump();
         continue;
       }
-      ++vulkan_runs;
+      if (target_run.at("backend") == "vulkan") ++vulkan_runs;
       ASSERT_EQ(target_run.at("scenes").size(), scenes);
       for (const auto& scene : target_run.at("scenes")) {
         EXPECT_TRUE(scene.at("pass").get<bool>()) << scene.dump();

@@ -1,14 +1,58 @@
 #include "gl_fixture.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
+#include <map>
+#include <mutex>
 
 #include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/runtime/library_programs.hpp"
 
 namespace penumbra::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Libraries of one variant each, built on first use under one temporary
+// directory that goes with the test process.
+class BuiltLibraries {
+ public:
+  ~BuiltLibraries() {
+    std::error_code ignored;
+    fs::remove_all(root_, ignored);
+  }
+
+  Result<const Library*> get(const Variant& variant) {
+    const std::lock_guard lock(mutex_);
+    if (const auto found = built_.find(variant.name); found != built_.end()) {
+      return &found->second;
+    }
+    Variant glsl = variant;
+    glsl.targets = {Target::glsl330, Target::glsl450};
+    const fs::path out = root_ / variant.name;
+    auto summary = build_library({&glsl, 1}, out, BuildOptions{.jobs = 2}, ignore_diagnostics());
+    if (!summary) return summary.error();
+    auto library = load_library(out);
+    if (!library) return library.error();
+    return &built_.emplace(variant.name, std::move(*library)).first->second;
+  }
+
+ private:
+  fs::path root_ = fs::temp_directory_path() / ("penumbra_gl_tests_" + std::to_string(::getpid()));
+  std::mutex mutex_;
+  std::map<std::string, Library> built_;
+};
+
+BuiltLibraries& built_libraries() {
+  static BuiltLibraries libraries;
+  return libraries;
+}
+
+}  // namespace
 
 std::unique_ptr<GlEngine> make_gl_engine() {
   auto engine = GlEngine::create({}, ignore_diagnostics());
@@ -34,9 +78,20 @@ std::unique_ptr<Variant> default_variant(const std::string& name) {
 }
 
 Result<PassText> emitted_pass(const Variant& variant, Target target, PassKind kind) {
-  auto pass = compile_pass(variant, target, kind);
-  if (!pass) return pass.error();
-  return PassText{std::move(pass->vert.text), std::move(pass->frag.text)};
+  auto library = built_libraries().get(variant);
+  if (!library) return library.error();
+  const LibraryVariant* entry = (*library)->find(variant.name);
+  if (entry == nullptr || !entry->reflection.contains(kind) ||
+      !entry->reflection.at(kind).contains(target)) {
+    return make_error(Error::Kind::internal, variant.name,
+                      "the built library has no reflection." + std::string(to_string(kind)) + "." +
+                          std::string(to_string(target)));
+  }
+  auto vert = read_pass_file(**library, *entry, kind, target, ShaderStage::vertex);
+  if (!vert) return vert.error();
+  auto frag = read_pass_file(**library, *entry, kind, target, ShaderStage::fragment);
+  if (!frag) return frag.error();
+  return PassText{std::move(*vert), std::move(*frag), entry->reflection.at(kind).at(target)};
 }
 
 Result<MinmaxText> emitted_minmax(const Variant& variant, Target target) {

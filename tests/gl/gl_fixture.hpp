@@ -1,14 +1,15 @@
 // Shared by the GL tests: an engine on the default display, a variant's
-// emitted passes for a GLSL target, and a scene's inputs for them.
+// passes for a GLSL target as a built library holds them (texts and
+// reflection, read back from index.json), and a scene's inputs for them.
 #pragma once
 
 #include <memory>
 #include <ostream>
 #include <string>
 
-#include "penumbra/compiler/stage.hpp"
 #include "penumbra/gl/engine.hpp"
 #include "penumbra/model/model.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/runtime/program.hpp"
 
@@ -30,13 +31,16 @@ std::unique_ptr<GlEngine> make_gl_engine();
 std::unique_ptr<Variant> default_variant(const std::string& name);
 
 struct PassText {
-  std::string vert;  // fullscreen.vert as emitted for the pass
-  std::string frag;  // the pass's fragment stage as emitted
+  std::string vert;           // the pass's vertex stage as emitted
+  std::string frag;           // the pass's fragment stage as emitted
+  PassReflection reflection;  // index.json's reflection.<pass>.<target>
 
-  GlPass view() const { return {vert, frag}; }
+  GlPass view() const { return {vert, frag, reflection}; }
 };
 
-// The variant's pass `kind` compiled for `target` (glsl330 or glsl450).
+// The variant's pass `kind` for `target` (glsl330 or glsl450), from a library
+// of the variant built for both GLSL targets (once per test process, in a
+// temporary directory) and read back with load_library.
 Result<PassText> emitted_pass(const Variant& variant, Target target, PassKind kind);
 
 struct MinmaxText {

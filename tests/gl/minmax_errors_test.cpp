@@ -86,35 +86,37 @@ TEST_P(GlMinmaxErrors, ErrorsNameTheMinmaxPass) {
   auto reduce = engine_->build_minmax(broken.view(), inputs_.normalized_depth, inputs_.params);
   ASSERT_FALSE(reduce.ok());
   expect_error(reduce.error(), Error::Kind::bad_input, "minmax_reduce pass",
-               "sampler 'minmax_sourze' is not part of the shader interface; allowed names: "
-               "minmax_source");
+               "uniform 'minmax_sourze' is active in the program but not in the reflection");
 
-  // The init pass binds the map, not a min-max level.
+  // The init pass reads the map, not a min-max level: with text and
+  // reflection both asking for minmax_source, nothing supplies it.
   broken = minmax_;
   broken.init.frag = replaced_all(broken.init.frag, "shadow_depth", "minmax_source");
+  for (TextureBinding& texture : broken.init.reflection.frag.textures) {
+    if (texture.name == "shadow_depth") texture.name = "minmax_source";
+  }
   auto swapped = engine_->build_minmax(broken.view(), inputs_.normalized_depth, inputs_.params);
   ASSERT_FALSE(swapped.ok());
   expect_error(swapped.error(), Error::Kind::bad_input, "minmax_init pass",
-               "sampler 'minmax_source' is not bound by the minmax_init pass");
+               "nothing supplies texture 'minmax_source'");
 }
 
-// Every pass draws into an RG32F target: a float output is refused.
+// Every pass draws into its reflection's GL_RG32F target: a float output is
+// refused.
 TEST_P(GlMinmaxErrors, OutputsNeedBothChannelsOfTheTarget) {
   PassText query = query_;
   query.frag = scalar_output(query.frag, "visibility");
   auto output = run({query.view(), minmax_.view()});
   ASSERT_FALSE(output.ok());
   expect_error(output.error(), Error::Kind::bad_input, "query pass",
-               "fragment output 'visibility' has 1 component(s); the query pass's RG32F target "
-               "takes 2");
+               "fragment output 'visibility' has 1 component(s); its GL_RG32F target takes 2");
 
   MinmaxText broken = minmax_;
   broken.init.frag = scalar_output(broken.init.frag, "minmax");
   auto init = engine_->build_minmax(broken.view(), inputs_.normalized_depth, inputs_.params);
   ASSERT_FALSE(init.ok());
   expect_error(init.error(), Error::Kind::bad_input, "minmax_init pass",
-               "fragment output 'minmax' has 1 component(s); the minmax_init pass's RG32F "
-               "target takes 2");
+               "fragment output 'minmax' has 1 component(s); its GL_RG32F target takes 2");
 }
 
 TEST_P(GlMinmaxErrors, UnneededMinmaxPassesAreNotBuilt) {

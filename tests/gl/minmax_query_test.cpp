@@ -76,9 +76,14 @@ TEST_P(GlMinmaxProbe, EveryNodeAtItsTexelAndLevel) {
     pixel[1] = (static_cast<float>(node.j) + 0.5f) / side;
     pixel[2] = static_cast<float>(node.level - 1);
   }
-  const std::string vert = probe_vert(target);
-  const std::string frag = probe_frag(target);
-  auto output = engine->run_query({{vert, frag}, passes.view()}, map, receivers,
+  // Bound by minmax_pcf_k8's query reflection, whose names the probe's are
+  // a subset of.
+  auto variant = default_variant("minmax_pcf_k8");
+  ASSERT_NE(variant, nullptr);
+  auto query = emitted_pass(*variant, target, PassKind::query);
+  ASSERT_TRUE(query.ok()) << query.error().to_string();
+  const PassText probe{probe_vert(target), probe_frag(target), query->reflection};
+  auto output = engine->run_query({probe.view(), passes.view()}, map, receivers,
                                   bare_map_params(map, columns, rows));
   ASSERT_TRUE(output.ok()) << output.error().to_string();
   int wrong = 0;

@@ -1,7 +1,8 @@
-// Binding by reflection: what a program may declare, and the errors naming
-// what is wrong when it declares something else.
+// Binding by reflection with the tests' SPIR-V programs: what the record
+// and the module must agree on, and the errors naming what is wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "test_programs.hpp"
@@ -11,61 +12,83 @@ namespace {
 
 const test::TestLight kLight;
 
-class BindingTest : public test::EngineWithMapTest {};
+class BindingTest : public test::EngineWithMapTest {
+ protected:
+  ParamBlock params_ = test::make_params(kLight, 2, 2, 2, 2);
+};
+
+TextureBinding& frag_texture(PassProgram& program, const std::string& name) {
+  auto& textures = program.reflection.frag.textures;
+  return *std::find_if(textures.begin(), textures.end(),
+                       [&](const TextureBinding& t) { return t.name == name; });
+}
 
 TEST_F(BindingTest, MissingParamBlockMemberIsNamed) {
-  ParamBlock params = test::make_params(kLight, 2, 2, 2, 2);
-  params.erase("sampling");
-  const Error error = failed_query(test::compare_program(), params);
+  params_.erase("sampling");
+  const Error error = failed_query(test::compare_program(), params_);
   EXPECT_EQ(error.kind, Error::Kind::bad_input);
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
-            "ShadowParams member 'sampling' has no value in the ParamBlock (given: light, "
-            "minmax_info, screen_size, shadow_map_size, source_size)");
+            "'sampling' has no value in the ParamBlock (given: light, minmax_info, screen_size, "
+            "shadow_map_size, source_size)");
 }
 
 TEST_F(BindingTest, ExtraParamBlockEntriesAreIgnored) {
-  ParamBlock params = test::make_params(kLight, 2, 2, 2, 2);
-  params["not_a_member"] = {1, 2, 3, 4};
-  EXPECT_TRUE(engine_->run_query(test::compare_program(), *map_, FloatImage(2, 2, 3), params));
+  params_["not_a_member"] = {1, 2, 3, 4};
+  EXPECT_TRUE(engine_->run_query(test::compare_program(), *map_, FloatImage(2, 2, 3), params_));
 }
 
-TEST_F(BindingTest, UnknownSamplerIsNamedWithTheAllowedNames) {
-  const Error error =
-      failed_query(test::unknown_sampler_program(), test::make_params(kLight, 2, 2, 2, 2));
-  EXPECT_EQ(error.kind, Error::Kind::bad_input);
+TEST_F(BindingTest, ASamplerTheRecordLacksIsNamed) {
+  const Error error = failed_query(test::unknown_sampler_program(), params_);
   EXPECT_EQ(error.where, "query pass");
   EXPECT_EQ(error.message,
-            "sampler 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
-            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source, "
-            "screen_factor, scene_colour");
+            "the text declares sampler 'shadow_mapp' (set 0 binding 7) (fragment stage) that "
+            "index.json's reflection lacks");
 }
 
-TEST_F(BindingTest, UnknownUniformBlockIsNamed) {
+TEST_F(BindingTest, ATextureTheModuleLacksIsNamed) {
   PassProgram program = test::compare_program();
-  program.frag.iface.uniform_blocks[0].type_name = "Globals";
-  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
-  EXPECT_NE(error.message.find("uniform block 'Globals'"), std::string::npos) << error.message;
+  frag_texture(program, "shadow_cmp").binding = 6;
+  const Error error = failed_query(program, params_);
+  EXPECT_EQ(error.message,
+            "index.json's reflection names texture 'shadow_cmp' at set 0 binding 6 (fragment "
+            "stage), which the text does not declare");
 }
 
-TEST_F(BindingTest, SamplerOfTheWrongKindIsNamed) {
+TEST_F(BindingTest, ATextureOutsideTheContractIsNamed) {
   PassProgram program = test::compare_program();
-  program.frag.iface.sampled_images[1].comparison = false;  // shadow_cmp as a plain sampler2D
-  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
-  EXPECT_EQ(error.message, "sampler 'shadow_cmp' must be a sampler2DShadow (comparison sampler)");
+  frag_texture(program, "shadow_cmp").name = "shadow_mapp";
+  const Error error = failed_query(program, params_);
+  EXPECT_EQ(error.message,
+            "index.json's reflection names texture 'shadow_mapp' (fragment stage), which is not a "
+            "texture of the shader contract");
 }
 
-TEST_F(BindingTest, TwoResourcesOnOneBindingAreNamed) {
+TEST_F(BindingTest, ASamplerStateWithoutTheComparisonIsRefused) {
   PassProgram program = test::compare_program();
-  program.frag.iface.sampled_images[1].binding = 1;  // shadow_cmp onto shadow_depth's binding
-  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
-  EXPECT_EQ(error.message, "'shadow_depth' and 'shadow_cmp' share set 0 binding 1");
+  frag_texture(program, "shadow_cmp").sampler.state.comparison = false;
+  const Error error = failed_query(program, params_);
+  EXPECT_EQ(error.message,
+            "texture 'shadow_cmp': the text samples it with comparisons (sampler 'shadow_cmp' (set "
+            "0 binding 2), fragment stage), but index.json's reflection gives it a sampler without "
+            "comparison");
+}
+
+TEST_F(BindingTest, TheFormatPicksTheMapsImage) {
+  PassProgram program = test::point_program();
+  frag_texture(program, "shadow_depth").format = "VK_FORMAT_R32G32_SFLOAT";
+  const Error error = failed_query(program, params_);
+  EXPECT_EQ(error.message,
+            "'shadow_depth' is VK_FORMAT_R32G32_SFLOAT in index.json's reflection; the query pass "
+            "has it as VK_FORMAT_D32_SFLOAT, VK_FORMAT_R32_SFLOAT");
 }
 
 TEST_F(BindingTest, TheDepthPassBindsOnlyShadowParams) {
   PassProgram program = test::depth_program();
   program.frag.iface.sampled_images.push_back({"receivers", 0, 3, false});
-  auto map = engine_->render_depth(program, {}, 2, 2, test::make_params(kLight, 2, 2, 2, 2));
+  PassProgram query = test::compare_program();
+  program.reflection.frag.textures.push_back(frag_texture(query, "receivers"));
+  auto map = engine_->render_depth(program, {}, 2, 2, params_);
   ASSERT_FALSE(map);
   EXPECT_EQ(map.error().where, "depth pass");
   EXPECT_EQ(map.error().message,
@@ -75,7 +98,7 @@ TEST_F(BindingTest, TheDepthPassBindsOnlyShadowParams) {
 TEST_F(BindingTest, VertexInputMustMatchThePass) {
   PassProgram program = test::compare_program();
   program.vert.iface.inputs[0].components = 3;
-  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, params_);
   EXPECT_EQ(error.message,
             "vertex input 'position' has 3 components; the query pass supplies position (2 "
             "floats) at location 0");
@@ -95,7 +118,7 @@ TEST(ParamBlockKeyTest, MembersReadTheKeyWithoutTheInstancePrefix) {
 TEST_F(BindingTest, NonSpirvIsRefused) {
   PassProgram program = test::compare_program();
   program.frag.spirv = {1, 2, 3, 4, 5, 6};
-  const Error error = failed_query(program, test::make_params(kLight, 2, 2, 2, 2));
+  const Error error = failed_query(program, params_);
   EXPECT_EQ(error.where, "query pass fragment shader");
   EXPECT_NE(error.message.find("is not a SPIR-V module"), std::string::npos);
 }

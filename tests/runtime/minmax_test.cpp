@@ -249,6 +249,10 @@ TEST_F(MinmaxTest, MinmaxInitIsNotOfferedShadowCmp) {
   ASSERT_TRUE(map) << map.error().to_string();
   PassProgram init = test::minmax_init_program();
   init.frag.iface.sampled_images.push_back({"shadow_cmp", 0, 2, true});
+  const PassProgram compare = test::compare_program();
+  for (const TextureBinding& texture : compare.reflection.frag.textures) {
+    if (texture.name == "shadow_cmp") init.reflection.frag.textures.push_back(texture);
+  }
   auto built = engine_->build_minmax(**map, init, test::minmax_reduce_program(),
                                      test::make_params(kLight, 4, 4, 4, 4));
   ASSERT_FALSE(built);

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <string>
+#include <tuple>
 
+#include "penumbra/compiler/manifest.hpp"
 #include "penumbra/support/minmax_levels.hpp"
 
 namespace penumbra::test {
@@ -25,36 +28,37 @@ std::vector<std::uint32_t> read_spirv(const std::string& name) {
 
 namespace {
 
-// shaders/params.glsl: six std140 vec4 members.
-UniformBlock shadow_params() {
-  return {"ShadowParams",
-          "params",
-          0,
-          0,
-          96,
-          {{"shadow_map_size", 0, 16},
-           {"light", 16, 16},
-           {"sampling", 32, 16},
-           {"screen_size", 48, 16},
-           {"source_size", 64, 16},
-           {"minmax_info", 80, 16}}};
+StageCode stage(const std::string& name) {
+  StageCode code{read_spirv(name), {}};
+  auto iface = reflect(code.spirv);
+  if (!iface) {
+    ADD_FAILURE() << name << ": " << iface.error().to_string();
+    return code;
+  }
+  code.iface = std::move(*iface);
+  return code;
 }
 
-StageCode fullscreen_vert() {
-  ShaderInterface iface;
-  iface.stage = ShaderStage::vertex;
-  iface.inputs = {{"position", 0, 2}};
-  iface.builtin_outputs = {"Position", "PointSize", "ClipDistance", "CullDistance"};
-  return {read_spirv("fullscreen.vert"), iface};
+// A test program with the reflection of the default variant's pass that
+// declares the same resources.
+PassProgram program(const std::string& vert, const std::string& frag, const std::string& variant,
+                    PassKind pass) {
+  PassProgram out;
+  out.vert = stage(vert);
+  out.frag = stage(frag);
+  out.reflection = pass_reflection(variant, pass);
+  return out;
 }
 
-StageCode query_frag(const std::string& name, std::vector<SampledImage> images) {
-  ShaderInterface iface;
-  iface.stage = ShaderStage::fragment;
-  iface.uniform_blocks = {shadow_params()};
-  iface.sampled_images = std::move(images);
-  iface.outputs = {{"visibility", 0, 4}};
-  return {read_spirv(name), iface};
+const Variant* default_variant(const std::string& name) {
+  static const std::vector<Variant> variants = [] {
+    auto loaded = load_variants(PENUMBRA_SOURCE_DIR "/permutations/default.json");
+    return loaded ? *loaded : std::vector<Variant>{};
+  }();
+  for (const Variant& variant : variants) {
+    if (variant.name == name) return &variant;
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -74,61 +78,59 @@ ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_
           {"minmax_info", {static_cast<float>(minmax_top_level(map_w, map_h)), 0.0f, 0.0f, 0.0f}}};
 }
 
+const CompiledPass* compiled_pass(const std::string& variant, PassKind pass, Target target) {
+  static std::map<std::tuple<std::string, PassKind, Target>, CompiledPass> cache;
+  const auto key = std::make_tuple(variant, pass, target);
+  if (auto it = cache.find(key); it != cache.end()) return &it->second;
+  const Variant* found = default_variant(variant);
+  if (!found) {
+    ADD_FAILURE() << "no default variant " << variant;
+    return nullptr;
+  }
+  auto compiled = compile_pass(*found, target, pass);
+  if (!compiled) {
+    ADD_FAILURE() << compiled.error().to_string();
+    return nullptr;
+  }
+  return &cache.emplace(key, std::move(*compiled)).first->second;
+}
+
+PassReflection pass_reflection(const std::string& variant, PassKind pass, Target target) {
+  const CompiledPass* compiled = compiled_pass(variant, pass, target);
+  return compiled ? compiled->reflection : PassReflection{};
+}
+
 PassProgram depth_program(const std::string& vert_name) {
-  ShaderInterface vert;
-  vert.stage = ShaderStage::vertex;
-  vert.uniform_blocks = {shadow_params()};
-  vert.inputs = {{"position", 0, 3}};
-  vert.outputs = {{"light_z", 0, 1}};
-  vert.builtin_outputs = {"Position", "PointSize", "ClipDistance", "CullDistance"};
-  ShaderInterface frag;
-  frag.stage = ShaderStage::fragment;
-  frag.uniform_blocks = {shadow_params()};
-  frag.inputs = {{"light_z", 0, 1}};
-  frag.outputs = {{"depth_out", 0, 1}};
-  frag.builtin_outputs = {"FragDepth"};
-  return {{read_spirv(vert_name), vert}, {read_spirv("depth.frag"), frag}};
+  return program(vert_name, "depth.frag", "hard", PassKind::depth);
 }
 
 PassProgram compare_program() {
-  return {fullscreen_vert(), query_frag("compare.frag", {{"shadow_depth", 0, 1, false},
-                                                         {"shadow_cmp", 0, 2, true},
-                                                         {"receivers", 0, 3, false}})};
+  return program("fullscreen.vert", "compare.frag", "pcss_b16_p16_poisson", PassKind::query);
 }
 
 PassProgram point_program() {
-  return {fullscreen_vert(),
-          query_frag("point.frag", {{"shadow_depth", 0, 1, false}, {"receivers", 0, 3, false}})};
+  return program("fullscreen.vert", "point.frag", "hard", PassKind::query);
 }
 
 PassProgram point_with_cmp_program() {
-  return {fullscreen_vert(), query_frag("point_with_cmp.frag", {{"shadow_depth", 0, 1, false},
-                                                                {"shadow_cmp", 0, 2, true},
-                                                                {"receivers", 0, 3, false}})};
+  return program("fullscreen.vert", "point_with_cmp.frag", "pcss_b16_p16_poisson", PassKind::query);
 }
 
 PassProgram minmax_init_program(const std::string& frag_name) {
-  StageCode frag = query_frag(frag_name, {{"shadow_depth", 0, 1, false}});
-  frag.iface.outputs = {{"minmax", 0, 4}};
-  return {fullscreen_vert(), std::move(frag)};
+  return program("fullscreen.vert", frag_name, "backprojection", PassKind::minmax_init);
 }
 
 PassProgram minmax_reduce_program() {
-  StageCode frag = query_frag("minmax_reduce.frag", {{"minmax_source", 0, 5, false}});
-  frag.iface.outputs = {{"minmax", 0, 4}};
-  return {fullscreen_vert(), std::move(frag)};
+  return program("fullscreen.vert", "minmax_reduce.frag", "backprojection",
+                 PassKind::minmax_reduce);
 }
 
 PassProgram minmax_probe_program() {
-  return {fullscreen_vert(), query_frag("minmax_probe.frag", {{"receivers", 0, 3, false},
-                                                              {"shadow_minmax", 0, 4, false}})};
+  return program("fullscreen.vert", "minmax_probe.frag", "backprojection", PassKind::query);
 }
 
 PassProgram unknown_sampler_program() {
-  PassProgram program{fullscreen_vert(),
-                      query_frag("unknown_sampler.frag", {{"shadow_mapp", 0, 1, false}})};
-  program.frag.iface.uniform_blocks.clear();
-  return program;
+  return program("fullscreen.vert", "unknown_sampler.frag", "hard", PassKind::query);
 }
 
 std::unique_ptr<Engine> make_engine(bool validation) {

@@ -1,5 +1,7 @@
 // The runtime tests' programs: SPIR-V compiled from shaders/ at build time,
-// with reflection records written by hand to match the GLSL.
+// reflected by reflect() as the driver sees it, each with the spirv
+// reflection record of the shaderlib pass that declares the same resources
+// (compile_pass), which the engine binds by.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/runtime/engine.hpp"
 
 namespace penumbra::test {
@@ -29,12 +33,22 @@ ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_
 // The words of shaders/<name> compiled at build time (<name>.spv); fails the test if missing.
 std::vector<std::uint32_t> read_spirv(const std::string& name);
 
+// The default variant `variant`'s `pass` compiled for `target`
+// (compile_pass, once per process); null, with a test failure, if it fails.
+const CompiledPass* compiled_pass(const std::string& variant, PassKind pass, Target target);
+
+// Its reflection record (empty, with a test failure, if it fails).
+PassReflection pass_reflection(const std::string& variant, PassKind pass,
+                               Target target = Target::spirv);
+
 // depth.vert + depth.frag; "depth_flip_y.vert" is depth.vert negating clip y.
 PassProgram depth_program(const std::string& vert_name = "depth.vert");
-PassProgram compare_program();          // fullscreen.vert + compare.frag: shadow_cmp at (u, v, z_r)
-PassProgram point_program();            // fullscreen.vert + point.frag: shadow_depth, no shadow_cmp
-PassProgram point_with_cmp_program();   // the same, with shadow_cmp declared
-PassProgram unknown_sampler_program();  // fullscreen.vert + unknown_sampler.frag: "shadow_mapp"
+PassProgram compare_program();         // fullscreen.vert + compare.frag: shadow_cmp at (u, v, z_r)
+PassProgram point_program();           // fullscreen.vert + point.frag: shadow_depth, no shadow_cmp
+PassProgram point_with_cmp_program();  // the same, with shadow_cmp declared
+// fullscreen.vert + unknown_sampler.frag: point.frag's resources and a
+// sampler "shadow_mapp" at binding 7, which no reflection has.
+PassProgram unknown_sampler_program();
 // The min-max build passes (minmax_init.frag reads shadow_depth, minmax_reduce.frag
 // minmax_source), and a query returning shadow_minmax's (min, max) at (u, v, lod).
 // "minmax_init_swapped.frag" is minmax_init.frag writing (max, min): a wrong mip.

@@ -1,7 +1,10 @@
-// Binding the text targets' shapes: the errors that name what a program in
-// those shapes gets wrong.
+// Binding each target's text by its reflection record: a record that names
+// what the text lacks, or lacks what the text declares, is refused with the
+// entry named; a sampler state the text cannot use is refused, and one it
+// can changes what the pass computes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "test_programs.hpp"
@@ -12,120 +15,162 @@ namespace {
 
 const test::TestLight kLight;
 
-class TextBindingTest : public test::EngineWithMapTest {
+// pcss reads shadow_depth, shadow_cmp (not on hlsl_dx9) and receivers.
+constexpr const char* kVariant = "pcss_b16_p16_poisson";
+
+class TextBindingTest : public ::testing::TestWithParam<Target> {
  protected:
-  std::string query_error(const PassProgram& program, const ParamBlock& params) {
-    const Error error = failed_query(program, params);
-    if (error.message.empty()) return "";
-    EXPECT_EQ(error.where, "query pass");
-    return error.message;
+  void SetUp() override {
+    engine_ = test::make_engine();
+    ASSERT_NE(engine_, nullptr);
+    // A checkerboard of near and far texels: bilinear and point reads differ.
+    FloatImage depth(8, 8, 1);
+    for (int j = 0; j < 8; ++j) {
+      for (int i = 0; i < 8; ++i) depth.at(i, j) = (i + j) % 2 == 0 ? 0.25f : 0.75f;
+    }
+    auto map = engine_->upload_shadow_map(depth);
+    ASSERT_TRUE(map) << map.error().to_string();
+    map_ = *map;
+    program_ = test::text_program(kVariant, PassKind::query, GetParam());
   }
 
-  std::string depth_error(const PassProgram& program) {
-    auto result = engine_->render_depth(program, {}, 2, 2, params_);
+  Result<FloatImage> query(const PassProgram& program) {
+    // Receivers between the near and far texels, off the texel centres.
+    FloatImage receivers(8, 8, 3);
+    for (int j = 0; j < 8; ++j) {
+      for (int i = 0; i < 8; ++i) {
+        receivers.at(i, j, 0) = (static_cast<float>(i) + 0.3f) / 8.0f;
+        receivers.at(i, j, 1) = (static_cast<float>(j) + 0.6f) / 8.0f;
+        receivers.at(i, j, 2) = 0.5f / kLight.depth_scale;
+      }
+    }
+    return engine_->run_query(program, *map_, receivers, params_);
+  }
+
+  std::string error(const PassProgram& program) {
+    auto result = query(program);
     EXPECT_FALSE(result);
-    return result ? "" : result.error().message;
+    if (result) return "";
+    EXPECT_EQ(result.error().kind, Error::Kind::bad_input);
+    EXPECT_EQ(result.error().where, "query pass");
+    return result.error().message;
   }
 
-  ParamBlock params_ = test::make_params(kLight, 2, 2, 2, 2);
+  TextureBinding* texture(const std::string& name) {
+    auto& textures = program_.reflection.frag.textures;
+    const auto it = std::find_if(textures.begin(), textures.end(),
+                                 [&](const TextureBinding& t) { return t.name == name; });
+    return it == textures.end() ? nullptr : &*it;
+  }
+
+  std::unique_ptr<Engine> engine_;
+  std::shared_ptr<ShadowMap> map_;
+  PassProgram program_;
+  ParamBlock params_ = test::make_params(kLight, 8, 8, 8, 8);
 };
 
-TEST_F(TextBindingTest, MissingMemberNamesItsParamBlockKey) {
-  ParamBlock params = params_;
-  params.erase("sampling");
-  EXPECT_EQ(query_error(test::text_compare_program(test::TextShape::hlsl_dx9), params),
-            "$Global member 'params_sampling' (ParamBlock key 'sampling') has no value in the "
-            "ParamBlock (given: light, minmax_info, screen_size, shadow_map_size, source_size)");
+TEST_P(TextBindingTest, TheRecordBindsTheText) {
+  auto visibility = query(program_);
+  EXPECT_TRUE(visibility) << visibility.error().to_string();
 }
 
-TEST_F(TextBindingTest, StagesWhoseGlobalBlocksOverlapOnOneBindingAreRefused) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx9);
-  program.vert = test::reflected_stage("d3d9_fullscreen_b0.vert");
-  EXPECT_EQ(query_error(program, params_),
-            "$Global members 'gl_HalfPixel' and 'params_shadow_map_size' overlap at set 0 "
-            "binding 0: the stages share that binding's buffer, so their blocks must agree (give "
-            "each stage's block its own binding)");
+TEST_P(TextBindingTest, ADeclarationTheRecordLacksIsNamed) {
+  auto& textures = program_.reflection.frag.textures;
+  textures.erase(std::remove_if(textures.begin(), textures.end(),
+                                [](const TextureBinding& t) { return t.name == "receivers"; }),
+                 textures.end());
+  const std::string message = error(program_);
+  EXPECT_NE(message.find("the text declares"), std::string::npos) << message;
+  EXPECT_NE(message.find("'receivers'"), std::string::npos) << message;
+  EXPECT_NE(message.find("that index.json's reflection lacks"), std::string::npos) << message;
 }
 
-TEST_F(TextBindingTest, SamplerNamedAfterNoImageIsRefused) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10_split);
-  program.frag.iface.separate_samplers[2].name = "point_clamp";
-  program.frag.iface.separate_samplers[2].image = paired_image_name("point_clamp");
-  EXPECT_EQ(
-      query_error(program, params_),
-      "sampler 'point_clamp' (fragment stage) pairs with no image of the shader interface: "
-      "a separate sampler is named _<image>_sampler after the image it samples "
-      "(SPIRV-Cross's HLSL naming); allowed names: _shadow_depth_sampler, "
-      "_shadow_cmp_sampler, _receivers_sampler, _shadow_minmax_sampler, _minmax_source_sampler, "
-      "_screen_factor_sampler, _scene_colour_sampler");
+TEST_P(TextBindingTest, ATextureTheTextLacksIsNamed) {
+  TextureBinding extra = *texture("receivers");
+  extra.name = "scene_colour";  // a texture of the contract that no query pass reads
+  extra.binding = extra.binding ? std::optional<std::uint32_t>(6) : std::nullopt;
+  if (!extra.reg.empty()) extra.reg = extra.reg.substr(0, 1) + "6";
+  if (!extra.sampler.reg.empty()) extra.sampler.reg = "s6";
+  program_.reflection.frag.textures.push_back(extra);
+  const std::string message = error(program_);
+  EXPECT_NE(message.find("index.json's reflection names texture 'scene_colour'"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("which the text does not declare"), std::string::npos) << message;
 }
 
-TEST_F(TextBindingTest, OnlyShadowCmpsSamplerMayCompare) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10);
-  program.frag.iface.separate_samplers[0].comparison = true;  // _shadow_depth_sampler
-  EXPECT_EQ(query_error(program, params_),
-            "sampler '_shadow_depth_sampler' (fragment stage) samples a depth image for "
-            "comparisons; only shadow_cmp's sampler, _shadow_cmp_sampler, is a comparison sampler");
+TEST_P(TextBindingTest, AConstantTheTextLacksIsNamed) {
+  ConstantBinding* constant = nullptr;
+  auto& frag = program_.reflection.frag;
+  if (!frag.uniforms.empty()) constant = &frag.uniforms.front();
+  if (!frag.blocks.empty()) constant = &frag.blocks.front().members.front();
+  ASSERT_NE(constant, nullptr);
+  constant->name = "params.no_such_member";
+  constant->reg = constant->reg.empty() ? "" : "c40";
+  constant->offset = constant->offset ? std::optional<std::uint32_t>(640) : std::nullopt;
+  const std::string message = error(program_);
+  EXPECT_NE(message.find("'params.no_such_member'"), std::string::npos) << message;
 }
 
-TEST_F(TextBindingTest, UnknownSeparateImageIsNamedWithTheAllowedNames) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10);
-  program.frag.iface.separate_images[0].name = "shadow_mapp";
-  EXPECT_EQ(query_error(program, params_),
-            "image 'shadow_mapp' (fragment stage) is not part of the shader interface; allowed "
-            "names: shadow_depth, shadow_cmp, receivers, shadow_minmax, minmax_source, "
-            "screen_factor, scene_colour");
+TEST_P(TextBindingTest, AMissingParameterIsNamed) {
+  params_.erase("sampling");
+  const std::string message = error(program_);
+  // spirv names the member as its parameter; the other targets add the parameter.
+  EXPECT_NE(message.find("sampling'"), std::string::npos) << message;
+  EXPECT_NE(message.find("has no value in the ParamBlock"), std::string::npos) << message;
 }
 
-TEST_F(TextBindingTest, ImageAndAnotherImagesSamplerCannotShareABinding) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10);
-  program.frag.iface.separate_samplers[2].binding = 2;  // _receivers_sampler onto shadow_cmp's
-  EXPECT_EQ(query_error(program, params_),
-            "'shadow_cmp' and '_receivers_sampler' share set 0 binding 2");
+TEST_P(TextBindingTest, AComparisonTheTextDoesNotMakeIsRefused) {
+  TextureBinding* receivers = texture("receivers");
+  ASSERT_NE(receivers, nullptr);
+  receivers->sampler.state.comparison = true;
+  EXPECT_NE(error(program_).find("texture 'receivers': the text samples it without comparisons"),
+            std::string::npos);
 }
 
-TEST_F(TextBindingTest, Dx9PositionSemanticWithoutBuiltinIsRefused) {
-  PassProgram program = test::text_depth_program(test::TextShape::hlsl_dx9);
-  program.vert = test::reflected_stage("d3d9_depth_position.vert");
-  EXPECT_EQ(depth_error(program),
-            "the vertex shader writes no clip-space position (BuiltIn Position: GLSL gl_Position, "
-            "HLSL SV_Position)");
+TEST_P(TextBindingTest, TheRecordsFilterIsTheSamplersFilter) {
+  // hlsl_dx9 filters in the shader (point reads only): its state says nearest.
+  TextureBinding* cmp = texture("shadow_cmp");
+  if (!cmp) GTEST_SKIP() << to_string(GetParam()) << " has no shadow_cmp";
+  auto linear = query(program_);
+  ASSERT_TRUE(linear) << linear.error().to_string();
+  cmp->sampler.state.filter = Filter::nearest;
+  auto nearest = query(program_);
+  ASSERT_TRUE(nearest) << nearest.error().to_string();
+  EXPECT_NE(nearest->data, linear->data);
 }
 
-TEST_F(TextBindingTest, Dx9DepthSemanticWithoutBuiltinIsRefused) {
-  PassProgram program = test::text_depth_program(test::TextShape::hlsl_dx9);
-  program.frag = test::reflected_stage("d3d9_depth_depth.frag");
-  EXPECT_EQ(depth_error(program),
-            "fragment output '@entryPointOutput.depth' at location 1 has no attachment; the depth "
-            "pass has one R32_SFLOAT target, at location 0");
+TEST_P(TextBindingTest, TheRenderTargetFormatMustBeThePasses) {
+  program_.reflection.render_targets[0].format =
+      std::string(api_format(GetParam(), TextureFormat::rgba32_float));
+  EXPECT_NE(error(program_).find("index.json's reflection gives render target 'visibility' the "
+                                 "format"),
+            std::string::npos);
 }
 
-// The query pass's target is R32G32_SFLOAT: (visibility, texel reads).
-TEST_F(TextBindingTest, QueryOutputElsewhereNamesTheQueryTarget) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx10);
-  program.frag.iface.outputs[0].location = 1;
-  EXPECT_EQ(query_error(program, params_),
-            "fragment output '" + program.frag.iface.outputs[0].name +
-                "' at location 1 has no attachment; the query pass has one R32G32_SFLOAT target, "
-                "at location 0");
+TEST_P(TextBindingTest, TheVertexInputMustBeThePasses) {
+  program_.reflection.vertex_inputs[0].components = 3;
+  EXPECT_EQ(error(program_),
+            "index.json's reflection gives the vertex inputs position (3 floats); the query pass "
+            "supplies position (2 floats) at location 0");
 }
 
-TEST_F(TextBindingTest, QueryOutputNeedsBothChannelsOfItsTarget) {
-  PassProgram program = test::text_compare_program(test::TextShape::hlsl_dx9);
-  program.frag.iface.outputs[0].components = 1;
-  EXPECT_EQ(query_error(program, params_),
-            "fragment output '" + program.frag.iface.outputs[0].name +
-                "' has 1 component(s); the query pass's R32G32_SFLOAT target takes 2");
-}
-
-TEST_F(TextBindingTest, DepthPassNeedsTheFragmentDepth) {
-  PassProgram program = test::text_depth_program(test::TextShape::hlsl_dx10);
+TEST_P(TextBindingTest, TheDepthPassNeedsTheFragmentDepth) {
+  PassProgram program = test::text_program("hard", PassKind::depth, GetParam());
   program.frag.iface.builtin_outputs.clear();
-  EXPECT_EQ(depth_error(program),
+  auto result = engine_->render_depth(program, {}, 2, 2, params_);
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().message,
             "the fragment shader writes no fragment depth (BuiltIn FragDepth: GLSL gl_FragDepth, "
             "HLSL SV_Depth); the depth pass stores the same normalized depth in the map's depth "
             "image as in output 0");
 }
+
+INSTANTIATE_TEST_SUITE_P(Targets, TextBindingTest,
+                         ::testing::Values(Target::spirv, Target::glsl450, Target::glsl330,
+                                           Target::essl300, Target::hlsl_dx10, Target::hlsl_dx9),
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
 
 }  // namespace
 }  // namespace penumbra

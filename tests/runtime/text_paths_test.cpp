@@ -1,6 +1,6 @@
-// The text targets' paths: programs in the shapes of the emitted hlsl_dx10,
-// hlsl_dx9 and glsl330 text, compiled by glslang and bound by reflection,
-// produce what the SPIR-V path produces on the same inputs. Runs under the
+// The text targets' paths: a default variant's emitted text for each
+// target, compiled by glslang and bound by the target's reflection record,
+// produces what the SPIR-V path produces on the same inputs. Runs under the
 // validation layer, whose errors fail the call.
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ FloatImage receivers() {
   return image;
 }
 
-class TextPathTest : public ::testing::TestWithParam<test::TextShape> {
+class TextPathTest : public ::testing::TestWithParam<Target> {
  protected:
   void SetUp() override {
     engine_ = test::make_engine(/*validation=*/true);
@@ -62,8 +62,8 @@ class TextPathTest : public ::testing::TestWithParam<test::TextShape> {
 };
 
 TEST_P(TextPathTest, DepthPassWritesTheSameTexels) {
-  const auto expected_map = render(test::depth_program());
-  const auto map = render(test::text_depth_program(GetParam()));
+  const auto expected_map = render(test::text_program("hard", PassKind::depth, Target::spirv));
+  const auto map = render(test::text_program("hard", PassKind::depth, GetParam()));
   ASSERT_TRUE(expected_map && map);
   auto expected = engine_->read_shadow_map(*expected_map);
   auto depth = engine_->read_shadow_map(*map);
@@ -87,10 +87,12 @@ TEST_P(TextPathTest, DepthPassWritesTheSameTexels) {
 TEST_P(TextPathTest, QueryPassComparesAsTheSpirvPath) {
   const auto map = render(test::depth_program());
   ASSERT_TRUE(map);
-  auto expected = engine_->run_query(test::compare_program(), *map, receivers(), params_);
+  auto expected =
+      engine_->run_query(test::text_program("pcf_grid_k3", PassKind::query, Target::spirv), *map,
+                         receivers(), params_);
   ASSERT_TRUE(expected) << expected.error().to_string();
-  auto visibility =
-      engine_->run_query(test::text_compare_program(GetParam()), *map, receivers(), params_);
+  auto visibility = engine_->run_query(
+      test::text_program("pcf_grid_k3", PassKind::query, GetParam()), *map, receivers(), params_);
   ASSERT_TRUE(visibility) << visibility.error().to_string();
   ASSERT_EQ(visibility->data.size(), expected->data.size());
   int shadowed = 0;
@@ -106,9 +108,9 @@ TEST_P(TextPathTest, QueryPassComparesAsTheSpirvPath) {
   EXPECT_GT(partial, 20);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, TextPathTest, ::testing::ValuesIn(test::kTextShapes),
+INSTANTIATE_TEST_SUITE_P(Targets, TextPathTest, ::testing::ValuesIn(test::kTextTargets),
                          [](const auto& param_info) {
-                           return std::string(test::to_string(param_info.param));
+                           return std::string(to_string(param_info.param));
                          });
 
 }  // namespace

@@ -2,47 +2,16 @@
 
 #include <gtest/gtest.h>
 
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/targets.hpp"
+#include "penumbra/compiler/text_frontend.hpp"
 #include "test_programs.hpp"
 
 namespace penumbra::test {
 namespace {
 
-bool is_hlsl(TextShape shape) {
-  return shape != TextShape::glsl330;
-}
-
-// The prefix of the shape's compiled files in shaders/CMakeLists.txt.
-std::string prefix(TextShape shape) {
-  switch (shape) {
-    case TextShape::hlsl_dx10:
-    case TextShape::hlsl_dx10_split:
-      return "d3d10_";
-    case TextShape::hlsl_dx9:
-      return "d3d9_";
-    case TextShape::glsl330:
-      return "gl330_";
-  }
-  return "";
-}
-
-}  // namespace
-
-std::string_view to_string(TextShape shape) {
-  switch (shape) {
-    case TextShape::hlsl_dx10:
-      return "hlsl_dx10";
-    case TextShape::hlsl_dx10_split:
-      return "hlsl_dx10_split";
-    case TextShape::hlsl_dx9:
-      return "hlsl_dx9";
-    case TextShape::glsl330:
-      return "glsl330";
-  }
-  return "";
-}
-
-StageCode reflected_stage(const std::string& name) {
-  StageCode stage{read_spirv(name), {}};
+StageCode reflected(std::vector<std::uint32_t> spirv, const std::string& name) {
+  StageCode stage{std::move(spirv), {}};
   auto iface = reflect(stage.spirv);
   if (!iface) {
     ADD_FAILURE() << name << ": " << iface.error().to_string();
@@ -52,18 +21,38 @@ StageCode reflected_stage(const std::string& name) {
   return stage;
 }
 
-PassProgram text_depth_program(TextShape shape) {
-  PassProgram program{reflected_stage(prefix(shape) + "depth.vert"),
-                      reflected_stage(prefix(shape) + "depth.frag")};
-  program.d3d_viewport = is_hlsl(shape);
-  return program;
+StageCode text_stage(const CompiledStage& compiled, Target target, ShaderStage stage,
+                     const std::string& name) {
+  if (target == Target::spirv) return reflected(compiled.spirv, name);
+  auto spirv = compile_target_text(target, stage, compiled.text, name);
+  if (!spirv) {
+    ADD_FAILURE() << spirv.error().to_string();
+    return {};
+  }
+  return reflected(std::move(spirv->spirv), name);
 }
 
-PassProgram text_compare_program(TextShape shape) {
-  const std::string frag = shape == TextShape::hlsl_dx10_split ? "d3d10_compare_ssb.frag"
-                                                               : prefix(shape) + "compare.frag";
-  PassProgram program{reflected_stage(prefix(shape) + "fullscreen.vert"), reflected_stage(frag)};
-  program.d3d_viewport = is_hlsl(shape);
+}  // namespace
+
+StageCode reflected_stage(const std::string& name) {
+  return reflected(read_spirv(name), name);
+}
+
+PassProgram text_program(const std::string& variant, PassKind pass, Target target) {
+  PassProgram program;
+  const CompiledPass* compiled = compiled_pass(variant, pass, target);
+  if (!compiled) return program;
+  const std::string name =
+      variant + "/" + std::string(to_string(target)) + "/" + std::string(to_string(pass)) + ".";
+  program.vert = text_stage(compiled->vert, target, ShaderStage::vertex, name + "vert");
+  program.frag = text_stage(compiled->frag, target, ShaderStage::fragment, name + "frag");
+  program.target = target;
+  program.reflection = compiled->reflection;
+  // As load_executable: each API's clip-space conventions.
+  if (target != Target::spirv) {
+    program.d3d_viewport = traits(target).is_hlsl;
+    program.gl_clip_depth = !traits(target).is_hlsl;
+  }
   return program;
 }
 

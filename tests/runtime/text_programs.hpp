@@ -1,6 +1,8 @@
-// The runtime tests' programs in the shapes of the emitted text targets:
-// SPIR-V that glslang's HLSL and GLSL front ends compiled from shaders/ at
-// build time, reflected by reflect() as a library's programs are.
+// The runtime tests' programs from the default variants' emitted text:
+// each target's text compiled by glslang's front end as the runtime
+// compiles a library's (compile_target_text), with the target's reflection
+// record (compile_pass); and single stages in the shapes of the text
+// targets, compiled from shaders/ at build time, for reflect()'s tests.
 #pragma once
 
 #include <string>
@@ -10,26 +12,15 @@
 
 namespace penumbra::test {
 
-enum class TextShape {
-  hlsl_dx10,        // cbuffer ShadowParams; Texture2D + sampler sharing one binding
-  hlsl_dx10_split,  // the same, samplers on bindings of their own (--ssb 8)
-  hlsl_dx9,         // $Global constants and gl_HalfPixel; sampler2D; compares in the shader
-  glsl330,          // uniform ShadowParams params in gl_DefaultUniformBlock; loose samplers
-};
-
-inline constexpr TextShape kTextShapes[] = {TextShape::hlsl_dx10, TextShape::hlsl_dx10_split,
-                                            TextShape::hlsl_dx9, TextShape::glsl330};
-
-std::string_view to_string(TextShape shape);
+inline constexpr Target kTextTargets[] = {Target::glsl450, Target::glsl330, Target::essl300,
+                                          Target::hlsl_dx10, Target::hlsl_dx9};
 
 // shaders/<name>.spv with its reflect() record; fails the test if either fails.
 StageCode reflected_stage(const std::string& name);
 
-// The depth pass (d3d_viewport set for HLSL).
-PassProgram text_depth_program(TextShape shape);
-
-// The query pass: one bilinear comparison at the receiver, as compare.frag
-// (Direct3D 9: four point reads, weighted in the shader).
-PassProgram text_compare_program(TextShape shape);
+// The default variant `variant`'s `pass` for `target`, ready to run: the
+// SPIR-V as built for spirv, else its text compiled by the target's front
+// end; with its reflection record. Fails the test if any step fails.
+PassProgram text_program(const std::string& variant, PassKind pass, Target target);
 
 }  // namespace penumbra::test

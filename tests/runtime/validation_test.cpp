@@ -61,11 +61,13 @@ TEST_F(ValidationTest, EveryOperationIsClean) {
   for (const Diagnostic& message : validation_messages()) ADD_FAILURE() << message.message;
 }
 
-// Reflection that hides the vertex stage's use of ShadowParams gives a set
-// layout the vertex shader cannot see: an error only the layer detects.
+// A reflection record (and module view) hiding the vertex stage's use of
+// ShadowParams gives a set layout the vertex shader cannot see: an error
+// only the layer detects.
 TEST_F(ValidationTest, AValidationErrorFailsTheCall) {
   PassProgram program = test::depth_program();
   program.vert.iface.uniform_blocks.clear();
+  program.reflection.vert.blocks.clear();
   auto map = engine_->render_depth(program, {}, 4, 4, test::make_params(kLight, 4, 4, 4, 4));
   ASSERT_FALSE(map);
   EXPECT_EQ(map.error().kind, Error::Kind::device);

@@ -8,6 +8,7 @@
 #include "build/pipeline.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/support/atomic_file.hpp"
+#include "reflect/reflect_target.hpp"
 
 namespace penumbra {
 namespace {
@@ -125,13 +126,18 @@ Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKin
   }
   const Pipeline pipeline(std::nullopt);
   CompiledPass out;
+  PassReflection vert;
+  PassReflection frag;
   for (const PassStageSource& source : pass_plan()) {
     if (source.pass != pass) continue;
     ShaderJob job = make_job(source, target, &variant);
     PENUMBRA_TRY(pipeline.run(job));
-    CompiledStage& stage = source.stage == ShaderStage::vertex ? out.vert : out.frag;
+    const bool is_vertex = source.stage == ShaderStage::vertex;
+    (is_vertex ? vert : frag) = std::move(job.reflection);
+    CompiledStage& stage = is_vertex ? out.vert : out.frag;
     stage = CompiledStage{std::move(job.spirv), std::move(job.text), std::move(job.interface)};
   }
+  out.reflection = join_stages(std::move(vert), frag);
   return out;
 }
 

@@ -1,4 +1,3 @@
-#include <set>
 #include <string>
 
 #include "reflect_parts.hpp"
@@ -11,21 +10,17 @@ using spirv_cross::SPIRType;
 
 // Struct members become "<member>.<field>" at offset base + their own; an
 // array of structs stays one member, as GLSL and HLSL cannot set it whole.
-// `used`: the top-level members the stage reads; null below the top level,
-// where a member counts as read when its top-level member is.
 void flatten(const Compiler& compiler, const SPIRType& type, std::uint32_t base,
-             const std::string& prefix, const std::set<std::uint32_t>* used, bool parent_used,
-             std::vector<BlockMember>& out) {
+             const std::string& prefix, std::vector<BlockMember>& out) {
   for (std::uint32_t i = 0; i < type.member_types.size(); ++i) {
-    const bool is_used = used ? used->contains(i) : parent_used;
     const std::string name = prefix + compiler.get_member_name(type.self, i);
     const std::uint32_t offset = base + compiler.type_struct_member_offset(type, i);
     const SPIRType& member = compiler.get_type(type.member_types[i]);
     if (member.basetype == SPIRType::Struct && member.array.empty()) {
-      flatten(compiler, member, offset, name + ".", nullptr, is_used, out);
+      flatten(compiler, member, offset, name + ".", out);
     } else {
       const auto size = compiler.get_declared_struct_member_size(type, i);
-      out.push_back(BlockMember{name, offset, static_cast<std::uint32_t>(size), is_used});
+      out.push_back(BlockMember{name, offset, static_cast<std::uint32_t>(size)});
     }
   }
 }
@@ -40,11 +35,7 @@ UniformBlock reflect_block(const Compiler& compiler, const spirv_cross::Resource
   block.set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);
   block.binding = compiler.get_decoration(resource.id, spv::DecorationBinding);
   block.size = static_cast<std::uint32_t>(compiler.get_declared_struct_size(type));
-  std::set<std::uint32_t> used;
-  for (const spirv_cross::BufferRange& range : compiler.get_active_buffer_ranges(resource.id)) {
-    used.insert(range.index);
-  }
-  flatten(compiler, type, 0, "", &used, true, block.members);
+  flatten(compiler, type, 0, "", block.members);
   return block;
 }
 

@@ -4,7 +4,7 @@
 
 namespace penumbra {
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(BlockMember, name, offset, size, used)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BlockMember, name, offset, size)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(UniformBlock, type_name, instance_name, set, binding, size,
                                    members)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SampledImage, name, set, binding, comparison)

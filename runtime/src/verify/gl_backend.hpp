@@ -1,12 +1,15 @@
 // The optional OpenGL path of verify: glsl330 and glsl450 text compiled by
-// the GL driver (Mesa llvmpipe over EGL) instead of glslang. Present when the
-// project is built with PENUMBRA_BUILD_GL; otherwise create() says why not.
+// the GL driver (Mesa llvmpipe over EGL) instead of glslang, and bound by
+// each pass's reflection in index.json, as a GL engine binds it. Present
+// when the project is built with PENUMBRA_BUILD_GL; otherwise create() says
+// why not.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "penumbra/compiler/library.hpp"
 #include "penumbra/runtime/engine.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/param_block.hpp"
@@ -14,10 +17,11 @@
 
 namespace penumbra {
 
-// One pass's emitted text: its fullscreen.vert and its fragment stage.
+// One pass of a library for one target: its emitted texts and reflection.
 struct GlPassTexts {
   std::string vert;
   std::string frag;
+  PassReflection reflection;  // index.json's reflection.<pass>.<target>
 };
 
 // The passes that build the min-max mip.
@@ -32,6 +36,23 @@ struct GlQueryTexts {
   // otherwise), unused when it does not.
   std::optional<GlMinmaxTexts> minmax;
 };
+
+// screen_blur's chain.
+struct GlScreenBlurTexts {
+  GlPassTexts query;
+  GlPassTexts blur_h;
+  GlPassTexts blur_v;
+  GlPassTexts composite;
+};
+
+// `entry`'s query pass for `target` and, for a technique that reads the
+// min-max mip, the passes that build it. Errors: a file that cannot be read,
+// a pass without a reflection for `target`.
+Result<GlQueryTexts> read_gl_query(const Library& library, const LibraryVariant& entry,
+                                   Target target);
+// `entry`'s screen_blur chain for `target`; errors as read_gl_query's.
+Result<GlScreenBlurTexts> read_gl_screen_blur(const Library& library, const LibraryVariant& entry,
+                                              Target target);
 
 class GlBackend {
  public:
@@ -48,6 +69,12 @@ class GlBackend {
   virtual Result<QueryOutput> run_query(const GlQueryTexts& texts,
                                         const FloatImage& normalized_depth,
                                         const FloatImage& receivers, const ParamBlock& params) = 0;
+  // screen_blur's chain (GlEngine::run_screen_blur); gpu_ms is always empty.
+  virtual Result<ScreenBlurOutput> run_screen_blur(const GlScreenBlurTexts& texts,
+                                                   const FloatImage& normalized_depth,
+                                                   const FloatImage& receivers,
+                                                   const FloatImage& scene_colour,
+                                                   const ParamBlock& params) = 0;
 };
 
 }  // namespace penumbra

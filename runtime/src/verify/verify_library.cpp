@@ -138,32 +138,6 @@ Result<TargetRun> run_vulkan(Context& ctx, const LibraryVariant& entry, Target t
   return run;
 }
 
-Result<GlPassTexts> read_pass_texts(const Context& ctx, const LibraryVariant& entry, PassKind pass,
-                                    Target target) {
-  auto vert = read_pass_file(ctx.library, entry, pass, target, ShaderStage::vertex);
-  if (!vert) return vert.error();
-  auto frag = read_pass_file(ctx.library, entry, pass, target, ShaderStage::fragment);
-  if (!frag) return frag.error();
-  return GlPassTexts{std::move(*vert), std::move(*frag)};
-}
-
-// The query's texts and, for a technique reading the min-max mip, the texts
-// of the passes that build it.
-Result<GlQueryTexts> read_query_texts(const Context& ctx, const LibraryVariant& entry,
-                                      Target target) {
-  auto query = read_pass_texts(ctx, entry, PassKind::query, target);
-  if (!query) return query.error();
-  GlQueryTexts texts{std::move(*query), std::nullopt};
-  if (uses_minmax_mip(entry.variant.technique)) {
-    auto init = read_pass_texts(ctx, entry, PassKind::minmax_init, target);
-    if (!init) return init.error();
-    auto reduce = read_pass_texts(ctx, entry, PassKind::minmax_reduce, target);
-    if (!reduce) return reduce.error();
-    texts.minmax = GlMinmaxTexts{std::move(*init), std::move(*reduce)};
-  }
-  return texts;
-}
-
 // run_vulkan, or a failed run when the mip the variant reads could not be built.
 TargetRun vulkan_run(Context& ctx, const LibraryVariant& entry, Target target) {
   if (uses_minmax_mip(entry.variant.technique)) {
@@ -175,24 +149,34 @@ TargetRun vulkan_run(Context& ctx, const LibraryVariant& entry, Target target) {
   return run ? std::move(*run) : failed_run(target, "vulkan", run.error());
 }
 
-// The same text through the OpenGL driver, on the map the target's own depth
-// pass rendered (the GL engine builds the min-max mip with the target's own
-// passes when the query reads it).
+// The same text through the OpenGL driver, bound by its reflection, on the
+// map the target's own depth pass rendered (the GL engine builds the min-max
+// mip with the target's own passes when the query reads it); screen_blur's
+// chain checked as on Vulkan.
 Result<TargetRun> run_gl(Context& ctx, const LibraryVariant& entry, Target target) {
   TargetRun run;
   run.target = target;
   run.backend = "gl";
-  if (entry.variant.technique == Technique::screen_blur) {
-    run.not_executed = std::string(kGlNoScreenBlur);
-    return run;
-  }
   if (!ctx.gl) {
     run.not_executed = ctx.gl_missing;
     return run;
   }
   run.device = ctx.gl->device();
   run.execution.front_end = "the OpenGL driver's GLSL compiler";
-  auto texts = read_query_texts(ctx, entry, target);
+  if (entry.variant.technique == Technique::screen_blur) {
+    auto chain = read_gl_screen_blur(ctx.library, entry, target);
+    if (!chain) return chain.error();
+    PENUMBRA_TRY(run_scenes(ctx, run, [&](const SceneFixture& fixture) -> Result<SceneRun> {
+      const FloatImage colour =
+          reference::scene_colour(fixture.receivers.width, fixture.receivers.height);
+      auto gpu = ctx.gl->run_screen_blur(*chain, fixture.normalized_depth, fixture.receivers,
+                                         colour, fixture.params);
+      if (!gpu) return gpu.error();
+      return check_screen_blur_scene(ctx, *gpu, entry.variant, fixture, colour);
+    }));
+    return run;
+  }
+  auto texts = read_gl_query(ctx.library, entry, target);
   if (!texts) return texts.error();
   PENUMBRA_TRY(run_scenes(ctx, run, [&](const SceneFixture& fixture) {
     return check_query_scene(

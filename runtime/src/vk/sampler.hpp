@@ -1,4 +1,5 @@
-// Sampler: the two samplers of the shader interface (docs/shader-interface.md).
+// Sampler: a sampler of the shader interface, created from the state a
+// pass's reflection gives its texture (docs/shader-interface.md).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -10,12 +11,15 @@ namespace penumbra::vk {
 
 using Sampler = DeviceObject<VkSampler, vkDestroySampler>;
 
-enum class SamplerKind {
-  nearest,     // point sampling, nearest mip, clamp-to-edge: shadow_depth, receivers,
-               // shadow_minmax (every level) and minmax_source
-  comparison,  // LESS_OR_EQUAL comparison, linear filter, clamp-to-edge: shadow_cmp
+// Every sampler addresses clamp-to-edge.
+struct SamplerDesc {
+  VkFilter filter = VK_FILTER_NEAREST;  // minification and magnification
+  // Levels past the base: 0 reads level 0 only (GL's non-mipmapped
+  // minification); VK_LOD_CLAMP_NONE every level, the nearest one.
+  float max_lod = 0.0f;
+  bool comparison = false;  // compare LESS_OR_EQUAL: lit when reference <= texel
 };
 
-Result<Sampler> create_sampler(VkDevice device, SamplerKind kind);
+Result<Sampler> create_sampler(VkDevice device, const SamplerDesc& desc);
 
 }  // namespace penumbra::vk

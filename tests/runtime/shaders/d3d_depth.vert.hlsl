@@ -1,19 +1,13 @@
 // Depth pass in the shape of the emitted hlsl_dx10 / hlsl_dx9 depth.vert:
 // depth.vert's projection, then Direct3D's y flip (and, for Direct3D 9,
-// SPIRV-Cross's half-pixel offset). D3D9 selects the Direct3D 9 shape;
-// D3D9_POSITION_SEMANTIC keeps the emitted POSITION output semantic, which
-// glslang does not make a built-in position.
+// SPIRV-Cross's half-pixel offset). D3D9 selects the Direct3D 9 shape.
 #ifdef D3D9
 #include "d3d9_params.hlsl"
 uniform float4 gl_HalfPixel;
 #else
 #include "d3d10_params.hlsl"
 #endif
-#ifdef D3D9_POSITION_SEMANTIC
-#define CLIP_POSITION POSITION
-#else
 #define CLIP_POSITION SV_Position
-#endif
 
 struct Output
 {

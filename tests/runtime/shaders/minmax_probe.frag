@@ -5,6 +5,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "params.glsl"
 
+// Declared, unread: the query passes reading the mip declare the map too.
+layout(set = 0, binding = 1) uniform sampler2D shadow_depth;
 layout(set = 0, binding = 3) uniform sampler2D receivers;
 layout(set = 0, binding = 4) uniform sampler2D shadow_minmax;
 layout(location = 0) out vec4 visibility;

@@ -10,6 +10,7 @@
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/model/model.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 
 namespace penumbra {
@@ -44,6 +45,7 @@ struct CompiledStage {
 struct CompiledPass {
   CompiledStage vert;
   CompiledStage frag;
+  PassReflection reflection;  // the target's record, as index.json's reflection.<pass>.<target>
 };
 
 // Compiles one pass of one variant for one target without writing files.

@@ -28,7 +28,6 @@ struct BlockMember {
   std::string name;  // e.g. "shadow_map_size", "params.light", "params_light", "gl_HalfPixel"
   std::uint32_t offset = 0;
   std::uint32_t size = 0;  // bytes
-  bool used = true;        // the stage reads it (SPIRV-Cross's active buffer ranges)
   bool operator==(const BlockMember&) const = default;
 };
 

@@ -1,14 +1,16 @@
-// GlEngine: runs a query pass's GLSL text (glsl330 or glsl450 as emitted) on
-// an OpenGL 4.5 core context over headless EGL, normally Mesa's llvmpipe
-// (docs/gl.md), building the shadow map's min-max mip first with the
-// variant's own passes when the query reads it. It is the GL counterpart of
-// the Vulkan Engine's build_minmax and run_query.
+// GlEngine: runs a variant's passes as GLSL text (glsl330 or glsl450 as
+// emitted) on an OpenGL 4.5 core context over headless EGL, normally Mesa's
+// llvmpipe (docs/gl.md). Every pass is bound by its reflection, index.json's
+// `reflection.<pass>.<target>`, as a GL engine that drops the library in
+// does: the query (after the shadow map's min-max mip when the query reads
+// it) and screen_blur's chain. It is the GL counterpart of the Vulkan
+// Engine's build_minmax, run_query and run_screen_blur.
 //
 // Lifecycle: GlEngine::create() opens an EGL display and a context; then any
-// number of run_query / build_minmax calls, from one thread at a time (each
-// call makes the context current and restores whatever was current before
-// it returns, and every call's GL work is finished when it returns); then
-// destroy the engine. Every failure is a returned Error, never an exception.
+// number of calls, from one thread at a time (each call makes the context
+// current and restores whatever was current before it returns, and every
+// call's GL work is finished when it returns); then destroy the engine.
+// Every failure is a returned Error, never an exception.
 #pragma once
 
 #include <memory>
@@ -17,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/param_block.hpp"
@@ -43,11 +46,13 @@ struct GlInfo {
   std::string glsl_version;  // GL_SHADING_LANGUAGE_VERSION, e.g. "4.50"
 };
 
-// One pass's text as emitted: fullscreen.vert compiled for the pass, and the
-// pass's fragment stage.
+// One pass as a library holds it for one GLSL target: its two texts and
+// their reflection. The engine reads all three through these references;
+// they must outlive the call.
 struct GlPass {
-  std::string_view vert;
-  std::string_view frag;
+  std::string_view vert;             // the pass's vertex stage (fullscreen.vert) as emitted
+  std::string_view frag;             // the pass's fragment stage as emitted
+  const PassReflection& reflection;  // index.json's reflection.<pass>.<target>
 };
 
 // The passes that build the min-max mip (docs/shader-interface.md).
@@ -62,11 +67,28 @@ struct GlQueryPasses {
   std::optional<GlMinmaxPasses> minmax = std::nullopt;
 };
 
-// The query pass's RG32F output, each channel one image of the receivers'
-// size, row 0 first.
+// screen_blur's chain (docs/shader-interface.md, "The screen_blur chain").
+struct GlScreenBlurPasses {
+  GlPass query;      // the unblurred shadow factor per screen pixel: (factor, reads)
+  GlPass blur_h;     // reads screen_factor (and receivers when depth-aware)
+  GlPass blur_v;     // the same, on blur_h's output
+  GlPass composite;  // reads scene_colour and screen_factor (the blurred factor)
+};
+
+// The query pass's output, each channel one image of the receivers' size,
+// row 0 first.
 struct GlQueryOutput {
   FloatImage visibility;   // .x
   FloatImage texel_reads;  // .y: the texels the pass counted as read per pixel
+};
+
+// What GlEngine::run_screen_blur's passes wrote, each the receivers' size.
+struct GlScreenBlurOutput {
+  FloatImage factor;       // the query pass's .x, one channel
+  FloatImage texel_reads;  // the query pass's .y, one channel
+  FloatImage blurred_h;    // blur_h's .x, one channel
+  FloatImage blurred;      // blur_v's .x, one channel: the blurred factor
+  FloatImage composite;    // the composite pass's four channels
 };
 
 class GlEngine {
@@ -83,19 +105,19 @@ class GlEngine {
 
   const GlInfo& info() const;
 
-  // Compiles and links the query pass, binds ShadowParams and the samplers
-  // by name, draws one full-screen triangle into an RG32F target of the
-  // receivers' size and reads it back. When the query reads shadow_minmax,
-  // the mip is built first as build_minmax does. `normalized_depth` is one
-  // channel of depth in [0, 1]; `receivers` holds (u, v, z_r) in 3 or 4
-  // channels. `params` maps ShadowParams member names to vec4 values: every
-  // member a program uses must be present (the min-max passes' source_size
-  // and screen_size are set per level); extra entries are ignored.
-  // Errors, `where` naming the pass ("query pass", "minmax_init pass",
-  // "minmax_reduce pass") or the input: compile (a stage's or the link's
-  // log), bad_input (inputs, a name outside the shader interface, a missing
-  // parameter, or a query reading shadow_minmax without `passes.minmax`),
-  // device.
+  // Compiles and links the query pass, binds it by its reflection, draws
+  // one full-screen triangle into a target of the receivers' size in the
+  // reflection's render-target format and reads it back. When the query
+  // reads shadow_minmax, the mip is built first as build_minmax does.
+  // `normalized_depth` is one channel of depth in [0, 1]; `receivers` holds
+  // (u, v, z_r) in 3 or 4 channels. `params` maps ShadowParams member names
+  // to vec4 values: every member a program uses must be present (the min-max
+  // passes' source_size and screen_size are set per level); extra entries
+  // are ignored. Errors, `where` naming the pass ("query pass",
+  // "minmax_init pass", ...) or the input: compile (a stage's or the link's
+  // log), bad_input (inputs; a program that disagrees with its reflection,
+  // e.g. an active uniform the reflection lacks; a missing parameter; a
+  // query reading shadow_minmax without `passes.minmax`), device.
   Result<GlQueryOutput> run_query(const GlQueryPasses& passes, const FloatImage& normalized_depth,
                                   const FloatImage& receivers, const ParamBlock& params);
 
@@ -106,6 +128,18 @@ class GlEngine {
   Result<std::vector<FloatImage>> build_minmax(const GlMinmaxPasses& passes,
                                                const FloatImage& normalized_depth,
                                                const ParamBlock& params);
+
+  // screen_blur's chain: the query into a screen-sized factor target, blur_h
+  // and blur_v each reading the previous target as screen_factor, and the
+  // composite of `scene_colour` (RGBA, the receivers' size) and the blurred
+  // factor. Every pass gets `params` with screen_size set to the receivers'
+  // size. Errors as run_query's, and bad_input for a scene colour of
+  // another size or channel count.
+  Result<GlScreenBlurOutput> run_screen_blur(const GlScreenBlurPasses& passes,
+                                             const FloatImage& normalized_depth,
+                                             const FloatImage& receivers,
+                                             const FloatImage& scene_colour,
+                                             const ParamBlock& params);
 
  private:
   explicit GlEngine(std::unique_ptr<gl::Context> context);

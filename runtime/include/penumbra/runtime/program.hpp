@@ -1,17 +1,19 @@
-// What a pass runs with: SPIR-V stages with their reflection, and the values
-// of the ShadowParams uniform block (docs/shader-interface.md).
+// What a pass runs with: SPIR-V stages, the reflection record an engine
+// binds by, and the values of the ShadowParams uniform block
+// (docs/shader-interface.md, docs/runtime.md).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/param_block.hpp"  // ParamBlock, param_block_key
 
 namespace penumbra {
 
-// One stage: its SPIR-V words and the reflection of those words. The runtime
-// binds resources, vertex inputs and outputs by `iface`, never by slot.
+// One stage as the device runs it: its SPIR-V words and their reflection,
+// which plays the driver's view of the module (the descriptors it declares).
 struct StageCode {
   std::vector<std::uint32_t> spirv;
   ShaderInterface iface;
@@ -19,10 +21,13 @@ struct StageCode {
 
 // A vertex + fragment pair: the depth pass, a query pass, or any other pass.
 // The SPIR-V may come from Penumbra's shaderlib or from any target's emitted
-// text compiled by glslang (docs/runtime.md).
+// text compiled by glslang (docs/runtime.md). The runtime creates and binds
+// every resource from `reflection`, read in `target`'s terms.
 struct PassProgram {
   StageCode vert;
   StageCode frag;
+  Target target = Target::spirv;  // whose text the stages were compiled from
+  PassReflection reflection;      // index.json's reflection.<pass>.<target>
   // The vertex stage flips y for Direct3D: the runtime flips the viewport
   // (negative height, Vulkan 1.1) so row 0 stays first.
   bool d3d_viewport = false;

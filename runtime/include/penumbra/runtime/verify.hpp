@@ -47,12 +47,6 @@ struct SceneRun {
   bool pass() const;  // every check above passed
 };
 
-// Why screen_blur's GL runs are not executed (TargetRun::not_executed): not
-// a failure.
-inline constexpr std::string_view kGlNoScreenBlur =
-    "screen_blur is not executed on GL: the GL path runs single-pass queries and the min-max "
-    "mip; the blur chain (query, blur_h, blur_v, composite) runs on Vulkan";
-
 // One variant, one target, one backend ("vulkan" or "gl").
 struct TargetRun {
   Target target = Target::spirv;

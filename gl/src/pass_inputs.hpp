@@ -1,0 +1,54 @@
+// The images one engine call's passes read, by the shader contract's
+// TextureId (find_texture of the reflection's name): the caller's images,
+// uploaded on first use in the format of the binding that reads them, and
+// the textures earlier passes drew.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl_names.hpp"
+#include "penumbra/model/shader_contract.hpp"
+#include "penumbra/model/target_reflection.hpp"
+#include "penumbra/support/image.hpp"
+#include "penumbra/support/result.hpp"
+#include "texel_formats.hpp"
+
+namespace penumbra::gl {
+
+class PassInputs {
+ public:
+  // `image` is read as `texture`; it must outlive this. One image given for
+  // two textures (the map as shadow_depth and shadow_cmp) is uploaded once
+  // per format.
+  void give(TextureId texture, const FloatImage& image);
+
+  // `name`, a texture in `format` an earlier pass drew (`origin` says which,
+  // for errors), is read as `texture`, replacing what was read as it.
+  void set(TextureId texture, GLuint name, const TexelFormat& format, std::string origin);
+
+  // The texture to bind to `binding`, which reads `texture`. Errors
+  // (bad_input, `where`): nothing supplies it, its format differs from the
+  // binding's, or the image has more channels than the binding's format;
+  // device for a GL error uploading it.
+  Result<GLuint> texture_for(TextureId texture, const TextureBinding& binding,
+                             const std::string& where);
+
+ private:
+  struct Upload {
+    const FloatImage* image;
+    const TexelFormat* format;
+    Texture texture;
+  };
+  struct Drawn {
+    GLuint name;
+    const TexelFormat* format;
+    std::string origin;
+  };
+  std::map<TextureId, const FloatImage*> given_;
+  std::vector<Upload> uploads_;
+  std::map<TextureId, Drawn> drawn_;
+};
+
+}  // namespace penumbra::gl

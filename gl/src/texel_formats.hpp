@@ -1,0 +1,25 @@
+// The GL texture formats a reflection names ("GL_RG32F", ...) as the GL
+// calls that create, fill and read them take them.
+#pragma once
+
+#include <string_view>
+
+#include "gl_api.hpp"
+#include "penumbra/support/result.hpp"
+
+namespace penumbra::gl {
+
+struct TexelFormat {
+  std::string_view name;  // as the reflection writes it: "GL_RG32F"
+  GLenum internal_format;
+  GLenum pixel_format;  // of uploads and readbacks, as floats: GL_RG, GL_DEPTH_COMPONENT
+  int channels;
+};
+
+// The format named `name`. Errors (bad_input, `where`): a name outside the
+// 32-bit float formats the engine creates (GL_R32F, GL_RG32F, GL_RGBA32F,
+// GL_DEPTH_COMPONENT32F); `what` says whose format it is.
+Result<const TexelFormat*> texel_format(std::string_view name, const std::string& where,
+                                        const std::string& what);
+
+}  // namespace penumbra::gl

@@ -1,0 +1,107 @@
+// screen_blur's chain on GL (query, blur_h, blur_v, composite), checked as
+// penumbra verify checks it on Vulkan: the factor against the CPU reference,
+// each blur pass against the CPU's blur of the GL pass's own input, and the
+// composite against the CPU's composite of the GL blurred factor, on every
+// built-in scene.
+#include "penumbra/reference/screen_blur.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+
+#include "gl_fixture.hpp"
+#include "penumbra/reference/compare.hpp"
+#include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/techniques.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+// As query_test.cpp: llvmpipe samples as lavapipe, with 8 sub-texel bits.
+constexpr reference::SamplingPrecision kLlvmpipePrecision{8};
+
+// Largest |gpu - cpu| over every value; infinity for another shape or a NaN.
+double max_abs_error(const FloatImage& gpu, const FloatImage& cpu) {
+  if (gpu.width != cpu.width || gpu.height != cpu.height || gpu.channels != cpu.channels) {
+    return INFINITY;
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < gpu.data.size(); ++i) {
+    const double error = std::abs(double(gpu.data[i]) - double(cpu.data[i]));
+    worst = std::isnan(error) ? INFINITY : std::max(worst, error);
+  }
+  return worst;
+}
+
+using Case = std::tuple<std::string, Target>;
+
+class GlScreenBlur : public ::testing::TestWithParam<Case> {};
+
+TEST_P(GlScreenBlur, EveryPassMatchesTheReferenceOnEveryScene) {
+  const auto& [name, target] = GetParam();
+  auto variant = default_variant(name);
+  ASSERT_NE(variant, nullptr);
+  PassText passes[4];
+  const PassKind kinds[4] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
+                             PassKind::composite};
+  for (int p = 0; p < 4; ++p) {
+    auto text = emitted_pass(*variant, target, kinds[p]);
+    ASSERT_TRUE(text.ok()) << text.error().to_string();
+    passes[p] = std::move(*text);
+  }
+  auto engine = make_gl_engine();
+  ASSERT_NE(engine, nullptr);
+  const bool depth_aware = variant->keys.depth_aware.value_or(false);
+  for (const reference::Scene& scene : reference::builtin_scenes()) {
+    const SceneInputs inputs = scene_inputs(scene);
+    const FloatImage colour =
+        reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
+    auto gpu = engine->run_screen_blur(
+        {passes[0].view(), passes[1].view(), passes[2].view(), passes[3].view()},
+        inputs.normalized_depth, inputs.receivers, colour, inputs.params);
+    ASSERT_TRUE(gpu.ok()) << scene.name << ": " << gpu.error().to_string();
+
+    auto expected = reference::evaluate_image(*variant, inputs.linear_depth, scene.light,
+                                              inputs.receivers, kLlvmpipePrecision);
+    ASSERT_TRUE(expected.ok()) << expected.error().to_string();
+    auto factor = reference::compare(gpu->factor, expected->visibility, expected->ambiguous,
+                                     reference::tolerance(variant->technique, kLlvmpipePrecision));
+    ASSERT_TRUE(factor.ok()) << factor.error().to_string();
+    EXPECT_TRUE(factor->pass) << scene.name << ": factor max error " << factor->max_abs_error;
+    EXPECT_GT(factor->compared, factor->pixels * 9 / 10) << scene.name;
+
+    const FloatImage* receivers = depth_aware ? &inputs.receivers : nullptr;
+    const FloatImage blurred_h =
+        reference::blur_horizontal(gpu->factor, variant->blur_weights, receivers);
+    EXPECT_LE(max_abs_error(gpu->blurred_h, blurred_h), reference::kBlurTolerance) << scene.name;
+    const FloatImage blurred_v =
+        reference::blur_vertical(gpu->blurred_h, variant->blur_weights, receivers);
+    EXPECT_LE(max_abs_error(gpu->blurred, blurred_v), reference::kBlurTolerance) << scene.name;
+    EXPECT_LE(max_abs_error(gpu->blurred,
+                            reference::screen_blur(*variant, gpu->factor, inputs.receivers)),
+              reference::kBlurTolerance)
+        << scene.name;
+    // The blur does blur: a penumbra's factor changes.
+    EXPECT_GT(max_abs_error(gpu->blurred, gpu->factor), 1e-3) << scene.name;
+    EXPECT_LE(max_abs_error(gpu->composite, reference::composite(colour, gpu->blurred)),
+              reference::kCompositeTolerance)
+        << scene.name;
+  }
+}
+
+std::string case_name(const ::testing::TestParamInfo<Case>& param_info) {
+  return std::get<0>(param_info.param) + "_" +
+         std::string(to_string(std::get<1>(param_info.param)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Emitted, GlScreenBlur,
+                         ::testing::Combine(::testing::Values("screen_blur_r2", "screen_blur_r8",
+                                                              "screen_blur_r4_depth_aware"),
+                                            ::testing::Values(Target::glsl330, Target::glsl450)),
+                         case_name);
+
+}  // namespace
+}  // namespace penumbra::testing
