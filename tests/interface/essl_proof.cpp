@@ -12,70 +12,29 @@
 namespace penumbra::testing {
 namespace {
 
-std::string binding_text(std::optional<std::uint32_t> binding) {
-  return "binding " + (binding ? std::to_string(*binding) : std::string("-"));
-}
+constexpr FactStyle kStyle{};
 
-std::string binding_text(int binding) {
-  return "binding " + (binding >= 0 ? std::to_string(binding) : std::string("-"));
-}
-
-std::string texture_text(std::string_view type, bool comparison) {
-  return std::string(type) + (comparison ? ", comparison" : ", no comparison");
-}
-
-std::string input_text(int location, int components, std::string_view format) {
-  return "location " + std::to_string(location) + ", " + std::to_string(components) +
-         " components, " + std::string(format);
-}
-
-void reflected_stage(std::string_view stage, const StageBindings& bindings, Facts& facts) {
-  for (const BlockBinding& block : bindings.blocks) {
-    const std::string key = std::string(stage) + " block " + block.name;
-    facts[key] = binding_text(block.binding) + ", " + std::to_string(block.size) + " bytes";
-    for (const ConstantBinding& member : block.members) {
-      facts[key + " member " + member.name] =
-          member.type + " at " + (member.offset ? std::to_string(*member.offset) : "-");
-    }
-  }
-  for (const ConstantBinding& uniform : bindings.uniforms) {
-    facts[std::string(stage) + " uniform " + uniform.name] = uniform.type;
-  }
-  for (const TextureBinding& texture : bindings.textures) {
-    facts[std::string(stage) + " texture " + texture.name] =
-        binding_text(texture.binding) + ", " +
-        texture_text(texture.type, texture.sampler.state.comparison);
-  }
-}
-
-Facts reflected(const PassReflection& pass) {
-  Facts facts;
-  reflected_stage("vert", pass.vert, facts);
-  reflected_stage("frag", pass.frag, facts);
-  for (const VertexAttribute& input : pass.vertex_inputs) {
-    facts["vert input " + input.name] =
-        input_text(input.location ? static_cast<int>(*input.location) : -1,
-                   static_cast<int>(input.components), input.format);
-  }
-  for (const RenderTarget& target : pass.render_targets) {
-    facts["frag output " + target.name] = "location " + std::to_string(target.index);
-  }
-  return facts;
+// A glslang binding or location, -1 where the text gives none.
+std::optional<std::uint32_t> index_or_none(int binding) {
+  if (binding < 0) return std::nullopt;
+  return static_cast<std::uint32_t>(binding);
 }
 
 void observed_stage(ShaderStage stage, const GlslangReflection& text, Facts& facts) {
   const std::string key(stage_key(stage));
   for (const GlslangBlock& block : text.blocks) {
     facts[key + " block " + block.name] =
-        binding_text(block.binding) + ", " + std::to_string(block.size) + " bytes";
+        slot_text(kStyle, std::nullopt, index_or_none(block.binding)) + ", " +
+        std::to_string(block.size) + " bytes";
   }
   for (const GlslangObject& uniform : text.uniforms) {
     if (uniform.block >= 0) {
       facts[key + " block " + text.blocks[static_cast<std::size_t>(uniform.block)].name +
-            " member " + uniform.name] = uniform.type + " at " + std::to_string(uniform.offset);
+            " member " + uniform.name] =
+          member_text(kStyle, uniform.type, static_cast<std::uint32_t>(uniform.offset), 0);
     } else if (uniform.type.starts_with("sampler")) {
       facts[key + " texture " + uniform.name] =
-          binding_text(uniform.binding) + ", " +
+          slot_text(kStyle, std::nullopt, index_or_none(uniform.binding)) + ", " +
           texture_text(uniform.type, uniform.type.ends_with("Shadow"));
     } else if (uniform.live) {
       facts[key + " uniform " + uniform.name] = uniform.type;
@@ -85,7 +44,7 @@ void observed_stage(ShaderStage stage, const GlslangReflection& text, Facts& fac
     for (const GlslangObject& input : text.inputs) {
       if (input.name.starts_with("gl_")) continue;  // built-ins: nothing to bind
       facts["vert input " + input.name] = input_text(
-          input.location, input.components,
+          index_or_none(input.location), static_cast<std::uint32_t>(input.components),
           input.type.starts_with("vec") || input.type == "float" ? "GL_FLOAT" : input.type);
     }
   } else {
@@ -112,8 +71,8 @@ Status prove_glslang_essl(const Library& library, const LibraryVariant& variant,
     }
     observed_stage(stage, *parsed, observed);
   }
-  return compare_facts(variant, pass, target, "glslang (ESSL 3.00)", reflected(*reflection),
-                       observed);
+  return compare_facts(variant, pass, target, "glslang (ESSL 3.00)",
+                       reflected_facts(*reflection, kStyle), observed);
 }
 
 }  // namespace penumbra::testing

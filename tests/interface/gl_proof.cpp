@@ -25,51 +25,8 @@
 namespace penumbra::testing {
 namespace {
 
-std::string unit_text(std::optional<std::uint32_t> binding) {
-  return "binding " + std::to_string(binding.value_or(0));
-}
-
-std::string texture_text(std::string_view type, bool comparison) {
-  return std::string(type) + (comparison ? ", comparison" : ", no comparison");
-}
-
-std::string input_text(std::uint32_t location, std::uint32_t components, std::string_view format) {
-  return "location " + std::to_string(location) + ", " + std::to_string(components) +
-         " components, " + std::string(format);
-}
-
-void reflected_stage(std::string_view stage, const StageBindings& bindings, Facts& facts) {
-  for (const BlockBinding& block : bindings.blocks) {
-    const std::string key = std::string(stage) + " block " + block.name;
-    facts[key] = unit_text(block.binding) + ", " + std::to_string(block.size) + " bytes";
-    for (const ConstantBinding& member : block.members) {
-      facts[key + " member " + member.name] =
-          member.type + " at " + (member.offset ? std::to_string(*member.offset) : "-");
-    }
-  }
-  for (const ConstantBinding& uniform : bindings.uniforms) {
-    facts[std::string(stage) + " uniform " + uniform.name] = uniform.type;
-  }
-  for (const TextureBinding& texture : bindings.textures) {
-    facts[std::string(stage) + " texture " + texture.name] =
-        unit_text(texture.binding) + ", " +
-        texture_text(texture.type, texture.sampler.state.comparison);
-  }
-}
-
-Facts reflected(const PassReflection& pass) {
-  Facts facts;
-  reflected_stage("vert", pass.vert, facts);
-  reflected_stage("frag", pass.frag, facts);
-  for (const VertexAttribute& input : pass.vertex_inputs) {
-    facts["vert input " + input.name] =
-        input_text(input.location.value_or(~0u), input.components, input.format);
-  }
-  for (const RenderTarget& target : pass.render_targets) {
-    facts["frag output " + target.name] = "location " + std::to_string(target.index);
-  }
-  return facts;
-}
+// GL reports binding 0 where the text gives none.
+constexpr FactStyle kStyle{.with_set = false, .member_sizes = false, .unset_binding = 0u};
 
 std::string gl_type(GLenum type) {
   switch (type) {
@@ -153,7 +110,8 @@ void report_uniforms(GLuint program, Facts& facts) {
       const auto index = static_cast<GLuint>(block);
       for (std::string_view stage : referencing_stages(program, GL_UNIFORM_BLOCK, index)) {
         facts[std::string(stage) + " block " + resource_name(program, GL_UNIFORM_BLOCK, index) +
-              " member " + name] = gl_type(type) + " at " + std::to_string(offset);
+              " member " + name] =
+            member_text(kStyle, gl_type(type), static_cast<std::uint32_t>(offset), 0);
       }
       continue;
     }
@@ -163,7 +121,7 @@ void report_uniforms(GLuint program, Facts& facts) {
     for (std::string_view stage : referencing_stages(program, GL_UNIFORM, i)) {
       if (sampler) {
         facts[std::string(stage) + " texture " + name] =
-            "binding " + std::to_string(unit) + ", " +
+            slot_text(kStyle, std::nullopt, static_cast<std::uint32_t>(unit)) + ", " +
             texture_text(gl_type(type), type == GL_SAMPLER_2D_SHADOW);
       } else {
         facts[std::string(stage) + " uniform " + name] = gl_type(type);
@@ -184,7 +142,8 @@ void report_blocks(GLuint program, Facts& facts) {
     glGetActiveUniformBlockiv(program, i, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
     for (std::string_view stage : referencing_stages(program, GL_UNIFORM_BLOCK, i)) {
       facts[std::string(stage) + " block " + name] =
-          "binding " + std::to_string(binding) + ", " + std::to_string(size) + " bytes";
+          slot_text(kStyle, std::nullopt, static_cast<std::uint32_t>(binding)) + ", " +
+          std::to_string(size) + " bytes";
     }
   }
 }
@@ -258,9 +217,10 @@ Status prove_mesa_gl(const Library& library, const LibraryVariant& variant, Pass
   const GlApi api = target == Target::essl300 ? GlApi::es : GlApi::desktop;
   auto reported = driver_facts(api, vert, frag);
   if (!reported) return proof_error(variant, pass, target, reported.error().to_string());
-  const Facts expected = reflected(*reflection);
+  const Facts expected = reflected_facts(*reflection, kStyle);
   return compare_facts(variant, pass, target,
-                       api == GlApi::es ? "Mesa's OpenGL ES" : "Mesa's OpenGL", expected, *reported);
+                       api == GlApi::es ? "Mesa's OpenGL ES" : "Mesa's OpenGL", expected,
+                       *reported);
 }
 
 }  // namespace penumbra::testing

@@ -11,7 +11,66 @@ std::string site(const LibraryVariant& variant, PassKind pass, Target target) {
          std::string(to_string(target));
 }
 
+void reflected_stage(std::string_view stage, const StageBindings& bindings, const FactStyle& style,
+                     Facts& facts) {
+  for (const BlockBinding& block : bindings.blocks) {
+    const std::string key = std::string(stage) + " block " + block.name;
+    facts[key] =
+        slot_text(style, block.set, block.binding) + ", " + std::to_string(block.size) + " bytes";
+    for (const ConstantBinding& member : block.members) {
+      facts[key + " member " + member.name] =
+          member_text(style, member.type, member.offset, member.size);
+    }
+  }
+  for (const ConstantBinding& uniform : bindings.uniforms) {
+    facts[std::string(stage) + " uniform " + uniform.name] = uniform.type;
+  }
+  for (const TextureBinding& texture : bindings.textures) {
+    facts[std::string(stage) + " texture " + texture.name] =
+        slot_text(style, texture.set, texture.binding) + ", " +
+        texture_text(texture.type, texture.sampler.state.comparison);
+  }
+}
+
 }  // namespace
+
+std::string slot_text(const FactStyle& style, std::optional<std::uint32_t> set,
+                      std::optional<std::uint32_t> binding) {
+  if (!binding) binding = style.unset_binding;
+  const std::string text = "binding " + (binding ? std::to_string(*binding) : "-");
+  if (!style.with_set) return text;
+  return "set " + (set ? std::to_string(*set) : "-") + ", " + text;
+}
+
+std::string texture_text(std::string_view type, bool comparison) {
+  return std::string(type) + (comparison ? ", comparison" : ", no comparison");
+}
+
+std::string member_text(const FactStyle& style, std::string_view type,
+                        std::optional<std::uint32_t> offset, std::uint32_t size) {
+  std::string text = std::string(type) + " at " + (offset ? std::to_string(*offset) : "-");
+  if (style.member_sizes) text += ", " + std::to_string(size) + " bytes";
+  return text;
+}
+
+std::string input_text(std::optional<std::uint32_t> location, std::uint32_t components,
+                       std::string_view format) {
+  return "location " + (location ? std::to_string(*location) : "-") + ", " +
+         std::to_string(components) + " components, " + std::string(format);
+}
+
+Facts reflected_facts(const PassReflection& pass, const FactStyle& style) {
+  Facts facts;
+  reflected_stage("vert", pass.vert, style, facts);
+  reflected_stage("frag", pass.frag, style, facts);
+  for (const VertexAttribute& input : pass.vertex_inputs) {
+    facts["vert input " + input.name] = input_text(input.location, input.components, input.format);
+  }
+  for (const RenderTarget& target : pass.render_targets) {
+    facts["frag output " + target.name] = "location " + std::to_string(target.index);
+  }
+  return facts;
+}
 
 Error proof_error(const LibraryVariant& variant, PassKind pass, Target target,
                   std::string message) {

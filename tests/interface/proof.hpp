@@ -11,8 +11,11 @@
 // compare_facts(): every difference is one line of the error.
 #pragma once
 
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "penumbra/compiler/library.hpp"
 
@@ -21,6 +24,32 @@ namespace penumbra::testing {
 // Entry ("frag uniform params.light", prefixed by stage_key()) -> what the
 // side says of it.
 using Facts = std::map<std::string, std::string>;
+
+// How a parser states bindings and members, so that the reflection is
+// written the way that parser writes what it sees.
+struct FactStyle {
+  bool with_set = false;      // SPIR-V: "set S, binding B"
+  bool member_sizes = false;  // SPIR-V: a member's byte size after its offset
+  // What the parser reports where the text gives no binding: OpenGL's
+  // glGetUniformiv and GL_UNIFORM_BLOCK_BINDING say 0; else "-".
+  std::optional<std::uint32_t> unset_binding;
+};
+
+// "set 0, binding 2", "binding 2" or "binding -".
+std::string slot_text(const FactStyle& style, std::optional<std::uint32_t> set,
+                      std::optional<std::uint32_t> binding);
+// "sampler2DShadow, comparison".
+std::string texture_text(std::string_view type, bool comparison);
+// "vec4 at 16" (with sizes: "vec4 at 16, 16 bytes").
+std::string member_text(const FactStyle& style, std::string_view type,
+                        std::optional<std::uint32_t> offset, std::uint32_t size);
+// "location 0, 2 components, GL_FLOAT".
+std::string input_text(std::optional<std::uint32_t> location, std::uint32_t components,
+                       std::string_view format);
+
+// The reflection of a GLSL-family or SPIR-V target (blocks, uniforms,
+// textures, vertex inputs and fragment outputs) written in `style`.
+Facts reflected_facts(const PassReflection& pass, const FactStyle& style);
 
 // Ok when `reflected` and `observed` are equal; else an error at
 // "<variant>, <pass> pass, <target>" listing each entry that differs, is

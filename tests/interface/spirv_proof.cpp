@@ -13,58 +13,12 @@
 namespace penumbra::testing {
 namespace {
 
-std::string binding_text(std::optional<std::uint32_t> set, std::optional<std::uint32_t> binding) {
-  return "set " + (set ? std::to_string(*set) : "-") + ", binding " +
-         (binding ? std::to_string(*binding) : "-");
-}
-
-std::string texture_text(std::string_view type, bool comparison) {
-  return std::string(type) + (comparison ? ", comparison" : ", no comparison");
-}
+// SPIRV-Cross states sets and member sizes too.
+constexpr FactStyle kStyle{.with_set = true, .member_sizes = true, .unset_binding = {}};
 
 constexpr std::string_view kVulkanFloats[] = {"VK_FORMAT_R32_SFLOAT", "VK_FORMAT_R32G32_SFLOAT",
                                               "VK_FORMAT_R32G32B32_SFLOAT",
                                               "VK_FORMAT_R32G32B32A32_SFLOAT"};
-
-std::string input_text(std::uint32_t location, std::uint32_t components, std::string_view format) {
-  return "location " + std::to_string(location) + ", " + std::to_string(components) +
-         " components, " + std::string(format);
-}
-
-void reflected_stage(std::string_view stage, const StageBindings& bindings, Facts& facts) {
-  for (const BlockBinding& block : bindings.blocks) {
-    const std::string key = std::string(stage) + " block " + block.name;
-    facts[key] =
-        binding_text(block.set, block.binding) + ", " + std::to_string(block.size) + " bytes";
-    for (const ConstantBinding& member : block.members) {
-      facts[key + " member " + member.name] =
-          member.type + " at " + (member.offset ? std::to_string(*member.offset) : "-") + ", " +
-          std::to_string(member.size) + " bytes";
-    }
-  }
-  for (const ConstantBinding& uniform : bindings.uniforms) {
-    facts[std::string(stage) + " uniform " + uniform.name] = uniform.type;
-  }
-  for (const TextureBinding& texture : bindings.textures) {
-    facts[std::string(stage) + " texture " + texture.name] =
-        binding_text(texture.set, texture.binding) + ", " +
-        texture_text(texture.type, texture.sampler.state.comparison);
-  }
-}
-
-Facts reflected(const PassReflection& pass) {
-  Facts facts;
-  reflected_stage("vert", pass.vert, facts);
-  reflected_stage("frag", pass.frag, facts);
-  for (const VertexAttribute& input : pass.vertex_inputs) {
-    facts["vert input " + input.name] =
-        input_text(input.location.value_or(~0u), input.components, input.format);
-  }
-  for (const RenderTarget& target : pass.render_targets) {
-    facts["frag output " + target.name] = "location " + std::to_string(target.index);
-  }
-  return facts;
-}
 
 // "vec4" for a float vector, else SPIRV-Cross's base type number.
 std::string value_type(const spirv_cross::SPIRType& type) {
@@ -80,8 +34,8 @@ void observed_stage(std::string_view stage, const std::string& bytes, Facts& fac
   const spirv_cross::Compiler module(std::move(words));
   const spirv_cross::ShaderResources resources = module.get_shader_resources();
   auto binding = [&](spirv_cross::ID id) {
-    return binding_text(module.get_decoration(id, spv::DecorationDescriptorSet),
-                        module.get_decoration(id, spv::DecorationBinding));
+    return slot_text(kStyle, module.get_decoration(id, spv::DecorationDescriptorSet),
+                     module.get_decoration(id, spv::DecorationBinding));
   };
   for (const spirv_cross::Resource& block : resources.uniform_buffers) {
     const spirv_cross::SPIRType& type = module.get_type(block.base_type_id);
@@ -91,9 +45,9 @@ void observed_stage(std::string_view stage, const std::string& bytes, Facts& fac
         binding(block.id) + ", " + std::to_string(module.get_declared_struct_size(type)) + " bytes";
     for (std::uint32_t i = 0; i < type.member_types.size(); ++i) {
       facts[key + " member " + module.get_member_name(block.base_type_id, i)] =
-          value_type(module.get_type(type.member_types[i])) + " at " +
-          std::to_string(module.type_struct_member_offset(type, i)) + ", " +
-          std::to_string(module.get_declared_struct_member_size(type, i)) + " bytes";
+          member_text(kStyle, value_type(module.get_type(type.member_types[i])),
+                      module.type_struct_member_offset(type, i),
+                      static_cast<std::uint32_t>(module.get_declared_struct_member_size(type, i)));
     }
   }
   for (const spirv_cross::Resource& image : resources.sampled_images) {
@@ -142,7 +96,8 @@ Status prove_spirv(const Library& library, const LibraryVariant& variant, PassKi
                              " module: " + error.what());
     }
   }
-  return compare_facts(variant, pass, target, "SPIRV-Cross", reflected(*reflection), observed);
+  return compare_facts(variant, pass, target, "SPIRV-Cross", reflected_facts(*reflection, kStyle),
+                       observed);
 }
 
 }  // namespace penumbra::testing
