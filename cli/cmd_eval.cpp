@@ -7,8 +7,8 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "penumbra/runtime/eval.hpp"
 #include "penumbra/support/pfm.hpp"
+#include "penumbra/verify/eval.hpp"
 
 namespace penumbra::cli {
 namespace {

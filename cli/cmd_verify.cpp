@@ -2,8 +2,8 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "penumbra/runtime/verify.hpp"
 #include "penumbra/support/atomic_file.hpp"
+#include "penumbra/verify/verify.hpp"
 
 namespace penumbra::cli {
 namespace {

@@ -5,7 +5,7 @@ if(PENUMBRA_BUILD_GL)
   list(APPEND _targets penumbra_gl)
 endif()
 if(PENUMBRA_BUILD_RUNTIME)
-  list(APPEND _targets penumbra_runtime)
+  list(APPEND _targets penumbra_vulkan penumbra_verify)
 endif()
 install(TARGETS ${_targets} EXPORT penumbraTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -13,10 +13,11 @@ install(TARGETS ${_targets} EXPORT penumbraTargets
 install(TARGETS penumbra_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY support/include/ model/include/ compiler/include/ reference/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 if(PENUMBRA_BUILD_RUNTIME)
-  install(DIRECTORY runtime/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(DIRECTORY engines/vulkan/include/ verify/include/
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 if(PENUMBRA_BUILD_GL)
-  install(DIRECTORY gl/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(DIRECTORY engines/gl/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 install(EXPORT penumbraTargets NAMESPACE penumbra::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/penumbra)

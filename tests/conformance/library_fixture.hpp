@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "penumbra/compiler/library.hpp"
-#include "penumbra/runtime/engine.hpp"
+#include "penumbra/vulkan/engine.hpp"
 
 namespace penumbra::testing {
 

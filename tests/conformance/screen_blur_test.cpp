@@ -15,7 +15,8 @@
 
 #include "library_fixture.hpp"
 #include "penumbra/reference/scene.hpp"
-#include "penumbra/runtime/library_programs.hpp"
+#include "penumbra/verify/shadow_params.hpp"
+#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra::testing {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "library_fixture.hpp"
 #include "penumbra/reference/scene.hpp"
-#include "penumbra/runtime/verify.hpp"
+#include "penumbra/verify/verify.hpp"
 
 namespace penumbra::testing {
 namespace {

@@ -10,7 +10,8 @@
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
-#include "penumbra/runtime/library_programs.hpp"
+#include "penumbra/verify/shadow_params.hpp"
+#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra::testing {
 namespace {

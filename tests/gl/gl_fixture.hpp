@@ -9,9 +9,9 @@
 
 #include "penumbra/gl/engine.hpp"
 #include "penumbra/model/model.hpp"
+#include "penumbra/model/pass.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "penumbra/reference/scene.hpp"
-#include "penumbra/runtime/program.hpp"
 
 namespace penumbra {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "penumbra/reference/scene.hpp"
-#include "penumbra/runtime/library_programs.hpp"
+#include "penumbra/verify/shadow_params.hpp"
 
 namespace penumbra::testing {
 

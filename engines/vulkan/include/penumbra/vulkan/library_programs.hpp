@@ -1,0 +1,46 @@
+// Loading a built library's passes as runnable programs.
+#pragma once
+
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/vulkan/engine.hpp"
+#include "penumbra/vulkan/program.hpp"
+
+namespace penumbra {
+
+// How a target's files reached the device: recorded in verify.json.
+struct Execution {
+  std::string front_end;           // "SPIR-V as built", or the front end that compiled the text
+  std::vector<std::string> shims;  // text rewrites the front end needed (docs/frontends.md)
+};
+
+struct ExecutableProgram {
+  PassProgram program;
+  Execution execution;
+};
+
+// The pass of `variant` for `target`, ready to run: the built .spv for
+// spirv; for every other target its emitted text compiled by glslang's GLSL
+// or HLSL front end. Reflected either way, so the engine binds by name.
+Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
+                                          PassKind pass, Target target);
+
+// A screen_blur variant's four passes for `target` (Engine::run_screen_blur).
+struct ScreenBlurExecutables {
+  ExecutableProgram query;
+  ExecutableProgram blur_h;
+  ExecutableProgram blur_v;
+  ExecutableProgram composite;
+
+  ScreenBlurPrograms programs() const {
+    return {query.program, blur_h.program, blur_v.program, composite.program};
+  }
+};
+
+Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
+                                               const LibraryVariant& variant, Target target);
+
+// The emitted text (or .spv bytes) of one stage of a pass.
+Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
+                                   PassKind pass, Target target, ShaderStage stage);
+
+}  // namespace penumbra

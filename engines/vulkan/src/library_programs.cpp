@@ -1,0 +1,120 @@
+#include "penumbra/vulkan/library_programs.hpp"
+
+#include <algorithm>
+
+#include "penumbra/compiler/targets.hpp"
+#include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/support/file.hpp"
+
+namespace penumbra {
+namespace {
+
+Result<StageCode> reflected(std::vector<std::uint32_t> spirv, const std::string& name) {
+  auto iface = reflect(spirv);
+  if (!iface) return make_error(Error::Kind::compile, name, iface.error().message);
+  return StageCode{std::move(spirv), std::move(*iface)};
+}
+
+Result<const PassFiles*> pass_files(const LibraryVariant& variant, PassKind pass, Target target) {
+  const auto by_pass = variant.passes.find(pass);
+  if (by_pass == variant.passes.end() || !by_pass->second.contains(target)) {
+    return make_error(Error::Kind::bad_input, variant.variant.name,
+                      "the library has no " + std::string(to_string(pass)) + " pass for target " +
+                          std::string(to_string(target)));
+  }
+  return &by_pass->second.at(target);
+}
+
+// Where one stage of a pass lives in the library.
+Result<std::filesystem::path> stage_path(const Library& library, const LibraryVariant& variant,
+                                         PassKind pass, Target target, ShaderStage stage) {
+  auto files = pass_files(variant, pass, target);
+  if (!files) return files.error();
+  return library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
+}
+
+// Compiles one stage's emitted text with the target's front end.
+Result<StageCode> text_stage(const Library& library, const LibraryVariant& variant, PassKind pass,
+                             Target target, ShaderStage stage, Execution& execution) {
+  auto path = stage_path(library, variant, pass, target, stage);
+  if (!path) return path.error();
+  auto text = read_file(*path);
+  if (!text) return text.error();
+  auto compiled = compile_target_text(target, stage, *text, path->string());
+  if (!compiled) return compiled.error();
+  execution.front_end = compiled->front_end;
+  for (const std::string& shim : compiled->shims) {
+    if (std::find(execution.shims.begin(), execution.shims.end(), shim) == execution.shims.end()) {
+      execution.shims.push_back(shim);
+    }
+  }
+  return reflected(std::move(compiled->spirv), path->string());
+}
+
+// index.json's reflection.<pass>.<target>: what the engine binds.
+Result<PassReflection> pass_reflection(const LibraryVariant& variant, PassKind pass,
+                                       Target target) {
+  const auto by_pass = variant.reflection.find(pass);
+  if (by_pass == variant.reflection.end() || !by_pass->second.contains(target)) {
+    return make_error(Error::Kind::bad_input, variant.variant.name,
+                      "index.json has no reflection." + std::string(to_string(pass)) + "." +
+                          std::string(to_string(target)) + " to bind the pass by");
+  }
+  return by_pass->second.at(target);
+}
+
+}  // namespace
+
+Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
+                                   PassKind pass, Target target, ShaderStage stage) {
+  auto path = stage_path(library, variant, pass, target, stage);
+  if (!path) return path.error();
+  return read_file(*path);
+}
+
+Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
+                                          PassKind pass, Target target) {
+  ExecutableProgram out;
+  out.program.target = target;
+  PENUMBRA_TRY_ASSIGN(out.program.reflection, pass_reflection(variant, pass, target));
+  if (target == Target::spirv) {
+    for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
+      auto path = stage_path(library, variant, pass, target, stage);
+      if (!path) return path.error();
+      auto words = read_spirv_file(*path);
+      if (!words) return words.error();
+      auto code = reflected(std::move(*words), path->string());
+      if (!code) return code.error();
+      (stage == ShaderStage::vertex ? out.program.vert : out.program.frag) = std::move(*code);
+    }
+    out.execution.front_end = "SPIR-V as built";
+    return out;
+  }
+  auto vert = text_stage(library, variant, pass, target, ShaderStage::vertex, out.execution);
+  if (!vert) return vert.error();
+  auto frag = text_stage(library, variant, pass, target, ShaderStage::fragment, out.execution);
+  if (!frag) return frag.error();
+  out.program.vert = std::move(*vert);
+  out.program.frag = std::move(*frag);
+  // HLSL flips clip-space y for Direct3D's viewport; GLSL writes OpenGL's
+  // clip z in [-w, w]. The engine reproduces each API's convention.
+  out.program.d3d_viewport = traits(target).is_hlsl;
+  out.program.gl_clip_depth = !traits(target).is_hlsl;
+  return out;
+}
+
+Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
+                                               const LibraryVariant& variant, Target target) {
+  auto query = load_executable(library, variant, PassKind::query, target);
+  if (!query) return query.error();
+  auto blur_h = load_executable(library, variant, PassKind::blur_h, target);
+  if (!blur_h) return blur_h.error();
+  auto blur_v = load_executable(library, variant, PassKind::blur_v, target);
+  if (!blur_v) return blur_v.error();
+  auto composite = load_executable(library, variant, PassKind::composite, target);
+  if (!composite) return composite.error();
+  return ScreenBlurExecutables{std::move(*query), std::move(*blur_h), std::move(*blur_v),
+                               std::move(*composite)};
+}
+
+}  // namespace penumbra

@@ -1,0 +1,53 @@
+#include "penumbra/vulkan/shadow_map.hpp"
+
+#include <optional>
+#include <utility>
+
+#include "formats.hpp"
+#include "shadow_map_images.hpp"
+
+namespace penumbra {
+namespace detail {
+
+Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context& context, int width,
+                                                                  int height) {
+  PENUMBRA_TRY(context.check_extent(width, height, "shadow map"));
+  const auto w = static_cast<std::uint32_t>(width);
+  const auto h = static_cast<std::uint32_t>(height);
+  const vk::ImageDesc depth_desc{w, h, kMapDepthFormat,
+                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                 VK_IMAGE_ASPECT_DEPTH_BIT};
+  auto depth = vk::Image::create(*context.device, depth_desc, "the shadow map's depth image");
+  if (!depth) return depth.error();
+  const vk::ImageDesc colour_desc{w, h, kMapColourFormat,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT};
+  auto colour = vk::Image::create(*context.device, colour_desc, "the shadow map's colour image");
+  if (!colour) return colour.error();
+  return std::unique_ptr<ShadowMapImages>(
+      new ShadowMapImages{context.device, std::move(*depth), std::move(*colour), std::nullopt});
+}
+
+}  // namespace detail
+
+ShadowMap::ShadowMap(std::unique_ptr<detail::ShadowMapImages> images)
+    : images_(std::move(images)) {}
+
+ShadowMap::~ShadowMap() = default;
+
+int ShadowMap::width() const {
+  return static_cast<int>(images_->colour.desc().width);
+}
+
+int ShadowMap::height() const {
+  return static_cast<int>(images_->colour.desc().height);
+}
+
+int ShadowMap::minmax_levels() const {
+  return images_->minmax ? static_cast<int>(images_->minmax->sizes.size()) : 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,33 @@
+// `penumbra eval`: one variant's pass for one target over given inputs, on
+// the device or with the CPU reference.
+#pragma once
+
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/reference/light.hpp"
+#include "penumbra/vulkan/engine.hpp"
+
+namespace penumbra {
+
+struct EvalInputs {
+  FloatImage shadow_map;         // Pf: linear light-view z, W x H
+  FloatImage receivers;          // PF: (u, v, z_r) per pixel
+  reference::LightParams light;  // light size, frustum width, near plane, bias, filter radius
+};
+
+// Checks the images (channels, sizes, finite values); errors name the input.
+Status check_eval_inputs(const EvalInputs& inputs);
+
+// The visibility image (Pf, the receivers' size) from the device, with the
+// texel reads the pass counted and its GPU time (Engine::run_query_output).
+// A technique that reads the min-max mip gets it built first by the target's
+// own minmax_init and minmax_reduce passes. For screen_blur (the receivers
+// image is the screen) the visibility is the blurred factor from the chain
+// (Engine::run_screen_blur) and the texel reads the factor pass's...
+Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
+                                   Target target, const EvalInputs& inputs, Engine& engine);
+
+// ...or from the CPU reference (for screen_blur, reference::screen_blur of
+// the reference factor).
+Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs);
+
+}  // namespace penumbra

@@ -1,0 +1,110 @@
+// `penumbra verify`: every variant of a built library, each target's own
+// shaders executed on a device over the project's test scenes and checked
+// against the CPU reference.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string_view>
+
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/reference/compare.hpp"
+#include "penumbra/vulkan/engine.hpp"
+#include "penumbra/vulkan/library_programs.hpp"
+
+namespace penumbra {
+
+struct VerifyOptions {
+  std::vector<std::string> variants;  // only these (by name); empty = all
+  std::vector<Target> targets;        // only these; empty = all the library has
+  bool gl = true;  // also run glsl330/glsl450 through the OpenGL driver when built with GL
+};
+
+// A GPU image against the CPU's next step of screen_blur's chain run on the
+// GPU's own previous image: every channel of every pixel, no ambiguity mask.
+struct ChainCheck {
+  std::size_t values = 0;          // pixels x channels compared
+  std::size_t over_tolerance = 0;  // values with |gpu - cpu| > tolerance (or NaN)
+  double max_abs_error = 0.0;      // infinity for a NaN
+  double tolerance = 0.0;
+  bool pass = false;  // values > 0 and over_tolerance == 0
+};
+
+// One variant on one scene.
+struct SceneRun {
+  std::string scene;
+  // The query's visibility against the reference (screen_blur: the
+  // unblurred shadow factor against the reference factor).
+  reference::Comparison comparison;
+  double mean_texel_reads = 0.0;  // the query's .y over all pixels (QueryOutput::texel_reads)
+  // screen_blur only: the blurred factor against reference::screen_blur of
+  // the GPU's factor (reference::kBlurTolerance), and the composite against
+  // reference::composite of reference::scene_colour and the GPU's blurred
+  // factor (reference::kCompositeTolerance).
+  std::optional<ChainCheck> blur;
+  std::optional<ChainCheck> composite;
+
+  bool pass() const;  // every check above passed
+};
+
+// One variant, one target, one backend ("vulkan" or "gl").
+struct TargetRun {
+  Target target = Target::spirv;
+  std::string backend = "vulkan";
+  std::string device;   // the device or driver that ran it
+  Execution execution;  // front end and shims
+  bool executed = false;
+  std::string not_executed;  // why, when not executed
+  std::string error;         // why it failed before any comparison (front end, device)
+  bool pass = false;         // executed and every scene passed
+  std::vector<SceneRun> scenes;
+};
+
+struct VariantRun {
+  std::string name;
+  Technique technique = Technique::hard;
+  std::vector<TargetRun> runs;
+};
+
+// A target's depth pass checked against a CPU ray cast of the scene.
+struct DepthCheck {
+  std::string scene;
+  Target target = Target::spirv;
+  std::size_t texels = 0;      // texels away from occluder edges
+  std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
+  double max_abs_error = 0.0;
+  bool pass = false;
+};
+
+// A target's min-max mip, built by its own minmax_init and minmax_reduce
+// passes on the map its depth pass rendered, against the CPU mip of that map.
+struct MinmaxCheck {
+  std::string scene;
+  Target target = Target::spirv;
+  int levels = 0;           // levels the device built
+  int expected_levels = 0;  // N of the CPU mip
+  std::size_t texels = 0;   // nodes compared, every level
+  // Of those, min or max not the same float (or a level's size differs).
+  std::size_t mismatched = 0;
+  std::string error;  // why the mip could not be built or read
+  bool pass = false;
+};
+
+struct VerifyReport {
+  DeviceInfo device;
+  std::string gl_device;  // empty when the GL path did not run
+  std::vector<DepthCheck> depth_checks;
+  std::vector<MinmaxCheck> minmax_checks;  // for targets that ran a variant using the mip
+  std::vector<VariantRun> variants;
+  std::size_t runs = 0;    // executed (variant, target, backend, scene) runs
+  std::size_t failed = 0;  // of those, failed
+  bool pass() const;
+};
+
+Result<VerifyReport> verify_library(const Library& library, Engine& engine,
+                                    const VerifyOptions& options,
+                                    const DiagnosticConsumer& diagnostics);
+
+nlohmann::json to_json(const VerifyReport& report, const Library& library);
+
+}  // namespace penumbra

@@ -1,0 +1,70 @@
+// One execution path of verify: an engine that runs a variant's passes for
+// a target on the prepared scenes. verify_library() checks what every
+// backend returns against the CPU reference, the same way for each; adding
+// a path is one new backend file and one line in verify_library.cpp.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/support/image.hpp"
+#include "penumbra/support/result.hpp"
+#include "penumbra/vulkan/engine.hpp"
+#include "penumbra/vulkan/library_programs.hpp"
+#include "scene_fixture.hpp"
+
+namespace penumbra {
+
+// screen_blur's images after the factor, each the receivers' size.
+struct ChainOutput {
+  FloatImage blurred;    // blur_v's .x, one channel: the blurred factor
+  FloatImage composite;  // the composite pass's RGBA over the fixture's colour
+};
+
+// What a variant's passes wrote on one scene.
+struct SceneOutput {
+  FloatImage visibility;             // the query's .x (screen_blur: the unblurred factor)
+  FloatImage texel_reads;            // the query's .y (docs/shader-interface.md)
+  std::optional<ChainOutput> chain;  // screen_blur only
+};
+
+// A variant's passes for one target, loaded by a backend.
+struct LoadedPasses {
+  Execution execution;  // how the target's files reach the device (verify.json)
+  // The passes on one scene of the target: a failed run when it errs.
+  std::function<Result<SceneOutput>(const SceneFixture&)> run;
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+
+  // TargetRun::backend in verify.json: "vulkan", "gl".
+  virtual std::string name() const = 0;
+  // The device or driver that runs the passes; empty when missing().
+  virtual std::string device() const = 0;
+  // Why this path cannot run here (no driver, not built, not requested);
+  // empty when it can. Its runs are then reported not executed, with this.
+  virtual std::string missing() const = 0;
+  // Whether this path runs `target`'s files (others are no text of its API).
+  virtual bool executes(Target target) const = 0;
+  // `entry`'s passes for `target` (its query and the passes the query needs,
+  // or screen_blur's chain), ready to run on each of `scenes`. An error
+  // (a file, a front end, a mip the scenes lack) fails the run.
+  virtual Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry,
+                                    Target target, const TargetScenes& scenes) = 0;
+};
+
+// Every target on the Vulkan engine, on the maps (and min-max mips) the
+// scenes hold (vulkan_backend.cpp).
+std::unique_ptr<Backend> vulkan_backend(Engine& engine);
+
+// glsl330 and glsl450 through the OpenGL driver (penumbra::gl), on the
+// scenes' normalized depth (gl_backend.cpp). `device` selects the GL device
+// like GlEngineOptions; `requested` false reports every run not executed.
+std::unique_ptr<Backend> gl_backend(bool requested, const std::string& device);
+
+}  // namespace penumbra

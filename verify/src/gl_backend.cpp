@@ -1,0 +1,192 @@
+// verify's OpenGL path: glsl330 and glsl450 text compiled by the GL driver
+// (Mesa llvmpipe over EGL) instead of glslang, bound by each pass's
+// reflection in index.json as a GL engine binds it, on the scenes'
+// normalized depth (the GL engine builds the min-max mip with the target's
+// own passes when the query reads it). Present when the project is built
+// with PENUMBRA_BUILD_GL; otherwise every run says why not.
+#include <memory>
+
+#include "backend.hpp"
+
+#ifdef PENUMBRA_HAS_GL
+#include "penumbra/gl/engine.hpp"
+#endif
+
+namespace penumbra {
+namespace {
+
+bool glsl(Target target) {
+  return target == Target::glsl330 || target == Target::glsl450;
+}
+
+// The GL path where it cannot run: every run on its targets says why.
+class MissingGlBackend final : public Backend {
+ public:
+  explicit MissingGlBackend(std::string why) : why_(std::move(why)) {}
+
+  std::string name() const override { return "gl"; }
+  std::string device() const override { return {}; }
+  std::string missing() const override { return why_; }
+  bool executes(Target target) const override { return glsl(target); }
+  Result<LoadedPasses> load(const Library& /*library*/, const LibraryVariant& entry,
+                            Target /*target*/, const TargetScenes& /*scenes*/) override {
+    return make_error(Error::Kind::device, entry.variant.name, why_);
+  }
+
+ private:
+  std::string why_;
+};
+
+#ifdef PENUMBRA_HAS_GL
+
+// One pass of a library for one target: its emitted texts and reflection.
+struct GlPassTexts {
+  std::string vert;
+  std::string frag;
+  PassReflection reflection;  // index.json's reflection.<pass>.<target>
+};
+
+// The passes that build the min-max mip.
+struct GlMinmaxTexts {
+  GlPassTexts init;    // minmax_init
+  GlPassTexts reduce;  // minmax_reduce
+};
+
+struct GlQueryTexts {
+  GlPassTexts query;
+  // Present when the query reads shadow_minmax.
+  std::optional<GlMinmaxTexts> minmax;
+};
+
+// screen_blur's chain.
+struct GlScreenBlurTexts {
+  GlPassTexts query;
+  GlPassTexts blur_h;
+  GlPassTexts blur_v;
+  GlPassTexts composite;
+};
+
+Result<GlPassTexts> read_pass(const Library& library, const LibraryVariant& entry, PassKind pass,
+                              Target target) {
+  const auto by_pass = entry.reflection.find(pass);
+  if (by_pass == entry.reflection.end() || !by_pass->second.contains(target)) {
+    return make_error(Error::Kind::bad_input, entry.variant.name,
+                      "index.json has no reflection." + std::string(to_string(pass)) + "." +
+                          std::string(to_string(target)) + " to bind the pass by");
+  }
+  auto vert = read_pass_file(library, entry, pass, target, ShaderStage::vertex);
+  if (!vert) return vert.error();
+  auto frag = read_pass_file(library, entry, pass, target, ShaderStage::fragment);
+  if (!frag) return frag.error();
+  return GlPassTexts{std::move(*vert), std::move(*frag), by_pass->second.at(target)};
+}
+
+// `entry`'s query pass for `target` and, for a technique that reads the
+// min-max mip, the passes that build it. Errors: a file that cannot be read,
+// a pass without a reflection for `target`.
+Result<GlQueryTexts> read_gl_query(const Library& library, const LibraryVariant& entry,
+                                   Target target) {
+  auto query = read_pass(library, entry, PassKind::query, target);
+  if (!query) return query.error();
+  GlQueryTexts texts{std::move(*query), std::nullopt};
+  if (uses_minmax_mip(entry.variant.technique)) {
+    auto init = read_pass(library, entry, PassKind::minmax_init, target);
+    if (!init) return init.error();
+    auto reduce = read_pass(library, entry, PassKind::minmax_reduce, target);
+    if (!reduce) return reduce.error();
+    texts.minmax = GlMinmaxTexts{std::move(*init), std::move(*reduce)};
+  }
+  return texts;
+}
+
+Result<GlScreenBlurTexts> read_gl_screen_blur(const Library& library, const LibraryVariant& entry,
+                                              Target target) {
+  GlScreenBlurTexts texts;
+  for (const auto& [kind, pass] :
+       {std::pair{PassKind::query, &texts.query}, std::pair{PassKind::blur_h, &texts.blur_h},
+        std::pair{PassKind::blur_v, &texts.blur_v},
+        std::pair{PassKind::composite, &texts.composite}}) {
+    auto read = read_pass(library, entry, kind, target);
+    if (!read) return read.error();
+    *pass = std::move(*read);
+  }
+  return texts;
+}
+
+// The engine reads the texts and reflection through references; the
+// caller's outlive the call.
+GlPass pass(const GlPassTexts& texts) {
+  return {texts.vert, texts.frag, texts.reflection};
+}
+
+class GlBackend final : public Backend {
+ public:
+  explicit GlBackend(std::unique_ptr<GlEngine> engine) : engine_(std::move(engine)) {}
+
+  std::string name() const override { return "gl"; }
+  std::string device() const override { return engine_->info().renderer; }
+  std::string missing() const override { return {}; }
+  bool executes(Target target) const override { return glsl(target); }
+
+  Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
+                            const TargetScenes& /*scenes*/) override {
+    if (entry.variant.technique == Technique::screen_blur) {
+      auto chain = read_gl_screen_blur(library, entry, target);
+      if (!chain) return chain.error();
+      return LoadedPasses{execution(), [this, texts = std::make_shared<GlScreenBlurTexts>(
+                                                  std::move(*chain))](const SceneFixture& fixture) {
+                            return run_screen_blur(*texts, fixture);
+                          }};
+    }
+    auto query = read_gl_query(library, entry, target);
+    if (!query) return query.error();
+    return LoadedPasses{execution(),
+                        [this, texts = std::make_shared<GlQueryTexts>(std::move(*query))](
+                            const SceneFixture& fixture) { return run_query(*texts, fixture); }};
+  }
+
+ private:
+  static Execution execution() { return {"the OpenGL driver's GLSL compiler", {}}; }
+
+  // Builds the min-max mip when the query reads it, then runs the query.
+  Result<SceneOutput> run_query(const GlQueryTexts& texts, const SceneFixture& fixture) {
+    std::optional<GlMinmaxPasses> minmax;
+    if (texts.minmax) minmax.emplace(pass(texts.minmax->init), pass(texts.minmax->reduce));
+    auto output = engine_->run_query({pass(texts.query), minmax}, fixture.normalized_depth,
+                                     fixture.receivers, fixture.params);
+    if (!output) return output.error();
+    return SceneOutput{std::move(output->visibility), std::move(output->texel_reads), std::nullopt};
+  }
+
+  Result<SceneOutput> run_screen_blur(const GlScreenBlurTexts& texts, const SceneFixture& fixture) {
+    auto output = engine_->run_screen_blur(
+        {pass(texts.query), pass(texts.blur_h), pass(texts.blur_v), pass(texts.composite)},
+        fixture.normalized_depth, fixture.receivers, fixture.colour, fixture.params);
+    if (!output) return output.error();
+    return SceneOutput{std::move(output->factor), std::move(output->texel_reads),
+                       ChainOutput{std::move(output->blurred), std::move(output->composite)}};
+  }
+
+  std::unique_ptr<GlEngine> engine_;
+};
+
+#endif
+
+}  // namespace
+
+std::unique_ptr<Backend> gl_backend(bool requested, const std::string& device) {
+  if (!requested) return std::make_unique<MissingGlBackend>("not requested (--no-gl)");
+#ifdef PENUMBRA_HAS_GL
+  auto engine = GlEngine::create(GlEngineOptions{.device = device}, ignore_diagnostics());
+  if (!engine) {
+    return std::make_unique<MissingGlBackend>("no OpenGL context: " + engine.error().to_string());
+  }
+  return std::make_unique<GlBackend>(std::move(*engine));
+#else
+  static_cast<void>(device);
+  return std::make_unique<MissingGlBackend>(
+      "built without OpenGL (PENUMBRA_BUILD_GL=OFF or EGL/GL not found at configure time)");
+#endif
+}
+
+}  // namespace penumbra

@@ -1,0 +1,34 @@
+#include "penumbra/verify/shadow_params.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "penumbra/support/minmax_levels.hpp"
+
+namespace penumbra {
+
+float depth_scale_for(double max_z) {
+  const int exponent = max_z > 1.0 ? static_cast<int>(std::ceil(std::log2(max_z))) : 0;
+  return std::ldexp(1.0f, -exponent);
+}
+
+ParamBlock shadow_params(const reference::LightParams& light, const ParamSizes& sizes,
+                         float depth_scale) {
+  const auto f = [](double value) { return static_cast<float>(value); };
+  const std::array<float, 4> map_size = size_vec4(sizes.map_width, sizes.map_height);
+  return {
+      {"shadow_map_size", map_size},
+      {"light",
+       {f(light.light_world_size), f(light.frustum_width), f(light.near_plane),
+        f(light.light_size_uv())}},
+      {"sampling",
+       {f(light.filter_radius(sizes.map_width)), f(light.bias), depth_scale, 1.0f / depth_scale}},
+      {"screen_size", size_vec4(sizes.screen_width, sizes.screen_height)},
+      // The min-max build passes set source_size per level (Engine::build_minmax).
+      {"source_size", map_size},
+      {"minmax_info",
+       {static_cast<float>(minmax_top_level(sizes.map_width, sizes.map_height)), 0.0f, 0.0f, 0.0f}},
+  };
+}
+
+}  // namespace penumbra

@@ -1,0 +1,107 @@
+#include "penumbra/reference/precision.hpp"
+#include "penumbra/verify/verify.hpp"
+
+namespace penumbra {
+namespace {
+
+nlohmann::json depth_json(const DepthCheck& c) {
+  return {{"scene", c.scene},
+          {"target", to_string(c.target)},
+          {"texels_checked", c.texels},
+          {"mismatched", c.mismatched},
+          {"max_abs_error", c.max_abs_error},
+          {"pass", c.pass}};
+}
+
+nlohmann::json minmax_json(const MinmaxCheck& c) {
+  nlohmann::json out = {{"scene", c.scene},
+                        {"target", to_string(c.target)},
+                        {"levels", c.levels},
+                        {"expected_levels", c.expected_levels},
+                        {"texels_checked", c.texels},
+                        {"mismatched", c.mismatched},
+                        {"pass", c.pass}};
+  if (!c.error.empty()) out["error"] = c.error;
+  return out;
+}
+
+nlohmann::json chain_json(const ChainCheck& c) {
+  return {{"values", c.values},
+          {"over_tolerance", c.over_tolerance},
+          {"max_abs_error", c.max_abs_error},
+          {"tolerance", c.tolerance},
+          {"pass", c.pass}};
+}
+
+// A query's comparison at the top level; screen_blur's three checks under
+// factor, blur and composite, with the scene's pass for all three.
+nlohmann::json scene_json(const SceneRun& s) {
+  nlohmann::json entry;
+  if (s.blur && s.composite) {
+    entry["factor"] = s.comparison;
+    entry["blur"] = chain_json(*s.blur);
+    entry["composite"] = chain_json(*s.composite);
+    entry["pass"] = s.pass();
+  } else {
+    entry = s.comparison;
+  }
+  entry["scene"] = s.scene;
+  entry["mean_texel_reads"] = s.mean_texel_reads;
+  return entry;
+}
+
+nlohmann::json run_json(const TargetRun& run) {
+  nlohmann::json out = {
+      {"target", to_string(run.target)}, {"backend", run.backend}, {"executed", run.executed}};
+  if (!run.executed) {
+    out["not_executed"] = run.not_executed;
+    return out;
+  }
+  out["device"] = run.device;
+  out["front_end"] = run.execution.front_end;
+  out["shims"] = run.execution.shims;
+  out["pass"] = run.pass && run.error.empty();
+  if (!run.error.empty()) out["error"] = run.error;
+  nlohmann::json scenes = nlohmann::json::array();
+  for (const SceneRun& s : run.scenes) scenes.push_back(scene_json(s));
+  out["scenes"] = scenes;
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const VerifyReport& report, const Library& library) {
+  const reference::SamplingPrecision precision{
+      static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
+  nlohmann::json tolerances = nlohmann::json::object();
+  for (Technique t : kAllTechniques) {
+    tolerances[std::string(to_string(t))] = reference::tolerance(t, precision);
+  }
+  nlohmann::json out = {{"generator", library.generator},
+                        {"device",
+                         {{"name", report.device.name},
+                          {"driver", report.device.driver},
+                          {"sub_texel_precision_bits", report.device.sub_texel_precision_bits}}},
+                        {"gl_device", report.gl_device},
+                        {"tolerances", tolerances},
+                        {"max_ambiguous_fraction", reference::kMaxAmbiguousFraction},
+                        {"pass", report.pass()},
+                        {"runs", report.runs},
+                        {"failed", report.failed}};
+  nlohmann::json depth = nlohmann::json::array();
+  for (const DepthCheck& c : report.depth_checks) depth.push_back(depth_json(c));
+  out["depth_pass"] = depth;
+  nlohmann::json minmax = nlohmann::json::array();
+  for (const MinmaxCheck& c : report.minmax_checks) minmax.push_back(minmax_json(c));
+  out["minmax_mip"] = minmax;
+  nlohmann::json variants = nlohmann::json::array();
+  for (const VariantRun& v : report.variants) {
+    nlohmann::json runs = nlohmann::json::array();
+    for (const TargetRun& run : v.runs) runs.push_back(run_json(run));
+    variants.push_back({{"name", v.name}, {"technique", to_string(v.technique)}, {"runs", runs}});
+  }
+  out["variants"] = variants;
+  return out;
+}
+
+}  // namespace penumbra

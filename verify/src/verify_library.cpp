@@ -1,0 +1,246 @@
+#include <algorithm>
+#include <map>
+
+#include "backend.hpp"
+#include "chain_check.hpp"
+#include "minmax_check.hpp"
+#include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/screen_blur.hpp"
+#include "penumbra/reference/techniques.hpp"
+#include "penumbra/verify/verify.hpp"
+#include "scene_fixture.hpp"
+
+namespace penumbra {
+namespace {
+
+struct Context {
+  const Library& library;
+  Engine& engine;  // prepares every target's scenes
+  reference::SamplingPrecision precision;
+  // The paths every run goes through, in report order.
+  std::vector<std::unique_ptr<Backend>> backends;
+  std::map<Target, TargetScenes> scenes;
+  // Targets whose depth pass could not run: every run on them fails with this.
+  std::map<Target, Error> broken_targets;
+};
+
+// A run that could not compile or execute its shaders is a failed check of
+// that variant and target, not a reason to stop verifying the others.
+TargetRun failed_run(Target target, std::string backend, const Error& error) {
+  TargetRun run;
+  run.target = target;
+  run.backend = std::move(backend);
+  run.executed = true;
+  run.error = error.to_string();
+  return run;
+}
+
+// The query's visibility against the reference (screen_blur: the factor).
+Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
+                             const FloatImage& texel_reads, const Variant& variant,
+                             const SceneFixture& fixture) {
+  auto expected = reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
+                                            fixture.receivers, ctx.precision);
+  if (!expected) return expected.error();
+  auto comparison = reference::compare(visibility, expected->visibility, expected->ambiguous,
+                                       reference::tolerance(variant.technique, ctx.precision));
+  if (!comparison) return comparison.error();
+  double reads = 0.0;
+  for (float r : texel_reads.data) reads += r;
+  return SceneRun{fixture.scene.name, *comparison,
+                  reads / static_cast<double>(texel_reads.pixel_count()), std::nullopt,
+                  std::nullopt};
+}
+
+// screen_blur's chain checked step by step, so that one ambiguous point
+// compare in the factor does not spread through the blur: the factor against
+// the reference, then each later pass against the CPU's step applied to the
+// GPU's own input to it.
+Result<SceneRun> check_screen_blur_scene(const Context& ctx, const SceneOutput& gpu,
+                                         const ChainOutput& chain, const Variant& variant,
+                                         const SceneFixture& fixture) {
+  auto scene = check_scene(ctx, gpu.visibility, gpu.texel_reads, variant, fixture);
+  if (!scene) return scene.error();
+  auto blur =
+      check_chain(chain.blurred, reference::screen_blur(variant, gpu.visibility, fixture.receivers),
+                  reference::kBlurTolerance, "the blurred factor");
+  if (!blur) return blur.error();
+  auto composite = check_chain(chain.composite, reference::composite(fixture.colour, chain.blurred),
+                               reference::kCompositeTolerance, "the composite");
+  if (!composite) return composite.error();
+  scene->blur = *blur;
+  scene->composite = *composite;
+  return scene;
+}
+
+// `entry`'s passes for `target` on `backend`, each scene's output checked
+// against the reference.
+Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& entry,
+                         Target target) {
+  TargetRun run;
+  run.target = target;
+  run.backend = backend.name();
+  if (std::string missing = backend.missing(); !missing.empty()) {
+    run.not_executed = std::move(missing);
+    return run;
+  }
+  const TargetScenes& scenes = ctx.scenes.at(target);
+  auto passes = backend.load(ctx.library, entry, target, scenes);
+  if (!passes) return passes.error();
+  run.device = backend.device();
+  run.execution = passes->execution;
+  run.executed = true;
+  run.pass = true;
+  for (const SceneFixture& fixture : scenes.scenes) {
+    auto gpu = passes->run(fixture);
+    if (!gpu) return gpu.error();
+    auto scene = gpu->chain
+                     ? check_screen_blur_scene(ctx, *gpu, *gpu->chain, entry.variant, fixture)
+                     : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, fixture);
+    if (!scene) return scene.error();
+    run.pass = run.pass && scene->pass();
+    run.scenes.push_back(std::move(*scene));
+  }
+  return run;
+}
+
+// Renders every scene with `target`'s depth pass (shared by all variants),
+// taken from `entry`, a variant that has the target.
+Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
+                      VerifyReport& report) {
+  auto depth = load_executable(ctx.library, entry, PassKind::depth, target);
+  if (!depth) return depth.error();
+  TargetScenes scenes;
+  for (const reference::Scene& scene : reference::builtin_scenes()) {
+    auto fixture = prepare_scene(ctx.engine, depth->program, target, scene);
+    if (!fixture) return fixture.error();
+    report.depth_checks.push_back(fixture->depth_check);
+    scenes.scenes.push_back(std::move(*fixture));
+  }
+  ctx.scenes.emplace(target, std::move(scenes));
+  return {};
+}
+
+// Builds the min-max mip on every scene's map of `target` with the target's
+// own minmax passes (shared by all variants), taken from `entry`, a variant
+// that has them, and checks each against the CPU mip.
+Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
+                      VerifyReport& report) {
+  auto init = load_executable(ctx.library, entry, PassKind::minmax_init, target);
+  if (!init) return init.error();
+  auto reduce = load_executable(ctx.library, entry, PassKind::minmax_reduce, target);
+  if (!reduce) return reduce.error();
+  for (SceneFixture& fixture : ctx.scenes.at(target).scenes) {
+    auto built =
+        ctx.engine.build_minmax(*fixture.map, init->program, reduce->program, fixture.params);
+    auto levels = built ? ctx.engine.read_minmax(*fixture.map)
+                        : Result<std::vector<FloatImage>>(built.error());
+    if (!levels) {
+      MinmaxCheck failed;
+      failed.scene = fixture.scene.name;
+      failed.target = target;
+      failed.error = levels.error().to_string();
+      report.minmax_checks.push_back(std::move(failed));
+      return levels.error();
+    }
+    report.minmax_checks.push_back(check_minmax(fixture, target, *levels));
+  }
+  return {};
+}
+
+bool wanted(const std::vector<std::string>& names, const std::string& name) {
+  return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool wanted(const std::vector<Target>& targets, Target target) {
+  return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
+}
+
+void count(VerifyReport& report, const TargetRun& run) {
+  if (!run.executed) return;
+  if (!run.error.empty()) {
+    ++report.runs;
+    ++report.failed;
+    return;
+  }
+  report.runs += run.scenes.size();
+  for (const SceneRun& s : run.scenes) report.failed += s.pass() ? 0 : 1;
+}
+
+}  // namespace
+
+bool SceneRun::pass() const {
+  return comparison.pass && (!blur || blur->pass) && (!composite || composite->pass);
+}
+
+bool VerifyReport::pass() const {
+  const bool depth_ok = std::all_of(depth_checks.begin(), depth_checks.end(),
+                                    [](const DepthCheck& c) { return c.pass; });
+  const bool minmax_ok = std::all_of(minmax_checks.begin(), minmax_checks.end(),
+                                     [](const MinmaxCheck& c) { return c.pass; });
+  return depth_ok && minmax_ok && failed == 0 && runs > 0;
+}
+
+Result<VerifyReport> verify_library(const Library& library, Engine& engine,
+                                    const VerifyOptions& options,
+                                    const DiagnosticConsumer& diagnostics) {
+  if (library.variants.empty()) {
+    return make_error(Error::Kind::bad_input, library.root.string(), "the library has no variants");
+  }
+  for (const std::string& name : options.variants) {
+    if (!library.find(name)) {
+      return make_error(Error::Kind::bad_input, name,
+                        "no such variant in " + library.root.string());
+    }
+  }
+  VerifyReport report;
+  report.device = engine.device_info();
+  const reference::SamplingPrecision precision{
+      static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
+  Context ctx{library, engine, precision, {}, {}, {}};
+  // The paths, in report order: a new one is a new backend file and a line here.
+  ctx.backends.push_back(vulkan_backend(engine));
+  // On lavapipe, GL runs on llvmpipe too, so both paths use one rasterizer.
+  const bool lavapipe = report.device.name.find("llvmpipe") != std::string::npos;
+  ctx.backends.push_back(gl_backend(options.gl, lavapipe ? "llvmpipe" : ""));
+  report.gl_device = ctx.backends.back()->device();
+
+  for (const LibraryVariant& entry : library.variants) {
+    if (!wanted(options.variants, entry.variant.name)) continue;
+    VariantRun variant_run;
+    variant_run.name = entry.variant.name;
+    variant_run.technique = entry.variant.technique;
+    for (Target target : entry.variant.targets) {
+      if (!wanted(options.targets, target)) continue;
+      if (!ctx.scenes.contains(target) && !ctx.broken_targets.contains(target)) {
+        // A depth pass that cannot run fails every run of its target, not verify.
+        if (Status s = prepare_target(ctx, entry, target, report); !s) {
+          ctx.broken_targets.emplace(target, s.error());
+        }
+      }
+      if (auto broken = ctx.broken_targets.find(target); broken != ctx.broken_targets.end()) {
+        // Reported once, on the path that prepares the scenes.
+        variant_run.runs.push_back(
+            failed_run(target, ctx.backends.front()->name(), broken->second));
+        count(report, variant_run.runs.back());
+        continue;
+      }
+      TargetScenes& scenes = ctx.scenes.at(target);
+      if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
+        scenes.minmax = prepare_minmax(ctx, entry, target, report);
+      }
+      for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+        if (!backend->executes(target)) continue;
+        auto run = run_on(ctx, *backend, entry, target);
+        variant_run.runs.push_back(run ? std::move(*run)
+                                       : failed_run(target, backend->name(), run.error()));
+        count(report, variant_run.runs.back());
+      }
+    }
+    diagnostics({Severity::note, entry.variant.name, "verified"});
+    report.variants.push_back(std::move(variant_run));
+  }
+  return report;
+}
+
+}  // namespace penumbra

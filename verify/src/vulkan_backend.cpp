@@ -1,0 +1,66 @@
+// verify's Vulkan path: every target's files (the .spv as built, or the text
+// through glslang's front ends) on the Vulkan engine that prepared the
+// scenes, on their maps as rendered.
+#include <memory>
+
+#include "backend.hpp"
+
+namespace penumbra {
+namespace {
+
+class VulkanBackend final : public Backend {
+ public:
+  explicit VulkanBackend(Engine& engine) : engine_(engine) {}
+
+  std::string name() const override { return "vulkan"; }
+  std::string device() const override { return engine_.device_info().name; }
+  std::string missing() const override { return {}; }
+  bool executes(Target /*target*/) const override { return true; }
+
+  Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
+                            const TargetScenes& scenes) override {
+    // The query reads the mip the target's own passes built on each map.
+    if (uses_minmax_mip(entry.variant.technique) && scenes.minmax && !*scenes.minmax) {
+      return scenes.minmax->error();
+    }
+    if (entry.variant.technique == Technique::screen_blur)
+      return load_screen_blur_chain(library, entry, target);
+    auto query = load_executable(library, entry, PassKind::query, target);
+    if (!query) return query.error();
+    auto program = std::make_shared<PassProgram>(std::move(query->program));
+    return LoadedPasses{
+        std::move(query->execution),
+        [this, program](const SceneFixture& fixture) -> Result<SceneOutput> {
+          auto gpu =
+              engine_.run_query_output(*program, *fixture.map, fixture.receivers, fixture.params);
+          if (!gpu) return gpu.error();
+          return SceneOutput{std::move(gpu->visibility), std::move(gpu->texel_reads), std::nullopt};
+        }};
+  }
+
+ private:
+  Result<LoadedPasses> load_screen_blur_chain(const Library& library, const LibraryVariant& entry,
+                                              Target target) {
+    auto loaded = load_screen_blur(library, entry, target);
+    if (!loaded) return loaded.error();
+    auto chain = std::make_shared<ScreenBlurExecutables>(std::move(*loaded));
+    return LoadedPasses{
+        chain->query.execution, [this, chain](const SceneFixture& fixture) -> Result<SceneOutput> {
+          auto gpu = engine_.run_screen_blur(chain->programs(), *fixture.map, fixture.receivers,
+                                             fixture.colour, fixture.params);
+          if (!gpu) return gpu.error();
+          return SceneOutput{std::move(gpu->factor), std::move(gpu->texel_reads),
+                             ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)}};
+        }};
+  }
+
+  Engine& engine_;
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> vulkan_backend(Engine& engine) {
+  return std::make_unique<VulkanBackend>(engine);
+}
+
+}  // namespace penumbra
