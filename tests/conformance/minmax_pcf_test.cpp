@@ -5,17 +5,16 @@
 // force; and on large flat regions it reads far fewer texels than the K^2
 // brute force does. Each target's map and mip come from its own passes.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cstdint>
-#include <filesystem>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "penumbra/compiler/build.hpp"
+#include "default_library.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -66,11 +65,6 @@ class MinmaxPcfTest : public ::testing::TestWithParam<Target> {
   static void TearDownTestSuite() {
     delete engine_;
     engine_ = nullptr;
-    for (auto& [target, library] : libraries_) {
-      std::error_code ignored;
-      std::filesystem::remove_all(library->root, ignored);
-      delete library;
-    }
     libraries_.clear();
   }
 
@@ -79,21 +73,16 @@ class MinmaxPcfTest : public ::testing::TestWithParam<Target> {
     ASSERT_NE(engine_, nullptr);
     const Target target = GetParam();
     if (libraries_.count(target)) return;
-    const std::filesystem::path root = std::filesystem::path(::testing::TempDir()) /
-                                       ("penumbra-minmax-pcf-" + std::string(to_string(target)) +
-                                        "-" + std::to_string(::getpid()));
     auto parsed = parse_manifest(manifest(target), "minmax_pcf_test");
     ASSERT_TRUE(parsed) << parsed.error().to_string();
     auto variants = expand(*parsed);
     ASSERT_TRUE(variants) << variants.error().to_string();
-    auto built = build_library(*variants, root, BuildOptions{}, ignore_diagnostics());
+    auto built = TemporaryLibrary::build(std::move(*variants));
     ASSERT_TRUE(built) << built.error().to_string();
-    auto library = load_library(root);
-    ASSERT_TRUE(library) << library.error().to_string();
-    libraries_[target] = new Library(std::move(*library));
+    libraries_[target] = std::move(*built);
   }
 
-  static const Library& library() { return *libraries_.at(GetParam()); }
+  static const Library& library() { return libraries_.at(GetParam())->library(); }
 
   static const LibraryVariant& variant(const std::string& name) {
     const LibraryVariant* found = library().find(name);
@@ -142,7 +131,7 @@ class MinmaxPcfTest : public ::testing::TestWithParam<Target> {
   }
 
   static inline Engine* engine_ = nullptr;
-  static inline std::map<Target, Library*> libraries_;
+  static inline std::map<Target, std::unique_ptr<TemporaryLibrary>> libraries_;
 };
 
 TEST_P(MinmaxPcfTest, TraversalEqualsBruteForceBitForBitOnEveryScene) {

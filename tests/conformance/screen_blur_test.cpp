@@ -13,7 +13,7 @@
 #include <cmath>
 #include <string>
 
-#include "library_fixture.hpp"
+#include "default_library.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
@@ -82,21 +82,22 @@ class ScreenBlurChain : public ::testing::TestWithParam<std::string> {
   // depth scale 1) and `receivers`; `check` gets each target's output.
   template <typename Check>
   void run_every_target(const FloatImage& map, const FloatImage& receivers, Check check) {
-    auto lib = build_default_variant(GetParam(), /*with_engine=*/false);
-    ASSERT_NE(lib, nullptr);
+    auto built = build_default_variant(GetParam());
+    ASSERT_TRUE(built) << built.error().to_string();
+    const Library& library = (*built)->library();
     // Validation messages fail the test.
     auto engine = Engine::create({.device = "", .validation = true}, [](const Diagnostic& d) {
       if (d.where == "vulkan validation") ADD_FAILURE() << d.message;
     });
     ASSERT_TRUE(engine.ok()) << engine.error().to_string();
-    const LibraryVariant* variant = lib->library.find(GetParam());
+    const LibraryVariant* variant = library.find(GetParam());
     ASSERT_NE(variant, nullptr);
     const FloatImage colour = reference::scene_colour(kWidth, kHeight);
     const ParamBlock params = shadow_params(reference::builtin_scenes().front().light,
                                             {kWidth, kHeight, kWidth, kHeight}, 1.0f);
     for (Target target : variant->variant.targets) {
       SCOPED_TRACE(to_string(target));
-      auto programs = load_screen_blur(lib->library, *variant, target);
+      auto programs = load_screen_blur(library, *variant, target);
       ASSERT_TRUE(programs.ok()) << programs.error().to_string();
       auto shadow_map = (*engine)->upload_shadow_map(map);
       ASSERT_TRUE(shadow_map.ok()) << shadow_map.error().to_string();

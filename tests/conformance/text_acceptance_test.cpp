@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "library_fixture.hpp"
+#include "default_library.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -51,16 +51,17 @@ std::string acceptance_command(Target target, ShaderStage stage, const std::stri
 class TextAcceptance : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(TextAcceptance, EveryTargetFileIsAccepted) {
-  auto lib = build_default_variant(GetParam(), /*with_engine=*/false);
-  ASSERT_NE(lib, nullptr);
-  const LibraryVariant* variant = lib->library.find(GetParam());
+  auto built = build_default_variant(GetParam());
+  ASSERT_TRUE(built) << built.error().to_string();
+  const Library& library = (*built)->library();
+  const LibraryVariant* variant = library.find(GetParam());
   ASSERT_NE(variant, nullptr);
   int checked = 0;
   for (const auto& [pass, by_target] : variant->passes) {
     for (const auto& [target, files] : by_target) {
       for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
         const std::string& rel = stage == ShaderStage::vertex ? files.vert : files.frag;
-        const std::string path = (lib->library.root / rel).string();
+        const std::string path = (library.root / rel).string();
         const ToolRun run = run_tool(acceptance_command(target, stage, path));
         EXPECT_EQ(run.status, 0) << rel << " rejected:\n" << run.output;
         ++checked;

@@ -6,9 +6,10 @@
 
 #include <set>
 
-#include "library_fixture.hpp"
+#include "default_library.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/verify.hpp"
+#include "penumbra/vulkan/engine.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -16,10 +17,12 @@ namespace {
 class VariantConformance : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
-  auto lib = build_default_variant(GetParam(), /*with_engine=*/true);
-  ASSERT_NE(lib, nullptr);
+  auto built = build_default_variant(GetParam());
+  ASSERT_TRUE(built) << built.error().to_string();
+  auto engine = Engine::create(EngineOptions{}, ignore_diagnostics());
+  ASSERT_TRUE(engine) << engine.error().to_string();
   auto report =
-      verify_library(lib->library, *lib->engine,
+      verify_library((*built)->library(), **engine,
                      {.variants = {GetParam()}, .targets = {}, .gl = true}, ignore_diagnostics());
   ASSERT_TRUE(report.ok()) << report.error().to_string();
   for (const DepthCheck& depth : report->depth_checks) {

@@ -4,7 +4,6 @@
 // binding number their code gives a resource of those tables is the
 // reflection's. The conventions are guide_check.hpp's.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -16,10 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "default_library.hpp"
 #include "guide_check.hpp"
-#include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/library.hpp"
-#include "penumbra/compiler/manifest.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -35,58 +33,34 @@ std::string read_guide(const std::string& guide) {
 }
 
 // The variants the guides name, built from permutations/default.json once
-// for all tests.
-class GuideLibrary {
- public:
-  static const Library& get() {
-    static const std::unique_ptr<GuideLibrary> instance(new GuideLibrary());
-    return instance->library_;
-  }
-  ~GuideLibrary() {
-    std::error_code ignored;
-    std::filesystem::remove_all(root_, ignored);
-  }
-
- private:
-  GuideLibrary()
-      : root_(std::filesystem::path(::testing::TempDir()) /
-              ("penumbra-guides-" + std::to_string(::getpid()))) {
+// for all tests; an empty library, with a test failure, when that fails.
+const Library& guide_library() {
+  static const std::unique_ptr<TemporaryLibrary> built = []() -> std::unique_ptr<TemporaryLibrary> {
     std::set<std::string> named;
     for (const std::string& guide : kGuides) {
       for (const GuideTable& table : parse_guide(read_guide(guide)).tables) {
         named.insert(table.variant);
       }
     }
-    auto variants = load_variants(kSourceDir / "permutations" / "default.json");
-    if (!variants) {
-      ADD_FAILURE() << variants.error().to_string();
-      return;
-    }
     std::vector<Variant> used;
-    for (const Variant& variant : *variants) {
+    for (const Variant& variant : default_variants()) {
       if (named.contains(variant.name)) used.push_back(variant);
     }
-    auto built = build_library(used, root_, BuildOptions{2}, ignore_diagnostics());
-    if (!built) {
-      ADD_FAILURE() << built.error().to_string();
-      return;
+    auto library = TemporaryLibrary::build(std::move(used), {}, {.jobs = 2});
+    if (!library) {
+      ADD_FAILURE() << library.error().to_string();
+      return nullptr;
     }
-    auto loaded = load_library(root_);
-    if (!loaded) {
-      ADD_FAILURE() << loaded.error().to_string();
-      return;
-    }
-    library_ = std::move(*loaded);
-  }
-
-  std::filesystem::path root_;
-  Library library_;
-};
+    return std::move(*library);
+  }();
+  static const Library none;
+  return built ? built->library() : none;
+}
 
 // The reflection a table names, or a message saying what is not there.
 Result<PassReflection> reflection_for(const GuideTable& table) {
   const std::string where = "table at line " + std::to_string(table.line);
-  const LibraryVariant* variant = GuideLibrary::get().find(table.variant);
+  const LibraryVariant* variant = guide_library().find(table.variant);
   if (!variant) {
     return make_error(Error::Kind::bad_input, where,
                       "no variant '" + table.variant + "' in permutations/default.json");

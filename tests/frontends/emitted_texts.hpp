@@ -14,11 +14,6 @@ namespace penumbra::testing {
 inline constexpr std::array kTextTargets = {Target::glsl450, Target::glsl330, Target::essl300,
                                             Target::hlsl_dx10, Target::hlsl_dx9};
 
-// The variants of permutations/default.json; empty if it cannot be loaded.
-const std::vector<Variant>& default_variants();
-std::vector<std::string> default_variant_names();  // test parameters
-const Variant* find_default_variant(const std::string& name);
-
 struct EmittedStage {
   PassKind pass = PassKind::query;
   ShaderStage stage = ShaderStage::vertex;

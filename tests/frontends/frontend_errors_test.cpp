@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "default_library.hpp"
 #include "emitted_texts.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
 

@@ -7,6 +7,7 @@
 
 #include <map>
 
+#include "default_library.hpp"
 #include "emitted_texts.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
 #include "spirv_inspect.hpp"
@@ -139,7 +140,7 @@ TEST_P(FrontEndVariant, EveryTextTargetCompilesToVulkanSpirvWithItsInterface) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, FrontEndVariant, ::testing::ValuesIn(default_variant_names()),
-                         [](const auto& param_info) { return param_info.param; });
+                         [](const auto& param_info) { return test_name(param_info.param); });
 
 TEST(FrontEndVariants, TheDefaultManifestHasVariants) {
   EXPECT_THAT(default_variant_names(), Contains("hard"));

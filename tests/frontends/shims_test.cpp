@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "default_library.hpp"
 #include "emitted_texts.hpp"
 #include "glslang_ast.hpp"
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "default_library.hpp"
 #include "gl_fixture.hpp"
 
 namespace penumbra::testing {
@@ -21,7 +22,7 @@ std::string lower(std::string text) {
 
 // Runs the hard variant's glsl450 pass on the first scene.
 Result<FloatImage> run_hard(GlEngine& engine) {
-  auto variant = default_variant("hard");
+  auto variant = find_default_variant("hard");
   if (!variant) return make_error(Error::Kind::internal, "test", "no variant hard");
   auto text = emitted_pass(*variant, Target::glsl450, PassKind::query);
   if (!text) return text.error();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <string>
 
+#include "default_library.hpp"
 #include "gl_fixture.hpp"
 
 namespace penumbra::testing {
@@ -41,7 +42,7 @@ class GlErrors : public ::testing::TestWithParam<Target> {
   void SetUp() override {
     engine_ = make_gl_engine();
     ASSERT_NE(engine_, nullptr);
-    auto variant = default_variant("pcss_b16_p16_whitepaper16");
+    auto variant = find_default_variant("pcss_b16_p16_whitepaper16");
     ASSERT_NE(variant, nullptr);
     auto text = emitted_pass(*variant, GetParam(), PassKind::query);
     ASSERT_TRUE(text.ok()) << text.error().to_string();

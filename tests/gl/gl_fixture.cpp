@@ -1,56 +1,31 @@
 #include "gl_fixture.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 
-#include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/library.hpp"
-#include "penumbra/compiler/manifest.hpp"
+#include "default_library.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra::testing {
 namespace {
 
-namespace fs = std::filesystem;
-
-// Libraries of one variant each, built on first use under one temporary
-// directory that goes with the test process.
-class BuiltLibraries {
- public:
-  ~BuiltLibraries() {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
+// The library of `variant` for both GLSL targets, built on first use and
+// kept until the test process ends.
+Result<const Library*> glsl_library(const Variant& variant) {
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<TemporaryLibrary>> built;
+  const std::lock_guard lock(mutex);
+  if (const auto found = built.find(variant.name); found != built.end()) {
+    return &found->second->library();
   }
-
-  Result<const Library*> get(const Variant& variant) {
-    const std::lock_guard lock(mutex_);
-    if (const auto found = built_.find(variant.name); found != built_.end()) {
-      return &found->second;
-    }
-    Variant glsl = variant;
-    glsl.targets = {Target::glsl330, Target::glsl450};
-    const fs::path out = root_ / variant.name;
-    auto summary = build_library({&glsl, 1}, out, BuildOptions{.jobs = 2}, ignore_diagnostics());
-    if (!summary) return summary.error();
-    auto library = load_library(out);
-    if (!library) return library.error();
-    return &built_.emplace(variant.name, std::move(*library)).first->second;
-  }
-
- private:
-  fs::path root_ = fs::temp_directory_path() / ("penumbra_gl_tests_" + std::to_string(::getpid()));
-  std::mutex mutex_;
-  std::map<std::string, Library> built_;
-};
-
-BuiltLibraries& built_libraries() {
-  static BuiltLibraries libraries;
-  return libraries;
+  auto library =
+      TemporaryLibrary::build({variant}, {Target::glsl330, Target::glsl450}, {.jobs = 2});
+  if (!library) return library.error();
+  return &built.emplace(variant.name, std::move(*library)).first->second->library();
 }
 
 }  // namespace
@@ -64,22 +39,8 @@ std::unique_ptr<GlEngine> make_gl_engine() {
   return std::move(*engine);
 }
 
-std::unique_ptr<Variant> default_variant(const std::string& name) {
-  auto variants =
-      load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
-  if (!variants) {
-    ADD_FAILURE() << variants.error().to_string();
-    return nullptr;
-  }
-  for (Variant& variant : *variants) {
-    if (variant.name == name) return std::make_unique<Variant>(std::move(variant));
-  }
-  ADD_FAILURE() << "permutations/default.json has no variant " << name;
-  return nullptr;
-}
-
 Result<PassText> emitted_pass(const Variant& variant, Target target, PassKind kind) {
-  auto library = built_libraries().get(variant);
+  auto library = glsl_library(variant);
   if (!library) return library.error();
   const LibraryVariant* entry = (*library)->find(variant.name);
   if (entry == nullptr || !entry->reflection.contains(kind) ||

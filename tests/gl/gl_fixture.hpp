@@ -27,9 +27,6 @@ namespace penumbra::testing {
 // The default GlEngine; fails the calling test (and returns null) without one.
 std::unique_ptr<GlEngine> make_gl_engine();
 
-// A variant of permutations/default.json; fails the test when absent.
-std::unique_ptr<Variant> default_variant(const std::string& name);
-
 struct PassText {
   std::string vert;           // the pass's vertex stage as emitted
   std::string frag;           // the pass's fragment stage as emitted

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "default_library.hpp"
 #include "minmax_test_maps.hpp"
 
 namespace penumbra::testing {
@@ -43,7 +44,7 @@ class GlMinmaxErrors : public ::testing::TestWithParam<Target> {
   void SetUp() override {
     engine_ = make_gl_engine();
     ASSERT_NE(engine_, nullptr);
-    auto variant = default_variant("minmax_pcf_k8");
+    auto variant = find_default_variant("minmax_pcf_k8");
     ASSERT_NE(variant, nullptr);
     auto query = emitted_pass(*variant, GetParam(), PassKind::query);
     ASSERT_TRUE(query.ok()) << query.error().to_string();
@@ -120,7 +121,7 @@ TEST_P(GlMinmaxErrors, OutputsNeedBothChannelsOfTheTarget) {
 }
 
 TEST_P(GlMinmaxErrors, UnneededMinmaxPassesAreNotBuilt) {
-  auto hard = default_variant("hard");
+  auto hard = find_default_variant("hard");
   ASSERT_NE(hard, nullptr);
   auto query = emitted_pass(*hard, GetParam(), PassKind::query);
   ASSERT_TRUE(query.ok()) << query.error().to_string();

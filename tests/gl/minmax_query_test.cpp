@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "default_library.hpp"
 #include "minmax_test_maps.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/minmax_pcf.hpp"
@@ -78,7 +79,7 @@ TEST_P(GlMinmaxProbe, EveryNodeAtItsTexelAndLevel) {
   }
   // Bound by minmax_pcf_k8's query reflection, whose names the probe's are
   // a subset of.
-  auto variant = default_variant("minmax_pcf_k8");
+  auto variant = find_default_variant("minmax_pcf_k8");
   ASSERT_NE(variant, nullptr);
   auto query = emitted_pass(*variant, target, PassKind::query);
   ASSERT_TRUE(query.ok()) << query.error().to_string();
@@ -127,7 +128,7 @@ float brute_force_visibility(const FloatImage& map, float u, float v, float refe
 
 TEST_P(GlMinmaxPcf, BitExactOnEveryScene) {
   const auto& [name, target] = GetParam();
-  auto variant = default_variant(name);
+  auto variant = find_default_variant(name);
   ASSERT_NE(variant, nullptr);
   ASSERT_TRUE(variant->keys.kernel.has_value());
   const int kernel = *variant->keys.kernel;

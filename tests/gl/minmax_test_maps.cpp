@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "default_library.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 
@@ -43,8 +44,11 @@ ParamBlock bare_map_params(const FloatImage& map, int receivers_width, int recei
 }
 
 MinmaxText default_minmax_passes(Target target) {
-  auto variant = default_variant("minmax_pcf_k8");
-  if (!variant) return {};
+  const Variant* variant = find_default_variant("minmax_pcf_k8");
+  if (!variant) {
+    ADD_FAILURE() << "permutations/default.json has no variant minmax_pcf_k8";
+    return {};
+  }
   auto text = emitted_minmax(*variant, target);
   if (!text) {
     ADD_FAILURE() << text.error().to_string();

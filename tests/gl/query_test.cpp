@@ -7,6 +7,7 @@
 #include <string>
 #include <tuple>
 
+#include "default_library.hpp"
 #include "gl_fixture.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/reference/precision.hpp"
@@ -25,7 +26,7 @@ class GlQueryConformance : public ::testing::TestWithParam<Case> {};
 
 TEST_P(GlQueryConformance, MatchesReferenceOnEveryScene) {
   const auto& [name, target] = GetParam();
-  auto variant = default_variant(name);
+  auto variant = find_default_variant(name);
   ASSERT_NE(variant, nullptr);
   auto text = emitted_pass(*variant, target, PassKind::query);
   ASSERT_TRUE(text.ok()) << text.error().to_string();

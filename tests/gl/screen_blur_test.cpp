@@ -12,6 +12,7 @@
 #include <string>
 #include <tuple>
 
+#include "default_library.hpp"
 #include "gl_fixture.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/reference/precision.hpp"
@@ -42,7 +43,7 @@ class GlScreenBlur : public ::testing::TestWithParam<Case> {};
 
 TEST_P(GlScreenBlur, EveryPassMatchesTheReferenceOnEveryScene) {
   const auto& [name, target] = GetParam();
-  auto variant = default_variant(name);
+  auto variant = find_default_variant(name);
   ASSERT_NE(variant, nullptr);
   PassText passes[4];
   const PassKind kinds[4] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "build/pass_plan.hpp"
+#include "default_library.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
@@ -55,8 +56,7 @@ bool update_mode() {
 
 const Variant& representative(const std::string& name) {
   static const std::vector<Variant> variants = [] {
-    auto loaded = load_variants(fs::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
-    std::vector<Variant> out = loaded.ok() ? std::move(*loaded) : std::vector<Variant>{};
+    std::vector<Variant> out = penumbra::testing::default_variants();
     auto manifest = parse_manifest(kExtraVariants, "golden extra variants");
     auto extra = manifest.ok() ? expand(*manifest) : Result<std::vector<Variant>>(manifest.error());
     if (extra.ok()) out.insert(out.end(), extra->begin(), extra->end());

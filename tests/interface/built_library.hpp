@@ -7,18 +7,11 @@
 
 #include <initializer_list>
 #include <string>
-#include <vector>
 
 #include "penumbra/compiler/library.hpp"
 #include "proof.hpp"
 
 namespace penumbra::testing {
-
-// Variant names of permutations/default.json (test parameters).
-std::vector<std::string> default_variant_names();
-
-// A test name made of letters, digits and underscores.
-std::string test_name(std::string name);
 
 // The library holding `name` alone, for those of its targets that are in
 // `targets`, built on first use and removed at exit; the error names the

@@ -6,6 +6,7 @@
 
 #include "built_library.hpp"
 #include "corrupted_reflection.hpp"
+#include "default_library.hpp"
 #include "egl_context.hpp"
 
 namespace penumbra::testing {

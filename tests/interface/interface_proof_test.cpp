@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "built_library.hpp"
+#include "default_library.hpp"
 
 namespace penumbra::testing {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <tuple>
 
-#include "penumbra/compiler/manifest.hpp"
+#include "default_library.hpp"
 #include "penumbra/support/minmax_levels.hpp"
 
 namespace penumbra::test {
@@ -50,17 +50,6 @@ PassProgram program(const std::string& vert, const std::string& frag, const std:
   return out;
 }
 
-const Variant* default_variant(const std::string& name) {
-  static const std::vector<Variant> variants = [] {
-    auto loaded = load_variants(PENUMBRA_SOURCE_DIR "/permutations/default.json");
-    return loaded ? *loaded : std::vector<Variant>{};
-  }();
-  for (const Variant& variant : variants) {
-    if (variant.name == name) return &variant;
-  }
-  return nullptr;
-}
-
 }  // namespace
 
 ParamBlock make_params(const TestLight& light, int map_w, int map_h, int screen_w, int screen_h) {
@@ -82,7 +71,7 @@ const CompiledPass* compiled_pass(const std::string& variant, PassKind pass, Tar
   static std::map<std::tuple<std::string, PassKind, Target>, CompiledPass> cache;
   const auto key = std::make_tuple(variant, pass, target);
   if (auto it = cache.find(key); it != cache.end()) return &it->second;
-  const Variant* found = default_variant(variant);
+  const Variant* found = penumbra::testing::find_default_variant(variant);
   if (!found) {
     ADD_FAILURE() << "no default variant " << variant;
     return nullptr;

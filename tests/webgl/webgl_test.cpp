@@ -3,58 +3,34 @@
 // once, every essl300 program runs through one browser run, and each
 // variant's test compares every pass's reflection with what WebGL reports.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <iostream>
+#include <memory>
 #include <thread>
 
-#include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/manifest.hpp"
+#include "default_library.hpp"
 #include "webgl_check.hpp"
 #include "webgl_page.hpp"
 
 namespace penumbra::testing {
 namespace {
 
-namespace fs = std::filesystem;
-
-fs::path default_permutations() {
-  return fs::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json";
-}
-
-std::vector<std::string> default_variant_names() {
-  auto variants = load_variants(default_permutations());
-  if (!variants) return {"manifest_error"};  // no such variant: its test fails loudly
-  std::vector<std::string> names;
-  for (const Variant& v : *variants) names.push_back(v.name);
-  return names;
-}
-
 // The library and the browser's result, shared by every test (built on
 // first use; the library is removed at exit); or why there are none.
 struct Shared {
-  Library library;
+  std::unique_ptr<TemporaryLibrary> built;
   nlohmann::json browser;
   std::string error;
-  ~Shared() {
-    std::error_code ignored;
-    if (!library.root.empty()) fs::remove_all(library.root, ignored);
-  }
+
+  const Library& library() const { return built->library(); }
 };
 
 Status build_and_run(Shared& out) {
-  PENUMBRA_TRY_ASSIGN(const std::vector<Variant> variants, load_variants(default_permutations()));
-  const fs::path root =
-      fs::path(::testing::TempDir()) / ("penumbra-webgl-library-" + std::to_string(::getpid()));
-  out.library.root = root;  // removed even when it cannot be read back
   BuildOptions options;
   options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  PENUMBRA_TRY(build_library(variants, root, options, ignore_diagnostics()));
-  PENUMBRA_TRY_ASSIGN(out.library, load_library(root));
-  PENUMBRA_TRY_ASSIGN(out.browser, run_webgl(out.library));
+  PENUMBRA_TRY_ASSIGN(out.built, TemporaryLibrary::build(default_variants(), {}, options));
+  PENUMBRA_TRY_ASSIGN(out.browser, run_webgl(out.library()));
   if (out.browser.contains("error") || !out.browser.value("webgl2", false)) {
     return make_error(Error::Kind::device, "chromium", "no WebGL 2: " + out.browser.dump());
   }
@@ -112,7 +88,7 @@ class WebglProof : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WebglProof, ReflectionMatchesWebgl2) {
   ASSERT_TRUE(shared().error.empty()) << shared().error;
-  const LibraryVariant* variant = shared().library.find(GetParam());
+  const LibraryVariant* variant = shared().library().find(GetParam());
   ASSERT_NE(variant, nullptr) << GetParam() << " is not in the built library";
   ASSERT_TRUE(variant->passes.begin() != variant->passes.end()) << GetParam() << " has no passes";
   EXPECT_EQ(differences(*variant, shared().browser), "");
@@ -123,7 +99,7 @@ TEST_P(WebglProof, ReflectionMatchesWebgl2) {
 // ES 3.00 cannot have, its vertex input and its extension dropped.
 TEST(WebglCheck, CorruptedReflectionIsReported) {
   ASSERT_TRUE(shared().error.empty()) << shared().error;
-  const LibraryVariant* found = shared().library.find("pcss_b16_p16_whitepaper16");
+  const LibraryVariant* found = shared().library().find("pcss_b16_p16_whitepaper16");
   ASSERT_NE(found, nullptr);
   LibraryVariant variant = *found;
   PassReflection& query = variant.reflection.at(PassKind::query).at(Target::essl300);
@@ -157,16 +133,8 @@ TEST(WebglCheck, CorruptedReflectionIsReported) {
   EXPECT_EQ(differences(*found, shared().browser), "");
 }
 
-std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  for (char& c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return name;
-}
-
 INSTANTIATE_TEST_SUITE_P(DefaultLibrary, WebglProof, ::testing::ValuesIn(default_variant_names()),
-                         test_name);
+                         [](const auto& param_info) { return test_name(param_info.param); });
 
 }  // namespace
 }  // namespace penumbra::testing
