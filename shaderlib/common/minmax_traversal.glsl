@@ -14,17 +14,18 @@
 // Runs the statement that follows up to `bound` times (bound <= 255^3) or
 // until `done`: three nested loops, none over 255 iterations, because a
 // ps_3_0 loop counter stops at 255. all() tests both conditions without the
-// branches of a short-circuit &&.
+// branches of a short-circuit &&. Every loop of the walk is PENUMBRA_LOOP
+// (HLSL [loop]): Direct3D compilers that unroll it take minutes.
 #define MINMAX_LOOP_INNER(bound) ((bound) < 255 ? (bound) : 255)
 #define MINMAX_LOOP_MIDDLE(bound) (((bound) + 254) / 255 < 255 ? ((bound) + 254) / 255 : 255)
 #define MINMAX_LOOP_OUTER(bound) (((bound) + 65024) / 65025)
 #define MINMAX_LOOP_WHILE(counter, count, done) all(bvec2((counter) < (count), !(done)))
 #define MINMAX_FOR_BOUNDED(bound, done)                                                       \
-  for (int loop_outer = 0; MINMAX_LOOP_WHILE(loop_outer, MINMAX_LOOP_OUTER(bound), done);    \
+  PENUMBRA_LOOP for (int loop_outer = 0; MINMAX_LOOP_WHILE(loop_outer, MINMAX_LOOP_OUTER(bound), done);    \
        ++loop_outer)                                                                          \
-    for (int loop_middle = 0; MINMAX_LOOP_WHILE(loop_middle, MINMAX_LOOP_MIDDLE(bound), done); \
+    PENUMBRA_LOOP for (int loop_middle = 0; MINMAX_LOOP_WHILE(loop_middle, MINMAX_LOOP_MIDDLE(bound), done); \
          ++loop_middle)                                                                       \
-      for (int loop_inner = 0; MINMAX_LOOP_WHILE(loop_inner, MINMAX_LOOP_INNER(bound), done);  \
+      PENUMBRA_LOOP for (int loop_inner = 0; MINMAX_LOOP_WHILE(loop_inner, MINMAX_LOOP_INNER(bound), done);  \
            ++loop_inner)
 
 struct MinmaxCursor {
@@ -50,7 +51,7 @@ bool minmax_window_empty(vec4 window) {
 float minmax_level_spanning(vec4 window, float nodes) {
   float level = 0.0;
   float inv_span = 1.0;  // 2^-level, exact
-  for (int k = 0; k < MINMAX_MAX_LEVEL; ++k) {
+  PENUMBRA_LOOP for (int k = 0; k < MINMAX_MAX_LEVEL; ++k) {
     vec2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
     if (max(spanned.x, spanned.y) < nodes) break;
     level += 1.0;
@@ -105,7 +106,7 @@ void minmax_descend(inout MinmaxCursor cursor) {
 // (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1) (the roots likewise from first_root),
 // climbing while the node is the last of its siblings; done after the last root.
 void minmax_next(inout MinmaxCursor cursor) {
-  for (int k = 0; k <= MINMAX_MAX_LEVEL; ++k) {
+  PENUMBRA_LOOP for (int k = 0; k <= MINMAX_MAX_LEVEL; ++k) {
     bool root = cursor.level >= cursor.start;
     vec2 first_sibling = root ? cursor.first_root : floor(cursor.node * 0.5) * 2.0;
     vec2 offset = cursor.node - first_sibling;

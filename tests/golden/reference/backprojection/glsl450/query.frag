@@ -1,4 +1,16 @@
 #version 450
+#if defined(GL_EXT_control_flow_attributes)
+#extension GL_EXT_control_flow_attributes : require
+#define SPIRV_CROSS_FLATTEN [[flatten]]
+#define SPIRV_CROSS_BRANCH [[dont_flatten]]
+#define SPIRV_CROSS_UNROLL [[unroll]]
+#define SPIRV_CROSS_LOOP [[dont_unroll]]
+#else
+#define SPIRV_CROSS_FLATTEN
+#define SPIRV_CROSS_BRANCH
+#define SPIRV_CROSS_UNROLL
+#define SPIRV_CROSS_LOOP
+#endif
 
 struct MinmaxCursor
 {
@@ -72,6 +84,7 @@ float minmax_level_spanning(vec4 window, float nodes)
 {
     float level = 0.0;
     float inv_span = 1.0;
+    SPIRV_CROSS_LOOP
     for (int k = 0; k < 16; k++)
     {
         vec2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
@@ -192,6 +205,7 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     vec2 _391;
+    SPIRV_CROSS_LOOP
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
@@ -235,10 +249,13 @@ float backprojection_area(vec3 query, vec4 window, float limit)
     float visits = 0.0;
     vec4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
+    SPIRV_CROSS_LOOP
     for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
+        SPIRV_CROSS_LOOP
         for (int loop_middle = 0; all(bvec2(loop_middle < 65, !cursor.done)); loop_middle++)
         {
+            SPIRV_CROSS_LOOP
             for (int loop_inner = 0; all(bvec2(loop_inner < 255, !cursor.done)); loop_inner++)
             {
                 visits += 1.0;

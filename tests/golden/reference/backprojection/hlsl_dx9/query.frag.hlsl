@@ -80,6 +80,7 @@ float minmax_level_spanning(float4 window, float nodes)
 {
     float level = 0.0f;
     float inv_span = 1.0f;
+    [loop]
     for (int k = 0; k < 16; k++)
     {
         float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
@@ -202,6 +203,7 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     float2 _391;
+    [loop]
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
@@ -245,10 +247,13 @@ float backprojection_area(float3 query, float4 window, float limit)
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
+    [loop]
     for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
+        [loop]
         for (int loop_middle = 0; all(bool2(loop_middle < 65, !cursor.done)); loop_middle++)
         {
+            [loop]
             for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
             {
                 visits += 1.0f;

@@ -59,6 +59,7 @@ float minmax_level_spanning(float4 window, float nodes)
 {
     float level = 0.0f;
     float inv_span = 1.0f;
+    [loop]
     for (int k = 0; k < 16; k++)
     {
         float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
@@ -135,6 +136,7 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     float2 _338;
+    [loop]
     for (int k = 0; k <= 16; k++)
     {
         bool root = cursor.level >= cursor.start;
@@ -182,10 +184,13 @@ float minmax_pcf_count(float2 first, float reference)
     }
     float4 param_3 = window;
     MinmaxCursor cursor = minmax_begin(param_3);
+    [loop]
     for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
+        [loop]
         for (int loop_middle = 0; all(bool2(loop_middle < 2, !cursor.done)); loop_middle++)
         {
+            [loop]
             for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
             {
                 MinmaxCursor param_4 = cursor;

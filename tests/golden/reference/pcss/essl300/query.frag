@@ -38,22 +38,20 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, vec2 uv, 
         vec2 param = uv + (POISSON_DISK[i] * searchWidth);
         float _236 = shadow_depth_point(param);
         float shadowMapDepth = _236;
-        if (shadowMapDepth < (zReceiver - params.sampling.y))
-        {
-            blockerSum += shadowMapDepth;
-            numBlockers += 1.0;
-        }
+        bool blocks = shadowMapDepth < (zReceiver - params.sampling.y);
+        blockerSum += (blocks ? shadowMapDepth : 0.0);
+        numBlockers += float(blocks);
     }
-    float _254;
+    float _258;
     if (numBlockers > 0.0)
     {
-        _254 = blockerSum / numBlockers;
+        _258 = blockerSum / numBlockers;
     }
     else
     {
-        _254 = zReceiver;
+        _258 = zReceiver;
     }
-    avgBlockerDepth = _254;
+    avgBlockerDepth = _258;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -113,15 +111,15 @@ float PCSS(vec3 coords)
     vec2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _308 = PCF_Filter(param_6, param_7, param_8);
-    return _308;
+    float _312 = PCF_Filter(param_6, param_7, param_8);
+    return _312;
 }
 
 float shadow_visibility(vec3 query)
 {
     vec3 param = query;
-    float _313 = PCSS(param);
-    return _313;
+    float _317 = PCSS(param);
+    return _317;
 }
 
 void main()
@@ -129,8 +127,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _327 = shadow_visibility(param);
-    float visible = _327;
+    float _331 = shadow_visibility(param);
+    float visible = _331;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -48,22 +48,20 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
         float2 param = uv + (POISSON_DISK[i] * searchWidth);
         float _236 = shadow_depth_point(param);
         float shadowMapDepth = _236;
-        if (shadowMapDepth < (zReceiver - params_sampling.y))
-        {
-            blockerSum += shadowMapDepth;
-            numBlockers += 1.0f;
-        }
+        bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
+        blockerSum += (blocks ? shadowMapDepth : 0.0f);
+        numBlockers += float(blocks);
     }
-    float _254;
+    float _258;
     if (numBlockers > 0.0f)
     {
-        _254 = blockerSum / numBlockers;
+        _258 = blockerSum / numBlockers;
     }
     else
     {
-        _254 = zReceiver;
+        _258 = zReceiver;
     }
-    avgBlockerDepth = _254;
+    avgBlockerDepth = _258;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -123,15 +121,15 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _308 = PCF_Filter(param_6, param_7, param_8);
-    return _308;
+    float _312 = PCF_Filter(param_6, param_7, param_8);
+    return _312;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _313 = PCSS(param);
-    return _313;
+    float _317 = PCSS(param);
+    return _317;
 }
 
 void frag_main()
@@ -139,8 +137,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _327 = shadow_visibility(param);
-    float visible = _327;
+    float _331 = shadow_visibility(param);
+    float visible = _331;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -43,22 +43,20 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
         float2 param = uv + (POISSON_DISK[i] * searchWidth);
         float _308 = shadow_depth_point(param);
         float shadowMapDepth = _308;
-        if (shadowMapDepth < (zReceiver - params_sampling.y))
-        {
-            blockerSum += shadowMapDepth;
-            numBlockers += 1.0f;
-        }
+        bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
+        blockerSum += (blocks ? shadowMapDepth : 0.0f);
+        numBlockers += float(blocks);
     }
-    float _326;
+    float _330;
     if (numBlockers > 0.0f)
     {
-        _326 = blockerSum / numBlockers;
+        _330 = blockerSum / numBlockers;
     }
     else
     {
-        _326 = zReceiver;
+        _330 = zReceiver;
     }
-    avgBlockerDepth = _326;
+    avgBlockerDepth = _330;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -126,15 +124,15 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _380 = PCF_Filter(param_6, param_7, param_8);
-    return _380;
+    float _384 = PCF_Filter(param_6, param_7, param_8);
+    return _384;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _385 = PCSS(param);
-    return _385;
+    float _389 = PCSS(param);
+    return _389;
 }
 
 void frag_main()
@@ -142,8 +140,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _399 = shadow_visibility(param);
-    float visible = _399;
+    float _403 = shadow_visibility(param);
+    float visible = _403;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

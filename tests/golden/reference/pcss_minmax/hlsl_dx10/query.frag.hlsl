@@ -53,6 +53,7 @@ float minmax_level_spanning(float4 window, float nodes)
 {
     float level = 0.0f;
     float inv_span = 1.0f;
+    [loop]
     for (int k = 0; k < 16; k++)
     {
         float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
