@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, generates the default shader library
-# into out/ and verifies every variant on lavapipe.
+# into out/ (with the Direct3D bytecode: install_hlsl_compiler) and verifies
+# every variant on lavapipe.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
 install_missing_packages
+install_hlsl_compiler
 configure_and_build build penumbra_cli
 ./build/penumbra build permutations/default.json -o out -j "$(nproc)"
 status=0

@@ -1,5 +1,6 @@
 # Sourced by scripts/run.sh, test.sh and bench.sh: installs the Debian 12
-# packages that are missing, then configures and builds with CMake + Ninja.
+# packages that are missing and the HLSL compiler, then configures and
+# builds with CMake + Ninja.
 
 PENUMBRA_PACKAGES=(
   cmake ninja-build g++
@@ -25,11 +26,41 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# configure_and_build BUILD_DIR [TARGET]: configures (tests on) and builds
-# TARGET, or everything.
+# Where ../shared/tools/fetch-vkd3d installs vkd3d-compiler (its own default
+# when XDG_CACHE_HOME is unset); `penumbra build` looks there too.
+PENUMBRA_VKD3D_DIR="${PENUMBRA_VKD3D_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/penumbra/vkd3d}"
+
+# install_hlsl_compiler: vkd3d-compiler 2.1 (Wine's HLSL compiler, for the
+# Direct3D bytecode), installed once into PENUMBRA_VKD3D_DIR, exported as
+# PENUMBRA_HLSL_COMPILER for CMake, `penumbra build` and the tests. An
+# already exported executable is kept. Fails when it cannot be had: the
+# bytecode tests need it.
+install_hlsl_compiler() {
+  if [ -n "${PENUMBRA_HLSL_COMPILER:-}" ] && [ -x "$PENUMBRA_HLSL_COMPILER" ]; then
+    return 0
+  fi
+  local fetch="../shared/tools/fetch-vkd3d"
+  if [ ! -f "$fetch" ]; then
+    echo "penumbra: error: $fetch is missing; it installs vkd3d-compiler, which the build's bytecode and its tests need" >&2
+    return 1
+  fi
+  local wrapper
+  wrapper="$(bash "$fetch" "$PENUMBRA_VKD3D_DIR" | tail -n 1)"
+  if [ ! -x "$wrapper" ]; then
+    echo "penumbra: error: fetch-vkd3d did not install vkd3d-compiler into $PENUMBRA_VKD3D_DIR" >&2
+    return 1
+  fi
+  export PENUMBRA_HLSL_COMPILER="$wrapper"
+}
+
+# configure_and_build BUILD_DIR [TARGET]: configures (tests on, with the HLSL
+# compiler of install_hlsl_compiler when there is one) and builds TARGET, or
+# everything.
 configure_and_build() {
   local build_dir="$1"
   local target="${2:-all}"
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON
+  local hlsl=()
+  if [ -n "${PENUMBRA_HLSL_COMPILER:-}" ]; then hlsl=("-DPENUMBRA_HLSL_COMPILER=$PENUMBRA_HLSL_COMPILER"); fi
+  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON "${hlsl[@]}"
   cmake --build "$build_dir" --parallel "$(nproc)" --target "$target"
 }

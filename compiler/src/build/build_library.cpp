@@ -107,7 +107,7 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                "compiling " + std::to_string(jobs.size()) + " shaders for " +
                    std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
                    " threads"});
-  PENUMBRA_TRY(run_jobs(jobs, Pipeline(staged->staging()), threads));
+  PENUMBRA_TRY(run_jobs(jobs, Pipeline(staged->staging(), options.hlsl), threads));
   for (const ShaderJob& job : jobs) {
     for (const Diagnostic& d : job.diagnostics) diagnostics(d);
   }
@@ -115,7 +115,9 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
   const std::string index = index_json(variants, jobs).dump(2) + "\n";
   PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index));
   PENUMBRA_TRY(staged->commit());
-  return BuildSummary{variants.size(), jobs.size()};
+  const auto bytecode =
+      std::ranges::count_if(jobs, [](const ShaderJob& job) { return job.bytecode.has_value(); });
+  return BuildSummary{variants.size(), jobs.size(), static_cast<std::size_t>(bytecode)};
 }
 
 Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass) {

@@ -61,6 +61,11 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
         (source.stage == ShaderStage::vertex ? vert : frag) = job;
         const std::string stage(stage_key(source.stage));
         passes[pass][target_name][stage] = job->output_path;
+        if (job->bytecode) {
+          passes[pass][target_name]["bytecode"][stage] = {{"path", job->bytecode->path},
+                                                          {"profile", job->bytecode->profile},
+                                                          {"size", job->bytecode->size}};
+        }
         if (job->estimated_slots > 0) {
           out["estimated_ps30_slots"][pass + "." + stage] = job->estimated_slots;
         }

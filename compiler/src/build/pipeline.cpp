@@ -4,14 +4,17 @@
 
 namespace penumbra {
 
-Pipeline::Pipeline(std::optional<std::filesystem::path> write_root) {
+Pipeline::Pipeline(std::optional<std::filesystem::path> write_root,
+                   const HlslCompilerOptions& hlsl) {
   stages_.push_back(std::make_unique<PreprocessStage>());
   stages_.push_back(std::make_unique<CompileStage>());
   stages_.push_back(std::make_unique<ValidateStage>());
   stages_.push_back(std::make_unique<OptimizeStage>());
   stages_.push_back(std::make_unique<CrossCompileStage>());
   stages_.push_back(std::make_unique<ReflectStage>());
-  if (write_root) stages_.push_back(std::make_unique<WriteStage>(std::move(*write_root)));
+  if (!write_root) return;
+  stages_.push_back(std::make_unique<WriteStage>(*write_root));
+  if (!hlsl.compiler.empty()) stages_.push_back(std::make_unique<BytecodeStage>(*write_root, hlsl));
 }
 
 Status Pipeline::run(ShaderJob& job) const {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/stage.hpp"
 
 namespace penumbra {
@@ -13,8 +14,10 @@ namespace penumbra {
 class Pipeline {
  public:
   // preprocess, compile, validate, optimize, cross-compile, reflect, and,
-  // when `write_root` is given, write.
-  explicit Pipeline(std::optional<std::filesystem::path> write_root);
+  // when `write_root` is given, write, then bytecode when `hlsl` names a
+  // compiler.
+  explicit Pipeline(std::optional<std::filesystem::path> write_root,
+                    const HlslCompilerOptions& hlsl = {});
 
   // Runs every stage in order; stops at the first error, naming the stage.
   Status run(ShaderJob& job) const;

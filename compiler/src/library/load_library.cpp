@@ -16,6 +16,12 @@ Error index_error(const std::filesystem::path& file, const std::string& path,
   return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
 }
 
+// passes.<pass>.<target>.bytecode.<stage> (docs/shader-interface.md).
+BytecodeFile bytecode_file(const json& j) {
+  return BytecodeFile{j.at("path").get<std::string>(), j.at("profile").get<std::string>(),
+                      j.at("size").get<std::uint64_t>()};
+}
+
 Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,
                                     const std::string& path) {
   LibraryVariant out;
@@ -65,7 +71,12 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     for (auto& [target_name, files] : by_target.items()) {
       auto target = parse_target(target_name);
       if (!target) continue;
-      out.passes[pass][*target] = PassFiles{files.at("vert"), files.at("frag")};
+      PassFiles& read = out.passes[pass][*target];
+      read.vert = files.at("vert");
+      read.frag = files.at("frag");
+      const json bytecode = files.value("bytecode", json::object());
+      if (bytecode.contains("vert")) read.vert_bytecode = bytecode_file(bytecode["vert"]);
+      if (bytecode.contains("frag")) read.frag_bytecode = bytecode_file(bytecode["frag"]);
       const std::string at = "/reflection/" + pass_name + "/" + target_name;
       try {
         out.reflection[pass][*target] = j.at(json::json_pointer(at)).get<PassReflection>();

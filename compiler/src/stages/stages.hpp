@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/stage.hpp"
 
 namespace penumbra {
@@ -60,6 +61,21 @@ class WriteStage final : public Stage {
 
  private:
   std::filesystem::path root_;
+};
+
+// Compiles the written HLSL file (hlsl_dx9, hlsl_dx10) to Direct3D bytecode
+// beside it with an external HLSL compiler, within the options' time limit.
+// Its errors fail the job with the compiler's message and the HLSL line;
+// its warnings become the job's diagnostics. Other targets pass through.
+class BytecodeStage final : public Stage {
+ public:
+  BytecodeStage(std::filesystem::path root, HlslCompilerOptions options);
+  std::string_view name() const override { return "bytecode"; }
+  Status process(ShaderJob& job) const override;
+
+ private:
+  std::filesystem::path root_;
+  HlslCompilerOptions options_;
 };
 
 }  // namespace penumbra

@@ -12,10 +12,10 @@ TargetTraits traits(Target target) {
     case Target::essl300:
       return {.comparison_sampler = true, .is_hlsl = false, .is_text = true};
     case Target::hlsl_dx10:
-      return {.comparison_sampler = true, .is_hlsl = true, .is_text = true};
+      return {.comparison_sampler = true, .is_hlsl = true, .is_text = true, .shader_model = 4};
     case Target::hlsl_dx9:
       // SM 3.0 has no comparison sampler: compares are made in the shader.
-      return {.comparison_sampler = false, .is_hlsl = true, .is_text = true};
+      return {.comparison_sampler = false, .is_hlsl = true, .is_text = true, .shader_model = 3};
   }
   return {};
 }
@@ -25,6 +25,16 @@ std::string target_defines(Target target) {
   out += "#define PENUMBRA_HAS_COMPARISON_SAMPLER ";
   out += traits(target).comparison_sampler ? "1\n" : "0\n";
   return out;
+}
+
+std::optional<BytecodeFormat> bytecode_format(Target target, ShaderStage stage) {
+  const int model = traits(target).shader_model;
+  if (model == 0) return std::nullopt;
+  const std::string profile =
+      std::string(stage == ShaderStage::vertex ? "vs_" : "ps_") + std::to_string(model) + "_0";
+  // Shader model 3 is the Direct3D 9 bytecode; 4 the container of Direct3D 10.
+  if (model == 3) return BytecodeFormat{profile, "d3dbc", ".d3dbc"};
+  return BytecodeFormat{profile, "dxbc-tpf", ".dxbc"};
 }
 
 std::string output_file_name(Target target, std::string_view pass_file, ShaderStage stage) {

@@ -2,6 +2,7 @@
 // targets, written under an output directory with index.json.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <span>
@@ -18,13 +19,22 @@ namespace penumbra {
 // "0.1.0": the version written into index.json's generator field.
 std::string_view penumbra_version();
 
+// Direct3D bytecode from the hlsl_dx9 and hlsl_dx10 text, by vkd3d-compiler
+// 2.1 or newer (../shared/tools/fetch-vkd3d installs it).
+struct HlslCompilerOptions {
+  std::filesystem::path compiler = {};  // vkd3d-compiler to run; empty: text only, no bytecode
+  std::chrono::milliseconds timeout{60'000};  // per file; a file still compiling fails its variant
+};
+
 struct BuildOptions {
-  int jobs = 1;  // shaders compiled in parallel (penumbra build -j)
+  int jobs = 1;                   // shaders compiled in parallel (penumbra build -j)
+  HlslCompilerOptions hlsl = {};  // the bytecode stage; off when hlsl.compiler is empty
 };
 
 struct BuildSummary {
   std::size_t variants = 0;  // variants written
-  std::size_t files = 0;     // shader files written
+  std::size_t files = 0;     // shader files written (text or SPIR-V)
+  std::size_t bytecode = 0;  // Direct3D bytecode files written beside the HLSL
 };
 
 // Compiles everything into a staging directory and swaps it into `out_dir`

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ namespace penumbra {
 struct PassFiles {
   std::string vert;  // relative to the library root
   std::string frag;
+  // Direct3D bytecode of each stage: hlsl_dx9/hlsl_dx10 built with an HLSL compiler.
+  std::optional<BytecodeFile> vert_bytecode;
+  std::optional<BytecodeFile> frag_bytecode;
 };
 
 struct LibraryVariant {

@@ -1,7 +1,7 @@
 // The build pipeline's unit of work (ShaderJob) and the uniform interface of
 // its stages: preprocess, compile, validate, optimize, cross-compile,
-// reflect, write. Each stage reads what earlier stages filled in and adds
-// its own product, like a SPIRV-Tools Pass.
+// reflect, write, bytecode. Each stage reads what earlier stages filled in
+// and adds its own product, like a SPIRV-Tools Pass.
 #pragma once
 
 #include <array>
@@ -20,6 +20,13 @@
 
 namespace penumbra {
 
+// A Direct3D bytecode file compiled from a stage's HLSL text.
+struct BytecodeFile {
+  std::string path;        // relative to the library root, beside the text
+  std::string profile;     // "vs_3_0", "ps_3_0", "vs_4_0" or "ps_4_0"
+  std::uint64_t size = 0;  // in bytes
+};
+
 // One shader stage of one pass, for one target, of one variant (or shared by
 // every variant when `variant` is null).
 struct ShaderJob {
@@ -31,12 +38,13 @@ struct ShaderJob {
   std::string source_path;  // in shaderlib/, e.g. "passes/query.frag"
 
   // Products, in pipeline order.
-  std::string preprocessed;          // preprocess: GLSL with includes and defines resolved
-  std::vector<std::uint32_t> spirv;  // compile (then optimize): SPIR-V 1.0
-  std::string text;                  // cross-compile: target source (empty for spirv)
-  ShaderInterface interface;         // reflect: of `spirv`
-  PassReflection reflection;         // reflect: this stage's part of the target's reflection
-  std::string output_path;           // write: file path relative to the output directory
+  std::string preprocessed;              // preprocess: GLSL with includes and defines resolved
+  std::vector<std::uint32_t> spirv;      // compile (then optimize): SPIR-V 1.0
+  std::string text;                      // cross-compile: target source (empty for spirv)
+  ShaderInterface interface;             // reflect: of `spirv`
+  PassReflection reflection;             // reflect: this stage's part of the target's reflection
+  std::string output_path;               // write: file path relative to the output directory
+  std::optional<BytecodeFile> bytecode;  // bytecode: hlsl_dx9/hlsl_dx10 with an HLSL compiler
   // Warnings found by stages (e.g. slot estimates), reported by the build.
   std::vector<Diagnostic> diagnostics;
   // hlsl_dx9 fragment: estimated ps_3_0 instruction slots (0: not estimated).

@@ -1,0 +1,151 @@
+// The bytecode stage: fast default variants get Direct3D bytecode beside
+// their HLSL, listed in index.json with its profile and size; the compiler's
+// errors, warnings and the time limit reach the build with the file and line.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "default_library.hpp"
+#include "hlsl_compiler.hpp"
+#include "penumbra/support/file.hpp"
+#include "stages/stages.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Fast to compile today; the whole default library is not (issue 11).
+const std::vector<std::string> kFastVariants = {"hard", "pcf_grid_k3", "pcss_b16_p16_whitepaper16",
+                                                "screen_blur_r4"};
+
+// What a file of `profile` starts with: D3D9's version token, or DXBC's magic.
+std::string expected_magic(const std::string& profile) {
+  if (profile == "vs_3_0") return std::string("\x00\x03\xfe\xff", 4);
+  if (profile == "ps_3_0") return std::string("\x00\x03\xff\xff", 4);
+  return "DXBC";
+}
+
+void expect_bytecode(const Library& library, const std::string& text,
+                     const std::optional<BytecodeFile>& bytecode, const std::string& profile) {
+  ASSERT_TRUE(bytecode.has_value()) << text << " has no bytecode listed";
+  std::filesystem::path expected = text;
+  expected.replace_extension(profile.ends_with("_3_0") ? ".d3dbc" : ".dxbc");
+  EXPECT_EQ(bytecode->path, expected.string());
+  EXPECT_EQ(bytecode->profile, profile) << text;
+  const Result<std::string> bytes = read_file(library.root / bytecode->path);
+  ASSERT_TRUE(bytes.ok()) << bytes.error().to_string();
+  EXPECT_GT(bytecode->size, 0u) << bytecode->path;
+  EXPECT_EQ(bytecode->size, bytes->size()) << bytecode->path;
+  EXPECT_EQ(bytes->substr(0, 4), expected_magic(profile)) << bytecode->path;
+}
+
+class DefaultBytecode : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(DefaultBytecode, EveryPassListsItsBytecodeWithProfileAndSize) {
+  auto compiler = recorded_hlsl_compiler();
+  ASSERT_TRUE(compiler.ok()) << compiler.error().to_string();
+  const Variant* variant = find_default_variant(GetParam());
+  ASSERT_NE(variant, nullptr) << GetParam();
+  const BuildOptions options{.jobs = 2, .hlsl = {.compiler = *compiler}};
+  auto built = TemporaryLibrary::build({*variant}, {Target::hlsl_dx9, Target::hlsl_dx10}, options);
+  ASSERT_TRUE(built.ok()) << built.error().to_string();
+  const Library& library = (*built)->library();
+  const LibraryVariant& read = library.variants.at(0);
+  ASSERT_FALSE(read.passes.empty());
+  for (const auto& [pass, by_target] : read.passes) {
+    ASSERT_EQ(by_target.size(), 2u) << to_string(pass);
+    for (const auto& [target, files] : by_target) {
+      SCOPED_TRACE(std::string(to_string(pass)) + ", " + std::string(to_string(target)));
+      const std::string model = target == Target::hlsl_dx9 ? "_3_0" : "_4_0";
+      expect_bytecode(library, files.vert, files.vert_bytecode, "vs" + model);
+      expect_bytecode(library, files.frag, files.frag_bytecode, "ps" + model);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Fast, DefaultBytecode, ::testing::ValuesIn(kFastVariants),
+                         [](const auto& param_info) { return test_name(param_info.param); });
+
+// The stage alone, on a file written under a scratch root.
+class BytecodeStageTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto compiler = recorded_hlsl_compiler();
+    ASSERT_TRUE(compiler.ok()) << compiler.error().to_string();
+    options_.compiler = *compiler;
+    std::filesystem::remove_all(root_);
+  }
+  void TearDown() override { std::filesystem::remove_all(root_); }
+
+  // A fragment job of `target` whose text, `text`, is written at `path`.
+  ShaderJob written_job(Target target, const std::string& path, const std::string& text) {
+    ShaderJob job;
+    job.target = target;
+    job.stage = ShaderStage::fragment;
+    job.source_path = "passes/query.frag";
+    job.output_path = path;
+    std::filesystem::create_directories((root_ / path).parent_path());
+    std::ofstream(root_ / path) << text;
+    return job;
+  }
+
+  std::filesystem::path root_ = std::filesystem::path(::testing::TempDir()) /
+                                ("penumbra-bytecode-stage-" + std::to_string(::getpid()));
+  HlslCompilerOptions options_;
+};
+
+TEST_F(BytecodeStageTest, CompilerErrorNamesTheFileAndLine) {
+  ShaderJob job = written_job(Target::hlsl_dx10, "hlsl_dx10/broken/query.frag.hlsl",
+                              "float4 main() : SV_Target\n{\n"
+                              "    float4 v = float4(1, 2, 3, 4) garbage;\n"
+                              "    return v;\n}\n");
+  const Status status = BytecodeStage(root_, options_).process(job);
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().kind, Error::Kind::compile);
+  EXPECT_THAT(status.error().message, HasSubstr("hlsl_dx10/broken/query.frag.hlsl:3:"));
+  EXPECT_THAT(status.error().message, HasSubstr("ps_4_0"));
+  EXPECT_THAT(status.error().message, HasSubstr("syntax error"));
+  EXPECT_THAT(status.error().message, HasSubstr("float4 v = float4(1, 2, 3, 4) garbage;"));
+  EXPECT_FALSE(job.bytecode.has_value());
+  EXPECT_FALSE(std::filesystem::exists(root_ / "hlsl_dx10/broken/query.frag.dxbc"));
+}
+
+TEST_F(BytecodeStageTest, CompilerWarningIsABuildWarningNamingTheFile) {
+  ShaderJob job = written_job(Target::hlsl_dx10, "hlsl_dx10/truncates/query.frag.hlsl",
+                              "float main() : SV_Target\n{\n"
+                              "    float4 v = float4(1, 2, 3, 4);\n    return v;\n}\n");
+  const Status status = BytecodeStage(root_, options_).process(job);
+  ASSERT_TRUE(status.ok()) << status.error().to_string();
+  ASSERT_EQ(job.diagnostics.size(), 1u);
+  EXPECT_EQ(job.diagnostics[0].severity, Severity::warning);
+  EXPECT_THAT(job.diagnostics[0].message, HasSubstr("hlsl_dx10/truncates/query.frag.hlsl:4:"));
+  EXPECT_THAT(job.diagnostics[0].message, HasSubstr("W5300"));
+  ASSERT_TRUE(job.bytecode.has_value());
+  EXPECT_EQ(job.bytecode->path, "hlsl_dx10/truncates/query.frag.dxbc");
+}
+
+TEST_F(BytecodeStageTest, TimeLimitFailsTheFile) {
+  const Variant* hard = find_default_variant("hard");
+  ASSERT_NE(hard, nullptr);
+  auto pass = compile_pass(*hard, Target::hlsl_dx9, PassKind::query);
+  ASSERT_TRUE(pass.ok()) << pass.error().to_string();
+  ShaderJob job = written_job(Target::hlsl_dx9, "hlsl_dx9/hard/query.frag.hlsl", pass->frag.text);
+  options_.timeout = std::chrono::milliseconds(1);
+  const Status status = BytecodeStage(root_, options_).process(job);
+  ASSERT_FALSE(status.ok());
+  EXPECT_THAT(status.error().message,
+              HasSubstr("hlsl_dx9/hard/query.frag.hlsl: no bytecode after 1 ms"));
+  EXPECT_FALSE(job.bytecode.has_value());
+}
+
+TEST_F(BytecodeStageTest, TargetsWithoutBytecodePassThrough) {
+  ShaderJob job = written_job(Target::glsl450, "glsl450/hard/query.frag", "not HLSL");
+  const Status status = BytecodeStage(root_, options_).process(job);
+  ASSERT_TRUE(status.ok()) << status.error().to_string();
+  EXPECT_FALSE(job.bytecode.has_value());
+}
+
+}  // namespace
+}  // namespace penumbra::testing
