@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <regex>
 
 #include "default_library.hpp"
 #include "hlsl_compiler.hpp"
@@ -67,6 +68,29 @@ TEST_P(DefaultBytecode, EveryPassListsItsBytecodeWithProfileAndSize) {
 
 INSTANTIATE_TEST_SUITE_P(Fast, DefaultBytecode, ::testing::ValuesIn(kFastVariants),
                          [](const auto& param_info) { return test_name(param_info.param); });
+
+// Every hlsl_dx9 and hlsl_dx10 file of the default library compiles with
+// the real compiler, with no compiler warning (W####): SampleCmp on a
+// comparison texture declared Texture2D<float> truncates nothing.
+TEST(DefaultLibraryBytecode, EveryDirect3DFileCompilesWithoutCompilerWarnings) {
+  auto compiler = recorded_hlsl_compiler();
+  ASSERT_TRUE(compiler.ok()) << compiler.error().to_string();
+  std::vector<Variant> variants = default_variants();
+  for (Variant& variant : variants) variant.targets = {Target::hlsl_dx9, Target::hlsl_dx10};
+  const std::filesystem::path out = std::filesystem::path(::testing::TempDir()) /
+                                    ("penumbra-bytecode-all-" + std::to_string(::getpid()));
+  const std::regex compiler_warning(R"(\bW\d{4}\b)");
+  std::vector<std::string> warnings;
+  const auto built = build_library(variants, out, {.jobs = 2, .hlsl = {.compiler = *compiler}},
+                                   [&](const Diagnostic& d) {
+                                     if (std::regex_search(d.message, compiler_warning)) {
+                                       warnings.push_back(d.where + ": " + d.message);
+                                     }
+                                   });
+  std::filesystem::remove_all(out);
+  ASSERT_TRUE(built.ok()) << built.error().to_string();
+  for (const std::string& warning : warnings) ADD_FAILURE() << warning;
+}
 
 // The stage alone, on a file written under a scratch root.
 class BytecodeStageTest : public ::testing::Test {

@@ -4,6 +4,7 @@
 
 #include "penumbra/compiler/targets.hpp"
 #include "stages/stages.hpp"
+#include "targets/dx10_comparison_textures.hpp"
 #include "targets/dx9_registers.hpp"
 #include "targets/rules.hpp"
 
@@ -64,6 +65,7 @@ Status CrossCompileStage::process(ShaderJob& job) const {
                       std::string("cannot express this for ") + std::string(to_string(job.target)) +
                           ": " + error.what());
   }
+  if (job.target == Target::hlsl_dx10) job.text = dx10_comparison_textures_as_scalar(job.text);
   if (job.target == Target::hlsl_dx9) {
     auto rewritten = dx9_explicit_registers(job.text);
     if (!rewritten)

@@ -12,7 +12,7 @@ cbuffer ShadowParams : register(b0)
 
 Texture2D<float4> shadow_depth : register(t1);
 SamplerState _shadow_depth_sampler : register(s1);
-Texture2D<float4> shadow_cmp : register(t2);
+Texture2D<float> shadow_cmp : register(t2);
 SamplerComparisonState _shadow_cmp_sampler : register(s2);
 Texture2D<float4> receivers : register(t3);
 SamplerState _receivers_sampler : register(s3);

@@ -10,7 +10,7 @@ cbuffer ShadowParams : register(b0)
     float4 params_minmax_info : packoffset(c5);
 };
 
-Texture2D<float4> shadow_cmp : register(t2);
+Texture2D<float> shadow_cmp : register(t2);
 SamplerComparisonState _shadow_cmp_sampler : register(s2);
 Texture2D<float4> shadow_depth : register(t1);
 SamplerState _shadow_depth_sampler : register(s1);

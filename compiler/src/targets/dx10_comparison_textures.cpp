@@ -1,0 +1,20 @@
+#include "targets/dx10_comparison_textures.hpp"
+
+#include "penumbra/model/shader_contract.hpp"
+
+namespace penumbra {
+
+std::string dx10_comparison_textures_as_scalar(const std::string& hlsl) {
+  std::string out = hlsl;
+  for (const TextureDescription& texture : all_textures()) {
+    if (!texture.sampler.comparison) continue;
+    const std::string vector = "Texture2D<float4> " + std::string(texture.name) + " :";
+    const std::string scalar = "Texture2D<float> " + std::string(texture.name) + " :";
+    for (auto at = out.find(vector); at != std::string::npos; at = out.find(vector, at)) {
+      out.replace(at, vector.size(), scalar);
+    }
+  }
+  return out;
+}
+
+}  // namespace penumbra
