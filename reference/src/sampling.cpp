@@ -1,4 +1,4 @@
-// Texel addressing follows the contract: texel i covers u in [i/W, (i+1)/W),
+// Texel addressing follows docs/shader-interface.md: texel i covers u in [i/W, (i+1)/W),
 // its centre is at (i + 0.5) / W, and reads outside the map clamp to the edge.
 #include "penumbra/reference/sampling.hpp"
 

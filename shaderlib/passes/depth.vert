@@ -1,6 +1,6 @@
 #version 450
 // The NVIDIA PCSS whitepaper's step 1: render shadow casters from the light. Positions
-// are in light-view space; the projection is the contract's
+// are in light-view space; the projection is docs/shader-interface.md's
 // u = 0.5 + (x n / z) / Fw, with clip z spanning [near_plane, 1/depth_scale].
 #extension GL_GOOGLE_include_directive : require
 #include "variant.glsl"

@@ -28,7 +28,7 @@ test::TestLight unscaled() {
   return light;
 }
 
-// The contract's bilinear comparison: the four texels around
+// docs/shader-interface.md's bilinear comparison: the four texels around
 // (u W - 0.5, v H - 0.5), clamped to the edge, lit when ref <= depth.
 float bilinear_comparison(const FloatImage& map, float u, float v, float ref) {
   const float x = u * static_cast<float>(map.width) - 0.5f;

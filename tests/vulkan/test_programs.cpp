@@ -133,7 +133,7 @@ std::unique_ptr<Engine> make_engine(bool validation) {
 
 void add_caster_quad(std::vector<std::array<float, 3>>& triangles, const TestLight& light, float u0,
                      float u1, float v0, float v1, float z) {
-  // The contract's u = 0.5 + (x n / z) / Fw solved for x (and v for y).
+  // docs/shader-interface.md's u = 0.5 + (x n / z) / Fw solved for x (and v for y).
   const auto x = [&](float u) { return (u - 0.5f) * z * light.frustum_width / light.near_plane; };
   const std::array<float, 3> a{x(u0), x(v0), z};
   const std::array<float, 3> b{x(u1), x(v0), z};

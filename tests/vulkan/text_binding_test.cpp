@@ -87,7 +87,7 @@ TEST_P(TextBindingTest, ADeclarationTheRecordLacksIsNamed) {
 
 TEST_P(TextBindingTest, ATextureTheTextLacksIsNamed) {
   TextureBinding extra = *texture("receivers");
-  extra.name = "scene_colour";  // a texture of the contract that no query pass reads
+  extra.name = "scene_colour";  // a texture of shader_contract.hpp that no query pass reads
   extra.binding = extra.binding ? std::optional<std::uint32_t>(6) : std::nullopt;
   if (!extra.reg.empty()) extra.reg = extra.reg.substr(0, 1) + "6";
   if (!extra.sampler.reg.empty()) extra.sampler.reg = "s6";

@@ -66,7 +66,7 @@ class TargetReflector {
     for (const UniformBlock& block : iface.uniform_blocks) {
       if (block.type_name != kParamsBlock || block.binding != kParamsSlot) {
         return fail("uniform block '" + block.type_name + "' at binding " +
-                    std::to_string(block.binding) + " is not the contract's " +
+                    std::to_string(block.binding) + " is not shader_contract.hpp's " +
                     std::string(kParamsBlock) + " at binding " + std::to_string(kParamsSlot));
       }
       params(block, out);

@@ -1,6 +1,6 @@
 // One target's reflection of a pass (index.json `reflection.<pass>.<target>`),
 // written from the shader contract and the SPIR-V reflection of each stage: the SPIR-V says which
-// resources and members survived compilation, the contract and the target's rules say how the
+// resources and members survived compilation, shader_contract.hpp and the target's rules say how the
 // emitted text names, numbers and types them. Tests prove each record against the text with parsers
 // of its own (tests/interface/).
 #pragma once
@@ -14,8 +14,8 @@ namespace penumbra {
 // One stage's part of the pass's reflection: its bindings, and the vertex
 // inputs (vertex stage) or the render targets, depth target and extensions
 // (fragment stage). Errors (compile, where = the pass and target) name a
-// resource the contract lacks or one whose binding differs from the
-// contract's.
+// resource shader_contract.hpp lacks or one whose binding differs from the
+// one there.
 Result<PassReflection> reflect_target(Target target, PassKind pass, const ShaderInterface& iface);
 
 // The pass's reflection from the parts of its two stages.

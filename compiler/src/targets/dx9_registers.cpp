@@ -46,7 +46,7 @@ Result<std::string> constants_as_registers(const std::string& hlsl, int& next_re
   return out;
 }
 
-// Every sampler of the contract at s<slot>.
+// Every sampler at s<slot>, its slot in shader_contract.hpp.
 Result<std::string> samplers_at_slots(const std::string& hlsl) {
   static const std::regex sampler(R"(uniform sampler2D (\w+);)");
   std::string out;

@@ -6,7 +6,7 @@
 //   Every ShadowParams member is a float4, so nothing is repacked.
 // - SPIRV-Cross's `gl_HalfPixel` (vertex shaders) takes the register after
 //   ShadowParams, half_pixel_register(), in every vertex shader.
-// - `uniform sampler2D name;` gets `register(s#)`, # the contract's slot.
+// - `uniform sampler2D name;` gets `register(s#)`, # its slot in shader_contract.hpp.
 #pragma once
 
 #include <string>

@@ -30,7 +30,7 @@ struct BlockSlot {
   std::vector<const ConstantBinding*> members;
 };
 
-// A texture the program samples, the contract's image `texture` on `unit`.
+// A texture the program samples, shader_contract.hpp's image `texture` on `unit`.
 struct TextureSlot {
   const TextureBinding* binding = nullptr;  // in the reflection
   TextureId texture = TextureId::shadow_depth;

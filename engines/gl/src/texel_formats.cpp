@@ -5,7 +5,7 @@
 namespace penumbra::gl {
 namespace {
 
-// Every texture of the contract holds 32-bit floats (or 32-bit float depth).
+// Every texture of shader_contract.hpp holds 32-bit floats (or 32-bit float depth).
 constexpr TexelFormat kFormats[] = {
     {"GL_R32F", GL_R32F, GL_RED, 1},
     {"GL_RG32F", GL_RG32F, GL_RG, 2},

@@ -1,7 +1,7 @@
 // The passes' images as GL textures, in the formats the reflection names
 // (texel_formats.hpp): the caller's images uploaded, the passes' targets,
 // the min-max mip's chain, and readbacks. Row 0 of an image is GL's first
-// row (t = 0, window y = 0), the contract's row j = 0: nothing flips.
+// row (t = 0, window y = 0), docs/shader-interface.md's row j = 0: nothing flips.
 #pragma once
 
 #include <string>

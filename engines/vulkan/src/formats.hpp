@@ -41,16 +41,16 @@ inline constexpr ColourTarget kMinmaxTarget{"R32G32_SFLOAT", 2};           // kM
 inline constexpr ColourTarget kScreenFactorTarget{"R32G32_SFLOAT", 2};     // kScreenFactorFormat
 inline constexpr ColourTarget kCompositeTarget{"R32G32B32A32_SFLOAT", 4};  // kCompositeFormat
 
-// The Vulkan format of a contract format (d32_float: D32_SFLOAT).
+// The Vulkan format of a TextureFormat (d32_float: D32_SFLOAT).
 VkFormat vk_format(TextureFormat format);
 
-// The contract format that `target`'s API calls `api_name` (api_format()'s
+// The TextureFormat that `target`'s API calls `api_name` (api_format()'s
 // inverse), as index.json's reflection writes formats. A name the target
 // does not use is a bad_input Error (where = `where`).
 Result<TextureFormat> reflected_format(Target target, std::string_view api_name,
                                        std::string_view where);
 
-// `format` in `target`'s API terms, or "an unknown format" when no contract
+// `format` in `target`'s API terms, or "an unknown format" when no TextureFormat
 // format is a `format` image: for messages.
 std::string_view api_name(Target target, VkFormat format);
 

@@ -14,7 +14,7 @@ namespace penumbra::detail {
 
 // `buffer.size` bytes, each constant at its offset holding the first size/4
 // floats of the ParamBlock entry named by its parameter (all four for the
-// contract's vec4 members), and the half-pixel constant zero; bytes no
+// ShadowParams' vec4 members), and the half-pixel constant zero; bytes no
 // constant covers are zero. A parameter the ParamBlock lacks, or a constant
 // that is not 1 to 4 floats inside the buffer, is a bad_input Error (where =
 // `pass`) naming it.

@@ -37,7 +37,7 @@ Result<std::optional<vk::Buffer>> create_vertices(const vk::Device& device,
 }
 
 // Vulkan's framebuffer y grows with the row index, so with y = 0 and a
-// positive height clip y = -1 lands on row 0, the contract's v = 0. A vertex
+// positive height clip y = -1 lands on row 0, docs/shader-interface.md's v = 0. A vertex
 // stage written for Direct3D's viewport (y up) negates clip y; a negative
 // height, anchored at the bottom edge, negates it back.
 VkViewport pass_viewport(VkExtent2D extent, bool d3d_viewport) {

@@ -19,7 +19,7 @@
 
 namespace penumbra::detail {
 
-// An image a pass can bind as one of the contract's textures.
+// An image a pass can bind as one of shader_contract.hpp's textures.
 struct OfferedImage {
   TextureId texture;
   const vk::Image* image = nullptr;

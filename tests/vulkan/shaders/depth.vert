@@ -1,5 +1,5 @@
 #version 450
-// Depth pass: light-view position to clip space, the contract's projection
+// Depth pass: light-view position to clip space, docs/shader-interface.md's projection
 // u = 0.5 + (x n / z) / Fw, with clip z spanning [n, 1/depth_scale].
 // FLIP_Y negates clip y at the end, as Direct3D shaders do.
 #extension GL_GOOGLE_include_directive : require

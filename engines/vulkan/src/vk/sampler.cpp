@@ -8,7 +8,7 @@ Result<Sampler> create_sampler(VkDevice device, const SamplerDesc& desc) {
   VkSamplerCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   // Linear filtering of a comparison sampler blends the four compare results:
-  // the contract's bilinear comparison.
+  // docs/shader-interface.md's bilinear comparison.
   info.magFilter = desc.filter;
   info.minFilter = desc.filter;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;

@@ -1,4 +1,4 @@
-// The texture reads the techniques are built from, as the contract defines
+// The texture reads the techniques are built from, as docs/techniques.md defines
 // them (section 1). Coordinates are shadow-map uv; depths are linear z.
 #pragma once
 

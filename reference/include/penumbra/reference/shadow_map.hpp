@@ -1,5 +1,5 @@
 // A read-only view of a shadow map holding *linear* light-view z, with the
-// contract's texel addressing (clamp-to-edge).
+// docs/shader-interface.md's texel addressing (clamp-to-edge).
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // PFM image files: "Pf" (one channel) and "PF" (three). The first stored row
-// is row j = 0, as the contract fixes (no vertical flip on read or write).
+// is row j = 0, as docs/shader-interface.md fixes (no vertical flip on read or write).
 #pragma once
 
 #include <filesystem>
