@@ -1,8 +1,8 @@
 // One target's reflection of a pass (index.json `reflection.<pass>.<target>`),
 // written from the shader contract and the SPIR-V reflection of each stage: the SPIR-V says which
-// resources and members survived compilation, shader_contract.hpp and the target's rules say how the
-// emitted text names, numbers and types them. Tests prove each record against the text with parsers
-// of its own (tests/interface/).
+// resources and members survived compilation, shader_contract.hpp and the target's rules say how
+// the emitted text names, numbers and types them. Tests prove each record against the text with
+// parsers of its own (tests/interface/).
 #pragma once
 
 #include "penumbra/compiler/reflection.hpp"
