@@ -2,16 +2,10 @@
 
 #include <string>
 
+#include "penumbra/compiler/targets.hpp"
+
 namespace penumbra {
 namespace {
-
-bool is_gl(Target target) {
-  return target == Target::glsl450 || target == Target::glsl330 || target == Target::essl300;
-}
-
-bool is_hlsl(Target target) {
-  return target == Target::hlsl_dx10 || target == Target::hlsl_dx9;
-}
 
 class TargetReflector {
  public:
@@ -98,8 +92,13 @@ class TargetReflector {
     const std::string instance(kParamsInstance);
     BlockBinding binding{param_block, std::nullopt, std::nullopt, "", block.size, {}};
     for (const BlockMember& member : block.members) {
-      ConstantBinding constant{
-          "", member.name, is_hlsl(target_) ? "float4" : "vec4", member.offset, member.size, "", 0};
+      ConstantBinding constant{"",
+                               member.name,
+                               traits(target_).is_hlsl ? "float4" : "vec4",
+                               member.offset,
+                               member.size,
+                               "",
+                               0};
       switch (target_) {
         case Target::spirv:
           constant.name = member.name;
@@ -182,13 +181,13 @@ class TargetReflector {
     out.name = input.name;
     out.components = input.components;
     const std::size_t row = input.components - 1;
-    if (is_hlsl(target_)) {
+    if (traits(target_).is_hlsl) {
       // SPIRV-Cross names location N's input TEXCOORD<N> in both shader models.
       out.semantic = "TEXCOORD" + std::to_string(input.location);
       out.format = std::string(target_ == Target::hlsl_dx9 ? kD3d9[row] : kDxgi[row]);
     } else {
       out.location = input.location;
-      out.format = is_gl(target_) ? "GL_FLOAT" : std::string(kVulkan[row]);
+      out.format = traits(target_).is_text ? "GL_FLOAT" : std::string(kVulkan[row]);
     }
     return out;
   }
