@@ -83,6 +83,23 @@ std::string_view api_format(Target target, TextureFormat format) {
   return kFormats[static_cast<std::size_t>(format)][static_cast<std::size_t>(api_of(target))];
 }
 
+std::optional<TextureFormat> parse_api_format(Target target, std::string_view name) {
+  for (std::size_t i = 0; i < std::size(kFormats); ++i) {
+    const auto format = static_cast<TextureFormat>(i);
+    if (api_format(target, format) == name) return format;
+  }
+  return std::nullopt;
+}
+
+std::string allowed_api_formats(Target target) {
+  std::string out;
+  for (std::size_t i = 0; i < std::size(kFormats); ++i) {
+    out +=
+        (out.empty() ? "" : ", ") + std::string(api_format(target, static_cast<TextureFormat>(i)));
+  }
+  return out;
+}
+
 std::string_view api_view_format(Target target, TextureFormat format) {
   if (api_of(target) != Api::d3d10) return "";
   return format == TextureFormat::d32_float ? "DXGI_FORMAT_R32_FLOAT" : api_format(target, format);

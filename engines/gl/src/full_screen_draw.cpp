@@ -45,7 +45,7 @@ Result<Framebuffer> framebuffer_for(const PassProgram& pass, const Texture& targ
     char code[16];
     std::snprintf(code, sizeof code, "0x%04X", status);
     return make_error(Error::Kind::device, "glCheckNamedFramebufferStatus",
-                      "the " + std::string(pass.target_format->name) + " target of " + what +
+                      "the " + std::string(pass.target_format->name()) + " target of " + what +
                           " is not renderable: status " + code);
   }
   return framebuffer;

@@ -22,9 +22,10 @@ Result<MinmaxMip> build_minmax_mip(const GlMinmaxPasses& passes, PassInputs& inp
   if (!reduce) return reduce.error();
   if (init->target_format != reduce->target_format) {
     return make_error(Error::Kind::bad_input, reduce->where,
-                      "its render target is " + std::string(reduce->target_format->name) +
+                      "its render target is " + std::string(reduce->target_format->name()) +
                           " but the minmax_init pass's is " +
-                          std::string(init->target_format->name) + "; both draw levels of one mip");
+                          std::string(init->target_format->name()) +
+                          "; both draw levels of one mip");
   }
   MinmaxMip mip;
   mip.format = init->target_format;

@@ -22,7 +22,7 @@ Result<GLuint> PassInputs::texture_for(TextureId texture, const TextureBinding& 
       return make_error(Error::Kind::bad_input, where,
                         "texture '" + binding.name + "' is read as " + binding.format +
                             " by the reflection, but " + drawn->second.origin + " is " +
-                            std::string(drawn->second.format->name));
+                            std::string(drawn->second.format->name()));
     }
     return drawn->second.name;
   }

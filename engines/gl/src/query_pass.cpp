@@ -18,7 +18,7 @@ Result<Texture> draw_query(const PassProgram& query, const std::optional<GlMinma
                            PassInputs& inputs, const QueryInputs& images) {
   if (query.target_format->channels < 2) {
     return make_error(Error::Kind::bad_input, query.where,
-                      "its render target is " + std::string(query.target_format->name) +
+                      "its render target is " + std::string(query.target_format->name()) +
                           "; the query writes (visibility, texel reads), two channels");
   }
   // Only what the driver reports active decides, so passes given to a query

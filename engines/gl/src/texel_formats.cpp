@@ -1,30 +1,31 @@
 #include "texel_formats.hpp"
 
+#include <cstddef>
 #include <string>
 
 namespace penumbra::gl {
 namespace {
 
-// Every texture of shader_contract.hpp holds 32-bit floats (or 32-bit float depth).
+// Every texture of shader_contract.hpp holds 32-bit floats (or 32-bit float
+// depth). Indexed by TextureFormat.
 constexpr TexelFormat kFormats[] = {
-    {"GL_R32F", GL_R32F, GL_RED, 1},
-    {"GL_RG32F", GL_RG32F, GL_RG, 2},
-    {"GL_RGBA32F", GL_RGBA32F, GL_RGBA, 4},
-    {"GL_DEPTH_COMPONENT32F", GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1},
+    {TextureFormat::r32_float, GL_R32F, GL_RED, 1},
+    {TextureFormat::rg32_float, GL_RG32F, GL_RG, 2},
+    {TextureFormat::rgba32_float, GL_RGBA32F, GL_RGBA, 4},
+    {TextureFormat::d32_float, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1},
 };
 
 }  // namespace
 
 Result<const TexelFormat*> texel_format(std::string_view name, const std::string& where,
                                         const std::string& what) {
-  std::string known;
-  for (const TexelFormat& format : kFormats) {
-    if (format.name == name) return &format;
-    known += (known.empty() ? "" : ", ") + std::string(format.name);
+  if (auto format = parse_api_format(Target::glsl450, name)) {
+    return &kFormats[static_cast<std::size_t>(*format)];
   }
   return make_error(Error::Kind::bad_input, where,
                     what + " has format '" + std::string(name) +
-                        "', which the GL engine does not create; it creates " + known);
+                        "', which the GL engine does not create; it creates " +
+                        allowed_api_formats(Target::glsl450));
 }
 
 }  // namespace penumbra::gl

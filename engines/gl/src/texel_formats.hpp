@@ -5,15 +5,19 @@
 #include <string_view>
 
 #include "gl_api.hpp"
+#include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra::gl {
 
 struct TexelFormat {
-  std::string_view name;  // as the reflection writes it: "GL_RG32F"
+  TextureFormat format;
   GLenum internal_format;
   GLenum pixel_format;  // of uploads and readbacks, as floats: GL_RG, GL_DEPTH_COMPONENT
   int channels;
+
+  // As the reflection writes it: "GL_RG32F" (api_format()).
+  std::string_view name() const { return api_format(Target::glsl450, format); }
 };
 
 // The format named `name`. Errors (bad_input, `where`): a name outside the

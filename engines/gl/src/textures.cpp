@@ -71,7 +71,7 @@ Result<Texture> upload(const FloatImage& image, const TexelFormat& format,
   glTextureStorage2D(texture.get(), 1, format.internal_format, image.width, image.height);
   glTextureSubImage2D(texture.get(), 0, 0, 0, image.width, image.height, format.pixel_format,
                       GL_FLOAT, texels.data());
-  PENUMBRA_TRY(check_gl("uploading " + what + " (" + std::string(format.name) + ")"));
+  PENUMBRA_TRY(check_gl("uploading " + what + " (" + std::string(format.name()) + ")"));
   return texture;
 }
 
@@ -79,7 +79,7 @@ Result<Texture> create_target(const TexelFormat& format, int width, int height,
                               const std::string& what) {
   Texture texture = create_texture_2d();
   glTextureStorage2D(texture.get(), 1, format.internal_format, width, height);
-  PENUMBRA_TRY(check_gl("creating " + what + " (" + std::string(format.name) + ")"));
+  PENUMBRA_TRY(check_gl("creating " + what + " (" + std::string(format.name()) + ")"));
   return texture;
 }
 
@@ -93,7 +93,7 @@ Result<Texture> create_chain(const TexelFormat& format, int side, int levels,
   for (int level = 0; level < levels; ++level) {
     glClearTexImage(texture.get(), level, format.pixel_format, GL_FLOAT, far);
   }
-  PENUMBRA_TRY(check_gl("creating " + what + " (" + std::string(format.name) + ", " +
+  PENUMBRA_TRY(check_gl("creating " + what + " (" + std::string(format.name()) + ", " +
                         std::to_string(levels) + " levels)"));
   return texture;
 }

@@ -104,15 +104,11 @@ VkFormat vk_format(TextureFormat format) {
 
 Result<TextureFormat> reflected_format(Target target, std::string_view api_name,
                                        std::string_view where) {
-  std::string allowed;
-  for (TextureFormat format : kTextureFormats) {
-    if (api_format(target, format) == api_name) return format;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(api_format(target, format));
-  }
+  if (auto format = parse_api_format(target, api_name)) return *format;
   return make_error(Error::Kind::bad_input, std::string(where),
                     "index.json's reflection gives the format '" + std::string(api_name) +
                         "', which is not a " + std::string(to_string(target)) +
-                        " format of the shader contract (" + allowed + ")");
+                        " format of the shader contract (" + allowed_api_formats(target) + ")");
 }
 
 std::string_view api_name(Target target, VkFormat format) {

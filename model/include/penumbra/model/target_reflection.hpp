@@ -111,6 +111,10 @@ struct PassReflection {
 // "DXGI_FORMAT_R32G32_FLOAT", "D3DFMT_G32R32F". d32_float is the texture a
 // depth map is created as: "DXGI_FORMAT_R32_TYPELESS" for Direct3D 10.
 std::string_view api_format(Target target, TextureFormat format);
+// The format `target`'s API calls `name` (api_format()'s inverse), or none.
+std::optional<TextureFormat> parse_api_format(Target target, std::string_view name);
+// "GL_R32F, GL_RG32F, ...": every api_format() of `target`, for messages.
+std::string allowed_api_formats(Target target);
 // Direct3D 10's shader-resource view of `format` ("DXGI_FORMAT_R32_FLOAT"
 // for d32_float); empty for other targets.
 std::string_view api_view_format(Target target, TextureFormat format);
