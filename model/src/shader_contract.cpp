@@ -27,6 +27,11 @@ constexpr TextureDescription kTextures[] = {
      "screen_blur: the screen-sized shadow factor of the previous pass, .x"},
     {TextureId::scene_colour, "scene_colour", 7, TextureFormat::rgba32_float,
      TextureFormat::rgba32_float, kPoint, false, "screen_blur: the scene colour, RGBA"},
+    {TextureId::pcf_disk, "pcf_disk", 8, TextureFormat::rg32_float, TextureFormat::rg32_float,
+     kPoint, false, "the PCF disk: point i (x, y) at texel (i, 0), one row", true},
+    {TextureId::blocker_disk, "blocker_disk", 9, TextureFormat::rg32_float,
+     TextureFormat::rg32_float, kPoint, false,
+     "the blocker-search disk: point i (x, y) at texel (i, 0), one row", true},
 };
 
 constexpr ParamMember kParams[] = {
@@ -40,8 +45,9 @@ constexpr ParamMember kParams[] = {
 
 constexpr TextureId kMinmaxInitReads[] = {TextureId::shadow_depth};
 constexpr TextureId kMinmaxReduceReads[] = {TextureId::minmax_source};
-constexpr TextureId kQueryReads[] = {TextureId::receivers, TextureId::shadow_depth,
-                                     TextureId::shadow_cmp, TextureId::shadow_minmax};
+constexpr TextureId kQueryReads[] = {TextureId::receivers,  TextureId::shadow_depth,
+                                     TextureId::shadow_cmp, TextureId::shadow_minmax,
+                                     TextureId::pcf_disk,   TextureId::blocker_disk};
 constexpr TextureId kBlurReads[] = {TextureId::screen_factor, TextureId::receivers};
 constexpr TextureId kCompositeReads[] = {TextureId::screen_factor, TextureId::scene_colour};
 
@@ -164,8 +170,34 @@ static_assert(std::size(kTechniques) == kAllTechniques.size());
 
 }  // namespace
 
+std::uint32_t texel_components(TextureFormat format) {
+  switch (format) {
+    case TextureFormat::rg32_float:
+      return 2;
+    case TextureFormat::rgba32_float:
+      return 4;
+    case TextureFormat::r32_float:
+    case TextureFormat::d32_float:
+      return 1;
+  }
+  return 1;
+}
+
 const TextureDescription& describe(TextureId texture) {
   return kTextures[static_cast<std::size_t>(texture)];
+}
+
+std::optional<TextureContents> texture_contents(TextureId texture, const Variant& variant) {
+  const std::optional<Disk>* disk = texture == TextureId::pcf_disk       ? &variant.pcf_disk
+                                    : texture == TextureId::blocker_disk ? &variant.blocker_disk
+                                                                         : nullptr;
+  if (!disk || !*disk) return std::nullopt;
+  TextureContents contents{static_cast<std::uint32_t>((*disk)->points.size()), 1, {}};
+  for (const Point2& point : (*disk)->points) {
+    contents.texels.push_back(point[0]);
+    contents.texels.push_back(point[1]);
+  }
+  return contents;
 }
 
 std::span<const TextureDescription> all_textures() {

@@ -178,6 +178,20 @@ void from_json(const nlohmann::json& j, SamplerBinding& s) {
   get(j, "register", s.reg);
 }
 
+void to_json(nlohmann::json& j, const TextureContents& c) {
+  j = {{"width", c.width}, {"height", c.height}, {"texels", c.texels}};
+}
+void from_json(const nlohmann::json& j, TextureContents& c) {
+  j.at("width").get_to(c.width);
+  j.at("height").get_to(c.height);
+  j.at("texels").get_to(c.texels);
+  const std::size_t texels = std::size_t{c.width} * c.height;
+  if (texels == 0 || c.texels.size() % texels != 0 || c.texels.size() / texels > 4) {
+    throw nlohmann::json::other_error::create(
+        501, "texels must hold 1 to 4 floats for each of the width x height texels", &j);
+  }
+}
+
 void to_json(nlohmann::json& j, const TextureBinding& t) {
   j = {{"name", t.name}, {"type", t.type}, {"format", t.format}, {"sampler", t.sampler}};
   put(j, "set", t.set);
@@ -185,6 +199,7 @@ void to_json(nlohmann::json& j, const TextureBinding& t) {
   put(j, "register", t.reg);
   put(j, "view_format", t.view_format);
   if (t.mipmapped) j["mipmapped"] = true;
+  if (t.contents) j["contents"] = *t.contents;
 }
 void from_json(const nlohmann::json& j, TextureBinding& t) {
   j.at("name").get_to(t.name);
@@ -196,6 +211,7 @@ void from_json(const nlohmann::json& j, TextureBinding& t) {
   get(j, "register", t.reg);
   get(j, "view_format", t.view_format);
   t.mipmapped = j.value("mipmapped", false);
+  if (j.contains("contents")) t.contents = j.at("contents").get<TextureContents>();
 }
 
 void to_json(nlohmann::json& j, const StageBindings& s) {

@@ -8,8 +8,8 @@
 float minmax_pcf_count(vec2 first, float reference) {
   float count = 0.0;
 #if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
-  for (int j = 0; j < KERNEL_SIZE; ++j) {
-    for (int i = 0; i < KERNEL_SIZE; ++i) {
+  PENUMBRA_SAMPLE_LOOP for (int j = 0; j < KERNEL_SIZE; ++j) {
+    PENUMBRA_SAMPLE_LOOP for (int i = 0; i < KERNEL_SIZE; ++i) {
       vec2 texel = first + vec2(float(i), float(j));
       bool inside = all(greaterThanEqual(texel, vec2(0.0))) &&
                     all(lessThan(texel, params.shadow_map_size.xy));

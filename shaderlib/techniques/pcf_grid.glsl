@@ -3,8 +3,8 @@
 float shadow_visibility(vec3 query) {
   const int radius = (KERNEL_SIZE - 1) / 2;
   float sum = 0.0;
-  for (int j = -radius; j <= radius; ++j) {
-    for (int i = -radius; i <= radius; ++i) {
+  PENUMBRA_SAMPLE_LOOP for (int j = -radius; j <= radius; ++j) {
+    PENUMBRA_SAMPLE_LOOP for (int i = -radius; i <= radius; ++i) {
       sum += shadow_compare_bilinear(query.xy + vec2(float(i), float(j)) * TEXEL_SIZE, query.z);
     }
   }

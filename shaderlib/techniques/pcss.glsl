@@ -10,8 +10,8 @@ void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, floa
   float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE) / zReceiver;
   float blockerSum = 0.0;
   numBlockers = 0.0;
-  for (int i = 0; i < BLOCKER_SEARCH_NUM_SAMPLES; ++i) {
-    float shadowMapDepth = shadow_depth_point(uv + BLOCKER_DISK[i] * searchWidth);
+  PENUMBRA_SAMPLE_LOOP for (int i = 0; i < BLOCKER_SEARCH_NUM_SAMPLES; ++i) {
+    float shadowMapDepth = shadow_depth_point(uv + BLOCKER_DISK_POINT(i) * searchWidth);
     // Selects, not a branch: an `if` in this loop's body makes Direct3D
     // compilers' unrolling grow with each sample (vkd3d: minutes at 25).
     bool blocks = shadowMapDepth < zReceiver - DEPTH_BIAS;

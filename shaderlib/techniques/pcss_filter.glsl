@@ -3,6 +3,8 @@
 #ifndef PENUMBRA_PCSS_FILTER_GLSL
 #define PENUMBRA_PCSS_FILTER_GLSL
 
+#include "common/disks.glsl"
+
 // Parallel plane estimation.
 float PenumbraSize(float zReceiver, float zBlocker) {
   return (zReceiver - zBlocker) / zBlocker;
@@ -10,8 +12,8 @@ float PenumbraSize(float zReceiver, float zBlocker) {
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV) {
   float sum = 0.0;
-  for (int i = 0; i < PCF_NUM_SAMPLES; ++i) {
-    vec2 offset = PCF_DISK[i] * filterRadiusUV;
+  PENUMBRA_SAMPLE_LOOP for (int i = 0; i < PCF_NUM_SAMPLES; ++i) {
+    vec2 offset = PCF_DISK_POINT(i) * filterRadiusUV;
     sum += shadow_compare_bilinear(uv + offset, zReceiver);
   }
   return sum / float(PCF_NUM_SAMPLES);

@@ -22,16 +22,18 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
   vec2 first = floor(window.xy / span);
   float depth_sum = 0.0;
   float texels = 0.0;
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) {
+  PENUMBRA_SAMPLE_LOOP for (int j = 0; j < 3; ++j) {
+    PENUMBRA_SAMPLE_LOOP for (int i = 0; i < 3; ++i) {
       vec2 node = first + vec2(float(i), float(j));
       vec4 part = vec4(max(node * span, window.xy), min(node * span + span - 1.0, window.zw));
-      if (minmax_window_empty(part)) continue;
-      float node_min = minmax_node(level, node).x;
-      if (node_min < reference) {
-        float weight = minmax_texel_count(part);
-        depth_sum += node_min * weight;
-        texels += weight;
+      // No `continue`: Shader Model 3 compilers (vkd3d) have none.
+      if (!minmax_window_empty(part)) {
+        float node_min = minmax_node(level, node).x;
+        if (node_min < reference) {
+          float weight = minmax_texel_count(part);
+          depth_sum += node_min * weight;
+          texels += weight;
+        }
       }
     }
   }

@@ -449,12 +449,28 @@ TEST(BuildLibrary, IndexHoldsTheBakedDiskValuesExactly) {
   EXPECT_EQ(loaded->variant.pcf_disk->points, v.pcf_disk->points);
   // Every emitted file starts with (or, for GLSL, right after #version) a
   // comment naming the variant and its keys.
-  const std::string text = slurp(dir.path / "out" / "hlsl_dx9" / v.name / "query.frag.hlsl");
+  const std::string text = slurp(dir.path / "out" / "hlsl_dx10" / v.name / "query.frag.hlsl");
   EXPECT_THAT(text.substr(0, 200),
               HasSubstr("Variant " + v.name + " (technique pcss, blocker_samples 25"));
   // Two different disks keep their own source names.
   EXPECT_THAT(text, HasSubstr("BLOCKER_DISK[25]"));
   EXPECT_THAT(text, HasSubstr("PCF_DISK[16]"));
+  // hlsl_dx9 reads them from constant textures whose reflection holds the
+  // same values, point i at texel (i, 0).
+  const auto& textures = loaded->reflection.at(PassKind::query).at(Target::hlsl_dx9).frag.textures;
+  for (const auto& [name, disk] :
+       {std::pair{"blocker_disk", *v.blocker_disk}, std::pair{"pcf_disk", *v.pcf_disk}}) {
+    const auto texture = std::ranges::find(textures, std::string(name), &TextureBinding::name);
+    ASSERT_NE(texture, textures.end()) << name;
+    ASSERT_TRUE(texture->contents.has_value()) << name;
+    EXPECT_EQ(texture->contents->width, disk.points.size()) << name;
+    EXPECT_EQ(texture->contents->height, 1u) << name;
+    std::vector<float> texels;
+    for (const Point2& point : disk.points) texels.insert(texels.end(), point.begin(), point.end());
+    EXPECT_EQ(texture->contents->texels, texels) << name;
+  }
+  EXPECT_THAT(slurp(dir.path / "out" / "hlsl_dx9" / v.name / "query.frag.hlsl"),
+              Not(HasSubstr("PCF_DISK")));
 }
 
 TEST(BuildLibrary, MinmaxPassesOnlyForTheVariantsThatUseThem) {

@@ -62,12 +62,13 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
         const std::string stage(stage_key(source.stage));
         passes[pass][target_name][stage] = job->output_path;
         if (job->bytecode) {
-          passes[pass][target_name]["bytecode"][stage] = {{"path", job->bytecode->path},
-                                                          {"profile", job->bytecode->profile},
-                                                          {"size", job->bytecode->size}};
-        }
-        if (job->estimated_slots > 0) {
-          out["estimated_ps30_slots"][pass + "." + stage] = job->estimated_slots;
+          nlohmann::json& bytecode = passes[pass][target_name]["bytecode"][stage];
+          bytecode = {{"path", job->bytecode->path},
+                      {"profile", job->bytecode->profile},
+                      {"size", job->bytecode->size}};
+          if (job->bytecode->instruction_slots > 0) {
+            bytecode["instruction_slots"] = job->bytecode->instruction_slots;
+          }
         }
       }
       if (vert && frag) {

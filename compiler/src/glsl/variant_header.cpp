@@ -88,6 +88,8 @@ std::string variant_header(const Variant* variant, Target target) {
     out += "#define BLUR_DEPTH_TOLERANCE " + glsl_float(kBlurDepthTolerance) + "\n";
     out += float_array("BLUR_WEIGHTS", variant->blur_weights);
   }
+  // Targets with disk textures read the points from pcf_disk/blocker_disk.
+  if (traits(target).disk_textures) return out;
   if (variant->blocker_disk) out += disk_array("BLOCKER_DISK", *variant->blocker_disk);
   if (variant->pcf_disk) out += disk_array("PCF_DISK", *variant->pcf_disk);
   return out;

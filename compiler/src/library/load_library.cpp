@@ -19,7 +19,7 @@ Error index_error(const std::filesystem::path& file, const std::string& path,
 // passes.<pass>.<target>.bytecode.<stage> (docs/shader-interface.md).
 BytecodeFile bytecode_file(const json& j) {
   return BytecodeFile{j.at("path").get<std::string>(), j.at("profile").get<std::string>(),
-                      j.at("size").get<std::uint64_t>()};
+                      j.at("size").get<std::uint64_t>(), j.value("instruction_slots", 0)};
 }
 
 Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,

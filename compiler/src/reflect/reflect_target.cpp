@@ -9,7 +9,8 @@ namespace {
 
 class TargetReflector {
  public:
-  TargetReflector(Target target, PassKind pass) : target_(target), pass_(pass) {}
+  TargetReflector(Target target, PassKind pass, const Variant* variant)
+      : target_(target), pass_(pass), variant_(variant) {}
 
   // The stage's part: its bindings, and the vertex inputs (vertex stage) or
   // the render targets, depth target and extensions (fragment stage).
@@ -75,6 +76,12 @@ class TargetReflector {
                     "(docs/shader-interface.md)");
       }
       out.textures.push_back(texture_binding(*texture));
+      if (texture->constant) {
+        if (variant_) out.textures.back().contents = texture_contents(texture->id, *variant_);
+        if (!out.textures.back().contents) {
+          return fail("sampler '" + image.name + "' is a constant texture with no contents here");
+        }
+      }
     }
     if (!iface.separate_images.empty() || !iface.separate_samplers.empty()) {
       return fail("separate images and samplers are not part of the shaderlib's source");
@@ -194,12 +201,14 @@ class TargetReflector {
 
   Target target_;
   PassKind pass_;
+  const Variant* variant_;  // null for passes shared by every variant
 };
 
 }  // namespace
 
-Result<PassReflection> reflect_target(Target target, PassKind pass, const ShaderInterface& iface) {
-  return TargetReflector(target, pass).reflect(iface);
+Result<PassReflection> reflect_target(Target target, PassKind pass, const Variant* variant,
+                                      const ShaderInterface& iface) {
+  return TargetReflector(target, pass, variant).reflect(iface);
 }
 
 PassReflection join_stages(PassReflection vert, const PassReflection& frag) {

@@ -15,8 +15,9 @@ namespace penumbra {
 // inputs (vertex stage) or the render targets, depth target and extensions
 // (fragment stage). Errors (compile, where = the pass and target) name a
 // resource shader_contract.hpp lacks or one whose binding differs from the
-// one there.
-Result<PassReflection> reflect_target(Target target, PassKind pass, const ShaderInterface& iface);
+// one there, or a constant texture `variant` has no contents for.
+Result<PassReflection> reflect_target(Target target, PassKind pass, const Variant* variant,
+                                      const ShaderInterface& iface);
 
 // The pass's reflection from the parts of its two stages.
 PassReflection join_stages(PassReflection vert, const PassReflection& frag);

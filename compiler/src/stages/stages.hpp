@@ -74,6 +74,9 @@ class BytecodeStage final : public Stage {
   Status process(ShaderJob& job) const override;
 
  private:
+  // Shader Model 3: the bytecode's instruction slots, and a warning past 512.
+  Status count_slots(ShaderJob& job, const std::filesystem::path& bytecode) const;
+
   std::filesystem::path root_;
   HlslCompilerOptions options_;
 };

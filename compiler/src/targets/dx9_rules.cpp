@@ -3,7 +3,6 @@
 #include <utility>
 
 #include "targets/rules.hpp"
-#include "targets/slot_estimate.hpp"
 
 namespace penumbra {
 namespace {
@@ -202,18 +201,6 @@ Status check_dx9_rules(ShaderJob& job, const SpirvModule& module) {
                      profile + " has " + std::to_string(limits.constants) +
                          " float4 constant registers (c0-c" + std::to_string(limits.constants - 1) +
                          ")");
-  }
-  if (job.stage == ShaderStage::fragment) {
-    job.estimated_slots = estimate_ps30_slots(module);
-    if (job.estimated_slots > kPs30MinimumSlots) {
-      job.diagnostics.push_back(
-          {Severity::warning, job.describe(),
-           "an estimated " + std::to_string(job.estimated_slots) +
-               " ps_3_0 instruction slots for hlsl_dx9, over the " +
-               std::to_string(kPs30MinimumSlots) +
-               " every ps_3_0 device runs; it needs a device whose "
-               "MaxPixelShader30InstructionSlots allows more (docs/targets.md)"});
-    }
   }
   return {};
 }

@@ -8,10 +8,7 @@
 
 namespace penumbra {
 
-// Checks job.spirv against the rules of job.target. For an hlsl_dx9
-// fragment shader it also records the ps_3_0 slot estimate in
-// job.estimated_slots, and a warning in job.diagnostics when the estimate is
-// over the 512 slots every ps_3_0 device runs.
+// Checks job.spirv against the rules of job.target.
 Status check_target_rules(ShaderJob& job);
 
 // hlsl_dx9 (dx9_rules.cpp): no comparison samplers, tex2Dproj, size queries,

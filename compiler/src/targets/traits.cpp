@@ -12,10 +12,19 @@ TargetTraits traits(Target target) {
     case Target::essl300:
       return {.comparison_sampler = true, .is_hlsl = false, .is_text = true};
     case Target::hlsl_dx10:
-      return {.comparison_sampler = true, .is_hlsl = true, .is_text = true, .shader_model = 4};
+      return {.comparison_sampler = true,
+              .is_hlsl = true,
+              .is_text = true,
+              .shader_model = 4,
+              .rolled_sample_loops = true};
     case Target::hlsl_dx9:
       // SM 3.0 has no comparison sampler: compares are made in the shader.
-      return {.comparison_sampler = false, .is_hlsl = true, .is_text = true, .shader_model = 3};
+      return {.comparison_sampler = false,
+              .is_hlsl = true,
+              .is_text = true,
+              .shader_model = 3,
+              .disk_textures = true,
+              .rolled_sample_loops = true};
   }
   return {};
 }
@@ -24,6 +33,11 @@ std::string target_defines(Target target) {
   std::string out = "#define PENUMBRA_TARGET_" + ascii_upper(to_string(target)) + " 1\n";
   out += "#define PENUMBRA_HAS_COMPARISON_SAMPLER ";
   out += traits(target).comparison_sampler ? "1\n" : "0\n";
+  out += "#define PENUMBRA_DISK_TEXTURES ";
+  out += traits(target).disk_textures ? "1\n" : "0\n";
+  // PENUMBRA_SAMPLE_LOOP heads the loops over filter samples.
+  out += "#define PENUMBRA_SAMPLE_LOOP";
+  out += traits(target).rolled_sample_loops ? " [[dont_unroll]]\n" : "\n";
   return out;
 }
 

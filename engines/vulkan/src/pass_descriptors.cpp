@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "formats.hpp"
+#include "image_transfer.hpp"
 #include "param_block.hpp"
 #include "vk/descriptor_set.hpp"
 
@@ -68,6 +69,23 @@ Result<const OfferedImage*> find_image(const PassResources& resources,
                         offered);
 }
 
+// A constant texture's image, filled with the reflection's texels.
+Result<vk::Image> create_constant(Context& context, const PlannedBinding& binding) {
+  const TextureContents& contents = *binding.contents;
+  const std::string what = "the " + binding.name + " texture";
+  PENUMBRA_TRY(context.check_extent(static_cast<int>(contents.width),
+                                    static_cast<int>(contents.height), binding.name));
+  auto image = vk::Image::create(
+      *context.device,
+      {contents.width, contents.height, vk_format(binding.format),
+       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT},
+      what);
+  if (!image) return image.error();
+  PENUMBRA_TRY(upload_image(*context.device, *context.commands, *image, contents.texels,
+                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, what));
+  return std::move(*image);
+}
+
 // A separate image or sampler alone on its binding.
 void write_separate(VkDevice device, VkDescriptorSet set, const PlannedBinding& binding,
                     VkImageView view, VkImageLayout layout, VkSampler sampler) {
@@ -106,7 +124,7 @@ std::string PassResources::available() const {
   return names.empty() ? "nothing" : names;
 }
 
-Result<PassDescriptors> PassDescriptors::create(const Context& context, const BindingPlan& plan,
+Result<PassDescriptors> PassDescriptors::create(Context& context, const BindingPlan& plan,
                                                 const PassPipeline& pipeline,
                                                 const PassResources& resources, Target target,
                                                 std::string_view pass) {
@@ -145,7 +163,13 @@ Result<PassDescriptors> PassDescriptors::create(const Context& context, const Bi
     }
     VkImageView view = VK_NULL_HANDLE;
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-    if (binding.texture) {
+    if (binding.contents) {
+      auto image = create_constant(context, binding);
+      if (!image) return image.error();
+      out.constants_.push_back(std::move(*image));
+      view = out.constants_.back().view();
+      layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    } else if (binding.texture) {
       const OfferedImage* image = nullptr;
       PENUMBRA_TRY_ASSIGN(image, find_image(resources, binding, target, pass));
       view = image->image->view();

@@ -15,6 +15,7 @@
 #include "shadow_map_images.hpp"
 #include "vk/buffer.hpp"
 #include "vk/descriptor_pool.hpp"
+#include "vk/image.hpp"
 #include "vk/sampler.hpp"
 
 namespace penumbra::detail {
@@ -44,10 +45,11 @@ struct PassResources {
 class PassDescriptors {
  public:
   // Each uniform buffer is packed from the ParamBlock; each texture is the
-  // offered image of its name and format; each sampler is created from the
-  // reflection's state. Errors (bad_input, where = `pass`) name a texture
+  // offered image of its name and format, or for a constant texture an
+  // image created and filled from the reflection's contents; each sampler
+  // is created from the reflection's state. Errors (bad_input, where = `pass`) name a texture
   // the pass has no image for.
-  static Result<PassDescriptors> create(const Context& context, const BindingPlan& plan,
+  static Result<PassDescriptors> create(Context& context, const BindingPlan& plan,
                                         const PassPipeline& pipeline,
                                         const PassResources& resources, Target target,
                                         std::string_view pass);
@@ -59,6 +61,7 @@ class PassDescriptors {
   PassDescriptors() = default;
 
   std::vector<vk::Buffer> uniforms_;
+  std::vector<vk::Image> constants_;  // the constant textures' images
   std::vector<vk::Sampler> samplers_;
   std::optional<vk::DescriptorPool> pool_;  // absent when the program binds nothing
   std::vector<VkDescriptorSet> sets_;

@@ -16,7 +16,7 @@ bool same_state(const SamplerState& a, const SamplerState& b) {
 
 bool same_resource(const PlannedBinding& a, const PlannedBinding& b) {
   return a.type == b.type && a.texture == b.texture && a.format == b.format &&
-         a.sampler.has_value() == b.sampler.has_value() &&
+         a.contents == b.contents && a.sampler.has_value() == b.sampler.has_value() &&
          (!a.sampler || same_state(*a.sampler, *b.sampler));
 }
 
@@ -80,6 +80,30 @@ class Planner {
                                                   : "a sampler without comparison"));
   }
 
+  // A constant texture comes with exactly its texels; no other texture does.
+  Status check_contents(const TextureBinding& texture, const TextureDescription& described,
+                        TextureFormat format) const {
+    if (!described.constant) {
+      if (!texture.contents) return {};
+      return fail("index.json's reflection gives texture '" + texture.name +
+                  "' contents, but the engine supplies it every frame");
+    }
+    if (!texture.contents) {
+      return fail("index.json's reflection gives constant texture '" + texture.name +
+                  "' no contents");
+    }
+    const TextureContents& contents = *texture.contents;
+    const std::size_t expected =
+        std::size_t{contents.width} * contents.height * texel_components(format);
+    if (contents.texels.size() != expected) {
+      return fail("texture '" + texture.name + "': its contents hold " +
+                  std::to_string(contents.texels.size()) + " floats, where " +
+                  std::to_string(contents.width) + " x " + std::to_string(contents.height) +
+                  " texels of " + texture.format + " need " + std::to_string(expected));
+    }
+    return {};
+  }
+
   Status add_texture(const TextSlots& slots, const TextureBinding& texture) {
     const TextureDescription* described = find_texture(texture.name);
     if (!described) {
@@ -94,6 +118,7 @@ class Planner {
     accounted_[*image] = true;
     const ModuleResource& resource = resources_[*image];
     PENUMBRA_TRY(check_comparison(texture, resource));
+    PENUMBRA_TRY(check_contents(texture, *described, format));
     PlannedBinding planned{texture.name,
                            resource.set,
                            resource.binding,
@@ -101,6 +126,7 @@ class Planner {
                            flag_,
                            described,
                            format,
+                           texture.contents,
                            std::nullopt,
                            0,
                            {}};
@@ -130,6 +156,7 @@ class Planner {
                   flag_,
                   nullptr,
                   TextureFormat{},
+                  std::nullopt,
                   texture.sampler.state,
                   0,
                   {}});

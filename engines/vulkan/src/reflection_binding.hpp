@@ -38,6 +38,9 @@ struct PlannedBinding {
   // and the format the reflection gives it.
   const TextureDescription* texture = nullptr;
   TextureFormat format = TextureFormat::r32_float;
+  // A constant texture (TextureDescription::constant): what the engine
+  // creates it with, from the reflection.
+  std::optional<TextureContents> contents;
   std::optional<SamplerState> sampler;  // a sampler: the state to create it with
   std::uint32_t size = 0;               // a uniform buffer: its bytes
   std::vector<ConstantFill> constants;  // and what fills them

@@ -25,6 +25,8 @@ struct BytecodeFile {
   std::string path;        // relative to the library root, beside the text
   std::string profile;     // "vs_3_0", "ps_3_0", "vs_4_0" or "ps_4_0"
   std::uint64_t size = 0;  // in bytes
+  // Shader Model 3: the instruction slots of its disassembly; else 0.
+  int instruction_slots = 0;
 };
 
 // One shader stage of one pass, for one target, of one variant (or shared by
@@ -45,10 +47,8 @@ struct ShaderJob {
   PassReflection reflection;             // reflect: this stage's part of the target's reflection
   std::string output_path;               // write: file path relative to the output directory
   std::optional<BytecodeFile> bytecode;  // bytecode: hlsl_dx9/hlsl_dx10 with an HLSL compiler
-  // Warnings found by stages (e.g. slot estimates), reported by the build.
+  // Warnings found by stages (e.g. over the instruction slots), reported by the build.
   std::vector<Diagnostic> diagnostics;
-  // hlsl_dx9 fragment: estimated ps_3_0 instruction slots (0: not estimated).
-  int estimated_slots = 0;
 
   // "variant pcss_b16_p16_whitepaper16, target hlsl_dx9, query.frag" for messages.
   std::string describe() const;

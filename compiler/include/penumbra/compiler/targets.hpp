@@ -16,6 +16,13 @@ struct TargetTraits {
   bool is_hlsl = false;            // HLSL text (y flipped for D3D's viewport)
   bool is_text = true;             // false for spirv (binary output)
   int shader_model = 0;            // HLSL: the Direct3D bytecode's shader model (3 or 4); else 0
+  // Reads Poisson disks from the pcf_disk/blocker_disk textures rather than
+  // constant arrays (hlsl_dx9: Shader Model 3 indexes those by compare chains).
+  bool disk_textures = false;
+  // Keeps the per-sample loops rolled (HLSL [loop]): Direct3D compilers
+  // unroll at compile time, which takes minutes at the largest sample
+  // counts and overflows ps_3_0's 512 instruction slots.
+  bool rolled_sample_loops = false;
 };
 
 TargetTraits traits(Target target);

@@ -27,8 +27,9 @@ inline constexpr std::string_view kLooseUniformBlockName = "PenumbraLooseUniform
 inline constexpr std::uint32_t kHlslSamplerBindingBase = 16;
 
 // hlsl_dx9 vertex shaders: the $Global block (D3D9's vertex constant file,
-// separate from the pixel shader's) is bound here rather than at 0.
-inline constexpr std::uint32_t kDx9VertexConstantsBinding = 8;
+// separate from the pixel shader's) is bound here rather than at 0, past
+// every t# and s# binding, so no texture of the pass shares it.
+inline constexpr std::uint32_t kDx9VertexConstantsBinding = 2 * kHlslSamplerBindingBase;
 
 struct FrontEndResult {
   std::vector<std::uint32_t> spirv;  // Vulkan 1.0 SPIR-V; passes spirv-val

@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/pass.hpp"
@@ -26,6 +27,9 @@ enum class TextureFormat {
   rgba32_float,  // four 32-bit floats
   d32_float,     // a 32-bit float depth format, sampled (and compared) as depth
 };
+
+// Floats per texel: 1, 2 or 4.
+std::uint32_t texel_components(TextureFormat format);
 
 enum class Filter { nearest, linear };
 
@@ -52,6 +56,8 @@ enum class TextureId {
   minmax_source,  // the level a minmax_reduce pass reduces
   screen_factor,  // screen_blur's factor buffer
   scene_colour,   // screen_blur's scene colour
+  pcf_disk,       // the PCF disk's points, where the target reads them from a texture
+  blocker_disk,   // the blocker-search disk's points, likewise
 };
 
 struct TextureDescription {
@@ -67,9 +73,25 @@ struct TextureDescription {
   SamplerState sampler;
   bool mipmapped;            // read at explicit mip levels (shadow_minmax)
   std::string_view content;  // one line for docs and messages
+  // Filled by the library, not by the engine's frame: the variant's data
+  // (texture_contents()), listed with the reflection.
+  bool constant = false;
 };
 
 const TextureDescription& describe(TextureId texture);
+
+// A constant texture's texels, as the library lists them: `width` x
+// `height` texels of the texture's format, row 0 first, every component.
+struct TextureContents {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<float> texels;
+  bool operator==(const TextureContents&) const = default;
+};
+
+// The contents of constant texture `texture` for `variant` (a disk: point i
+// at texel (i, 0)); none when the variant has no such data.
+std::optional<TextureContents> texture_contents(TextureId texture, const Variant& variant);
 std::span<const TextureDescription> all_textures();
 // The texture named `name` in the text, or none.
 const TextureDescription* find_texture(std::string_view name);

@@ -70,6 +70,9 @@ struct TextureBinding {
   std::string view_format;  // hlsl_dx10: the shader resource view's: "DXGI_FORMAT_R32_FLOAT"
   bool mipmapped = false;   // read at explicit mip levels: create and fill every level
   SamplerBinding sampler;
+  // A constant texture (hlsl_dx9's disks): the texels to create it with,
+  // once, from this record alone.
+  std::optional<TextureContents> contents;
   bool operator==(const TextureBinding&) const = default;
 };
 

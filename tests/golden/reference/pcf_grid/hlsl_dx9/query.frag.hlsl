@@ -50,8 +50,10 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
 float shadow_visibility(float3 query)
 {
     float sum = 0.0f;
+    [loop]
     for (int j = -1; j <= 1; j++)
     {
+        [loop]
         for (int i = -1; i <= 1; i++)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);

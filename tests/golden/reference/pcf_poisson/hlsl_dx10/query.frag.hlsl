@@ -47,6 +47,7 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
 float shadow_visibility(float3 query)
 {
     float sum = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
         float2 param = query.xy + (PCF_DISK[i] * params_sampling.x);

@@ -43,6 +43,7 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     float searchWidth = (params_light.w * (zReceiver - params_light.z)) / zReceiver;
     float blockerSum = 0.0f;
     numBlockers = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
         float2 param = uv + (POISSON_DISK[i] * searchWidth);
@@ -86,6 +87,7 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
 {
     float sum = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
         float2 offset = POISSON_DISK[i] * filterRadiusUV;

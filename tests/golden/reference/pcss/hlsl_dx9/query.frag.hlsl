@@ -1,5 +1,3 @@
-static const float2 POISSON_DISK[16] = { float2(-0.94201624393463134765625f, -0.39906215667724609375f), float2(0.94558608531951904296875f, -0.768907248973846435546875f), float2(-0.094184100627899169921875f, -0.929388701915740966796875f), float2(0.34495937824249267578125f, 0.29387760162353515625f), float2(-0.91588580608367919921875f, 0.4577143192291259765625f), float2(-0.8154423236846923828125f, -0.87912464141845703125f), float2(-0.38277542591094970703125f, 0.2767684459686279296875f), float2(0.9748439788818359375f, 0.7564837932586669921875f), float2(0.4432332515716552734375f, -0.9751155376434326171875f), float2(0.5374298095703125f, -0.473734200000762939453125f), float2(-0.2649691104888916015625f, -0.418930232524871826171875f), float2(0.79197514057159423828125f, 0.19090187549591064453125f), float2(-0.24188840389251708984375f, 0.997065067291259765625f), float2(-0.8140995502471923828125f, 0.91437590122222900390625f), float2(0.1998412609100341796875f, 0.786413669586181640625f), float2(0.14383161067962646484375f, -0.141007900238037109375f) };
-
 // ShadowParams as Direct3D 9 constant registers
 uniform float4 params_shadow_map_size : register(c0);
 uniform float4 params_light : register(c1);
@@ -10,6 +8,8 @@ uniform float4 params_minmax_info : register(c5);
 
 
 uniform sampler2D shadow_depth : register(s1);
+uniform sampler2D pcf_disk : register(s8);
+uniform sampler2D blocker_disk : register(s9);
 uniform sampler2D receivers : register(s3);
 
 static float2 screen_uv;
@@ -38,25 +38,26 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     float searchWidth = (params_light.w * (zReceiver - params_light.z)) / zReceiver;
     float blockerSum = 0.0f;
     numBlockers = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float _308 = shadow_depth_point(param);
-        float shadowMapDepth = _308;
+        float2 param = uv + (tex2Dlod(blocker_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * searchWidth);
+        float _266 = shadow_depth_point(param);
+        float shadowMapDepth = _266;
         bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0f);
         numBlockers += float(blocks);
     }
-    float _330;
+    float _288;
     if (numBlockers > 0.0f)
     {
-        _330 = blockerSum / numBlockers;
+        _288 = blockerSum / numBlockers;
     }
     else
     {
-        _330 = zReceiver;
+        _288 = zReceiver;
     }
-    avgBlockerDepth = _330;
+    avgBlockerDepth = _288;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -89,13 +90,14 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
 {
     float sum = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 offset = POISSON_DISK[i] * filterRadiusUV;
+        float2 offset = tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _268 = shadow_compare_bilinear(param, param_1);
-        sum += _268;
+        float _222 = shadow_compare_bilinear(param, param_1);
+        sum += _222;
     }
     return sum / 16.0f;
 }
@@ -124,15 +126,15 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _384 = PCF_Filter(param_6, param_7, param_8);
-    return _384;
+    float _342 = PCF_Filter(param_6, param_7, param_8);
+    return _342;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _389 = PCSS(param);
-    return _389;
+    float _347 = PCSS(param);
+    return _347;
 }
 
 void frag_main()
@@ -140,8 +142,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _403 = shadow_visibility(param);
-    float visible = _403;
+    float _361 = shadow_visibility(param);
+    float visible = _361;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -107,20 +107,19 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
             vec2 node = first + vec2(float(i), float(j));
             vec4 part = vec4(max(node * span, window.xy), min(((node * span) + vec2(span)) - vec2(1.0), window.zw));
             vec4 param_5 = part;
-            if (minmax_window_empty(param_5))
+            if (!minmax_window_empty(param_5))
             {
-                continue;
-            }
-            float param_6 = level;
-            vec2 param_7 = node;
-            vec2 _466 = minmax_node(param_6, param_7);
-            float node_min = _466.x;
-            if (node_min < reference)
-            {
-                vec4 param_8 = part;
-                float weight = minmax_texel_count(param_8);
-                depth_sum += (node_min * weight);
-                texels += weight;
+                float param_6 = level;
+                vec2 param_7 = node;
+                vec2 _466 = minmax_node(param_6, param_7);
+                float node_min = _466.x;
+                if (node_min < reference)
+                {
+                    vec4 param_8 = part;
+                    float weight = minmax_texel_count(param_8);
+                    depth_sum += (node_min * weight);
+                    texels += weight;
+                }
             }
         }
     }

@@ -112,27 +112,28 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
     float2 first = floor(window.xy / span.xx);
     float depth_sum = 0.0f;
     float texels = 0.0f;
+    [loop]
     for (int j = 0; j < 3; j++)
     {
+        [loop]
         for (int i = 0; i < 3; i++)
         {
             float2 node = first + float2(float(i), float(j));
             float4 part = float4(max(node * span, window.xy), min(((node * span) + span.xx) - 1.0f.xx, window.zw));
             float4 param_5 = part;
-            if (minmax_window_empty(param_5))
+            if (!minmax_window_empty(param_5))
             {
-                continue;
-            }
-            float param_6 = level;
-            float2 param_7 = node;
-            float2 _466 = minmax_node(param_6, param_7);
-            float node_min = _466.x;
-            if (node_min < reference)
-            {
-                float4 param_8 = part;
-                float weight = minmax_texel_count(param_8);
-                depth_sum += (node_min * weight);
-                texels += weight;
+                float param_6 = level;
+                float2 param_7 = node;
+                float2 _466 = minmax_node(param_6, param_7);
+                float node_min = _466.x;
+                if (node_min < reference)
+                {
+                    float4 param_8 = part;
+                    float weight = minmax_texel_count(param_8);
+                    depth_sum += (node_min * weight);
+                    texels += weight;
+                }
             }
         }
     }
@@ -161,6 +162,7 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
 {
     float sum = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
         float2 offset = PCF_DISK[i] * filterRadiusUV;

@@ -1,5 +1,3 @@
-static const float2 PCF_DISK[16] = { float2(-0.94201624393463134765625f, -0.39906215667724609375f), float2(0.94558608531951904296875f, -0.768907248973846435546875f), float2(-0.094184100627899169921875f, -0.929388701915740966796875f), float2(0.34495937824249267578125f, 0.29387760162353515625f), float2(-0.91588580608367919921875f, 0.4577143192291259765625f), float2(-0.8154423236846923828125f, -0.87912464141845703125f), float2(-0.38277542591094970703125f, 0.2767684459686279296875f), float2(0.9748439788818359375f, 0.7564837932586669921875f), float2(0.4432332515716552734375f, -0.9751155376434326171875f), float2(0.5374298095703125f, -0.473734200000762939453125f), float2(-0.2649691104888916015625f, -0.418930232524871826171875f), float2(0.79197514057159423828125f, 0.19090187549591064453125f), float2(-0.24188840389251708984375f, 0.997065067291259765625f), float2(-0.8140995502471923828125f, 0.91437590122222900390625f), float2(0.1998412609100341796875f, 0.786413669586181640625f), float2(0.14383161067962646484375f, -0.141007900238037109375f) };
-
 // ShadowParams as Direct3D 9 constant registers
 uniform float4 params_shadow_map_size : register(c0);
 uniform float4 params_light : register(c1);
@@ -11,6 +9,7 @@ uniform float4 params_minmax_info : register(c5);
 
 uniform sampler2D shadow_depth : register(s1);
 uniform sampler2D shadow_minmax : register(s4);
+uniform sampler2D pcf_disk : register(s8);
 uniform sampler2D receivers : register(s3);
 
 static float2 screen_uv;
@@ -106,27 +105,28 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
     float2 first = floor(window.xy / span.xx);
     float depth_sum = 0.0f;
     float texels = 0.0f;
+    [loop]
     for (int j = 0; j < 3; j++)
     {
+        [loop]
         for (int i = 0; i < 3; i++)
         {
             float2 node = first + float2(float(i), float(j));
             float4 part = float4(max(node * span, window.xy), min(((node * span) + span.xx) - 1.0f.xx, window.zw));
             float4 param_5 = part;
-            if (minmax_window_empty(param_5))
+            if (!minmax_window_empty(param_5))
             {
-                continue;
-            }
-            float param_6 = level;
-            float2 param_7 = node;
-            float2 _536 = minmax_node(param_6, param_7);
-            float node_min = _536.x;
-            if (node_min < reference)
-            {
-                float4 param_8 = part;
-                float weight = minmax_texel_count(param_8);
-                depth_sum += (node_min * weight);
-                texels += weight;
+                float param_6 = level;
+                float2 param_7 = node;
+                float2 _489 = minmax_node(param_6, param_7);
+                float node_min = _489.x;
+                if (node_min < reference)
+                {
+                    float4 param_8 = part;
+                    float weight = minmax_texel_count(param_8);
+                    depth_sum += (node_min * weight);
+                    texels += weight;
+                }
             }
         }
     }
@@ -163,13 +163,14 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
 {
     float sum = 0.0f;
+    [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 offset = PCF_DISK[i] * filterRadiusUV;
+        float2 offset = tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _409 = shadow_compare_bilinear(param, param_1);
-        sum += _409;
+        float _363 = shadow_compare_bilinear(param, param_1);
+        sum += _363;
     }
     return sum / 16.0f;
 }
@@ -182,9 +183,9 @@ float shadow_visibility(float3 query)
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _586 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _539 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_586)
+    if (!_539)
     {
         return 1.0f;
     }
@@ -195,8 +196,8 @@ float shadow_visibility(float3 query)
     float2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _620 = PCF_Filter(param_7, param_8, param_9);
-    return _620;
+    float _573 = PCF_Filter(param_7, param_8, param_9);
+    return _573;
 }
 
 void frag_main()
@@ -204,8 +205,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _634 = shadow_visibility(param);
-    float visible = _634;
+    float _587 = shadow_visibility(param);
+    float visible = _587;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
