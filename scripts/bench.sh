@@ -1,11 +1,21 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds the benchmarks and runs penumbra_bench_minmax
-# (minmax_pcf's min-max traversal against brute force on the Vulkan device).
-# Arguments go to the benchmark, e.g. scripts/bench.sh --repeats 9.
+# Installs what is missing, builds the benchmarks and runs one:
+#   scripts/bench.sh [minmax] [ARGS]  minmax_pcf's traversal against brute force
+#                                     on the Vulkan device (penumbra_bench_minmax)
+#   scripts/bench.sh bytecode [ARGS]  vkd3d-compiler's time and Shader Model 3
+#                                     slots per Direct3D file, slowest first
+#                                     (penumbra_bench_bytecode)
+# ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
+bench=minmax
+if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode) ]]; then
+  bench=$1
+  shift
+fi
 install_missing_packages
-configure_and_build build penumbra_bench_minmax
-build/bench/penumbra_bench_minmax "$@"
+[[ $bench == bytecode ]] && install_hlsl_compiler
+configure_and_build build "penumbra_bench_$bench"
+"build/bench/penumbra_bench_$bench" "$@"
