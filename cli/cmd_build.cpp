@@ -1,44 +1,15 @@
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <iostream>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "hlsl_compiler.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
 
 namespace penumbra::cli {
 namespace {
-
-// `path` when it is an executable file; else an error naming `given_by`.
-Result<std::filesystem::path> executable(const std::filesystem::path& path,
-                                         const std::string& given_by) {
-  if (std::filesystem::is_regular_file(path) && ::access(path.c_str(), X_OK) == 0) return path;
-  return make_error(Error::Kind::bad_input, given_by,
-                    path.string() + " is not an executable file (vkd3d-compiler 2.1 or newer)");
-}
-
-// vkd3d-compiler: --hlsl-compiler, else $PENUMBRA_HLSL_COMPILER, else where
-// ../shared/tools/fetch-vkd3d installs it (scripts/lib/setup.sh's cache,
-// $XDG_CACHE_HOME or ~/.cache); empty when none of them has it.
-Result<std::filesystem::path> find_hlsl_compiler(const std::string& flag) {
-  if (!flag.empty()) return executable(flag, "--hlsl-compiler");
-  const char* env = std::getenv("PENUMBRA_HLSL_COMPILER");
-  if (env && *env) return executable(env, "PENUMBRA_HLSL_COMPILER");
-  std::vector<std::filesystem::path> caches;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) caches.emplace_back(xdg);
-  if (const char* home = std::getenv("HOME"); home && *home) {
-    caches.push_back(std::filesystem::path(home) / ".cache");
-  }
-  for (const std::filesystem::path& cache : caches) {
-    const std::filesystem::path installed = cache / "penumbra/vkd3d/bin/vkd3d-compiler";
-    if (::access(installed.c_str(), X_OK) == 0) return installed;
-  }
-  return std::filesystem::path();
-}
 
 bool has_hlsl(const std::vector<Variant>& variants) {
   return std::ranges::any_of(variants, [](const Variant& v) {
@@ -63,9 +34,7 @@ void add_build_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", args->out, "Output directory (replaced only on success)")->required();
   cmd->add_option("-j,--jobs", args->jobs, "Shaders compiled in parallel")
       ->check(CLI::Range(1, 64));
-  cmd->add_option("--hlsl-compiler", args->hlsl_compiler,
-                  "vkd3d-compiler for the Direct3D bytecode (default: $PENUMBRA_HLSL_COMPILER, "
-                  "then ~/.cache/penumbra/vkd3d/bin/vkd3d-compiler)");
+  cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
   cmd->add_option("--hlsl-timeout", args->hlsl_timeout,
                   "Seconds one HLSL file may take to compile to bytecode")
       ->check(CLI::Range(1, 86400));

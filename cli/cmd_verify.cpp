@@ -1,7 +1,9 @@
 #include <iostream>
+#include <map>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "hlsl_compiler.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
 
@@ -13,6 +15,7 @@ struct VerifyArgs {
   std::string device;
   std::vector<std::string> variants;
   std::vector<std::string> targets;
+  std::string hlsl_compiler;
   bool no_gl = false;
   bool validation = false;
   bool verbose = false;
@@ -64,8 +67,19 @@ void print_summary(const VerifyReport& report) {
       std::cout << "\n";
     }
   }
-  if (report.gl_device.empty())
-    std::cout << "note: the OpenGL path did not run (see verify.json)\n";
+  // Per path: how many (variant, target) runs did not execute, and the first reason.
+  std::map<std::string, std::pair<std::size_t, std::string>> skipped;
+  for (const VariantRun& v : report.variants) {
+    for (const TargetRun& t : v.runs) {
+      if (t.executed) continue;
+      auto& [count, reason] = skipped[t.backend];
+      if (count++ == 0) reason = t.not_executed;
+    }
+  }
+  for (const auto& [backend, why] : skipped) {
+    std::cout << "note: " << why.first << " " << backend << " runs not executed: " << why.second
+              << "\n";
+  }
   std::cout << report.runs - report.failed << " passed, " << report.failed << " failed\n";
 }
 
@@ -79,10 +93,16 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
   cmd->add_option("--variant", args->variants, "Only these variants (repeatable)");
   cmd->add_option("--target", args->targets, "Only these targets (repeatable)");
+  cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {
+    auto compiler = find_hlsl_compiler(args->hlsl_compiler);
+    if (!compiler) {
+      exit_code = report(compiler.error());
+      return;
+    }
     auto library = load_library(args->library);
     if (!library) {
       exit_code = report(library.error());
@@ -94,7 +114,10 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(engine.error());
       return;
     }
-    VerifyOptions options{.variants = args->variants, .targets = {}, .gl = !args->no_gl};
+    VerifyOptions options{.variants = args->variants,
+                          .targets = {},
+                          .gl = !args->no_gl,
+                          .bytecode = {.compiler = *compiler}};
     for (const std::string& name : args->targets) {
       auto target = parse_target(name);
       if (!target) {

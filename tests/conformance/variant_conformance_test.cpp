@@ -47,7 +47,10 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
   for (const TargetRun& run : report->variants[0].runs) {
     const std::string label = std::string(to_string(run.target)) + " on " + run.backend;
     if (!run.executed) {
-      EXPECT_EQ(run.backend, "gl") << label << " must run: " << run.not_executed;
+      // The bytecode path needs a library built with an HLSL compiler:
+      // tests/bytecode runs it.
+      EXPECT_TRUE(run.backend == "gl" || run.backend == "bytecode")
+          << label << " must run: " << run.not_executed;
       continue;
     }
     ASSERT_TRUE(run.error.empty()) << label << ": " << run.error;

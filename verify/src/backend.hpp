@@ -51,6 +51,12 @@ class Backend {
   virtual std::string missing() const = 0;
   // Whether this path runs `target`'s files (others are no text of its API).
   virtual bool executes(Target target) const = 0;
+  // Why this path cannot run `entry`'s files for `target` here although it
+  // runs the target (the library lacks them); empty when it can. That run is
+  // then reported not executed, with this.
+  virtual std::string not_executed(const LibraryVariant& /*entry*/, Target /*target*/) const {
+    return {};
+  }
   // `entry`'s passes for `target` (its query and the passes the query needs,
   // or screen_blur's chain), ready to run on each of `scenes`. An error
   // (a file, a front end, a mip the scenes lack) fails the run.
@@ -58,9 +64,21 @@ class Backend {
                                     Target target, const TargetScenes& scenes) = 0;
 };
 
+// `entry`'s query (or screen_blur's four passes), each loaded by `load`,
+// run on `engine` over the maps (and min-max mips) the scenes hold: the
+// paths that execute on the Vulkan engine (vulkan_backend.cpp).
+Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
+                                    const TargetScenes& scenes, const PassLoader& load);
+
 // Every target on the Vulkan engine, on the maps (and min-max mips) the
 // scenes hold (vulkan_backend.cpp).
 std::unique_ptr<Backend> vulkan_backend(Engine& engine);
+
+// The Direct3D targets' bytecode translated to SPIR-V by vkd3d-compiler
+// (`translator`), as Proton runs it, on the Vulkan engine like
+// vulkan_backend (bytecode_backend.cpp). No translator reports every run
+// not executed.
+std::unique_ptr<Backend> bytecode_backend(Engine& engine, BytecodeTranslator translator);
 
 // glsl330 and glsl450 through the OpenGL driver (penumbra::gl), on the
 // scenes' normalized depth (gl_backend.cpp). `device` selects the GL device

@@ -84,6 +84,10 @@ Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& e
     run.not_executed = std::move(missing);
     return run;
   }
+  if (std::string lacking = backend.not_executed(entry, target); !lacking.empty()) {
+    run.not_executed = std::move(lacking);
+    return run;
+  }
   const TargetScenes& scenes = ctx.scenes.at(target);
   auto passes = backend.load(ctx.library, entry, target, scenes);
   if (!passes) return passes.error();
@@ -200,6 +204,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   Context ctx{library, engine, precision, {}, {}, {}};
   // The paths, in report order: a new one is a new backend file and a line here.
   ctx.backends.push_back(vulkan_backend(engine));
+  ctx.backends.push_back(bytecode_backend(engine, options.bytecode));
   // On lavapipe, GL runs on llvmpipe too, so both paths use one rasterizer.
   const bool lavapipe = report.device.name.find("llvmpipe") != std::string::npos;
   ctx.backends.push_back(gl_backend(options.gl, lavapipe ? "llvmpipe" : ""));

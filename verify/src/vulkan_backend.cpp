@@ -1,6 +1,7 @@
 // verify's Vulkan path: every target's files (the .spv as built, or the text
 // through glslang's front ends) on the Vulkan engine that prepared the
-// scenes, on their maps as rendered.
+// scenes, on their maps as rendered; load_on_engine() runs them, for the
+// bytecode path too.
 #include <memory>
 
 #include "backend.hpp"
@@ -19,45 +20,52 @@ class VulkanBackend final : public Backend {
 
   Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
                             const TargetScenes& scenes) override {
-    // The query reads the mip the target's own passes built on each map.
-    if (uses_minmax_mip(entry.variant.technique) && scenes.minmax && !*scenes.minmax) {
-      return scenes.minmax->error();
-    }
-    if (entry.variant.technique == Technique::screen_blur)
-      return load_screen_blur_chain(library, entry, target);
-    auto query = load_executable(library, entry, PassKind::query, target);
-    if (!query) return query.error();
-    auto program = std::make_shared<PassProgram>(std::move(query->program));
-    return LoadedPasses{
-        std::move(query->execution),
-        [this, program](const SceneFixture& fixture) -> Result<SceneOutput> {
-          auto gpu =
-              engine_.run_query_output(*program, *fixture.map, fixture.receivers, fixture.params);
-          if (!gpu) return gpu.error();
-          return SceneOutput{std::move(gpu->visibility), std::move(gpu->texel_reads), std::nullopt};
-        }};
+    return load_on_engine(engine_, entry, scenes, [&](PassKind pass) {
+      return load_executable(library, entry, pass, target);
+    });
   }
 
  private:
-  Result<LoadedPasses> load_screen_blur_chain(const Library& library, const LibraryVariant& entry,
-                                              Target target) {
-    auto loaded = load_screen_blur(library, entry, target);
-    if (!loaded) return loaded.error();
-    auto chain = std::make_shared<ScreenBlurExecutables>(std::move(*loaded));
-    return LoadedPasses{
-        chain->query.execution, [this, chain](const SceneFixture& fixture) -> Result<SceneOutput> {
-          auto gpu = engine_.run_screen_blur(chain->programs(), *fixture.map, fixture.receivers,
-                                             fixture.colour, fixture.params);
-          if (!gpu) return gpu.error();
-          return SceneOutput{std::move(gpu->factor), std::move(gpu->texel_reads),
-                             ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)}};
-        }};
-  }
-
   Engine& engine_;
 };
 
+LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded) {
+  auto chain = std::make_shared<ScreenBlurExecutables>(std::move(loaded));
+  return LoadedPasses{
+      chain->query.execution, [&engine, chain](const SceneFixture& fixture) -> Result<SceneOutput> {
+        auto gpu = engine.run_screen_blur(chain->programs(), *fixture.map, fixture.receivers,
+                                          fixture.colour, fixture.params);
+        if (!gpu) return gpu.error();
+        return SceneOutput{std::move(gpu->factor), std::move(gpu->texel_reads),
+                           ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)}};
+      }};
+}
+
 }  // namespace
+
+Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
+                                    const TargetScenes& scenes, const PassLoader& load) {
+  // The query reads the mip the target's own passes built on each map.
+  if (uses_minmax_mip(entry.variant.technique) && scenes.minmax && !*scenes.minmax) {
+    return scenes.minmax->error();
+  }
+  if (entry.variant.technique == Technique::screen_blur) {
+    auto chain = load_screen_blur(load);
+    if (!chain) return chain.error();
+    return screen_blur_on_engine(engine, std::move(*chain));
+  }
+  auto query = load(PassKind::query);
+  if (!query) return query.error();
+  auto program = std::make_shared<PassProgram>(std::move(query->program));
+  return LoadedPasses{
+      std::move(query->execution),
+      [&engine, program](const SceneFixture& fixture) -> Result<SceneOutput> {
+        auto gpu =
+            engine.run_query_output(*program, *fixture.map, fixture.receivers, fixture.params);
+        if (!gpu) return gpu.error();
+        return SceneOutput{std::move(gpu->visibility), std::move(gpu->texel_reads), std::nullopt};
+      }};
+}
 
 std::unique_ptr<Backend> vulkan_backend(Engine& engine) {
   return std::make_unique<VulkanBackend>(engine);

@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "reflect_parts.hpp"
+#include "spirv/module.hpp"
 
 namespace penumbra {
 
@@ -52,10 +53,39 @@ std::set<std::uint32_t> comparison_sampler_ids(Compiler& compiler) {
   return ids;
 }
 
+bool compares(spv::Op op) {
+  switch (op) {
+    case spv::OpImageSampleDrefImplicitLod:
+    case spv::OpImageSampleDrefExplicitLod:
+    case spv::OpImageSampleProjDrefImplicitLod:
+    case spv::OpImageSampleProjDrefExplicitLod:
+    case spv::OpImageDrefGather:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// The sampler variables that depth comparisons sample through: what tells
+// a comparison sampler where no image says Depth = 1 (vkd3d-compiler's
+// translations declare every image with unknown depth).
+std::set<std::uint32_t> compared_sampler_variables(std::span<const std::uint32_t> spirv) {
+  const SpirvModule module(spirv);
+  std::set<std::uint32_t> out;
+  for (const SpvInstruction& instruction : module.instructions()) {
+    if (!compares(instruction.op)) continue;
+    const SpvInstruction* combined = module.def(instruction.operand(0));
+    if (!combined || combined->op != spv::OpSampledImage) continue;
+    const SpvInstruction* sampler = module.def(combined->operand(1));
+    if (sampler && sampler->op == spv::OpLoad) out.insert(sampler->operand(0));
+  }
+  return out;
+}
+
 }  // namespace
 
 void reflect_images(Compiler& compiler, const spirv_cross::ShaderResources& resources,
-                    ShaderInterface& iface) {
+                    std::span<const std::uint32_t> spirv, ShaderInterface& iface) {
   for (const Resource& resource : resources.sampled_images) {
     iface.sampled_images.push_back({resource.name, set_of(compiler, resource),
                                     binding_of(compiler, resource),
@@ -68,10 +98,13 @@ void reflect_images(Compiler& compiler, const spirv_cross::ShaderResources& reso
   }
   const auto comparison = resources.separate_samplers.empty() ? std::set<std::uint32_t>()
                                                               : comparison_sampler_ids(compiler);
+  const auto compared = resources.separate_samplers.empty() ? std::set<std::uint32_t>()
+                                                            : compared_sampler_variables(spirv);
   for (const Resource& resource : resources.separate_samplers) {
     iface.separate_samplers.push_back(
         {resource.name, set_of(compiler, resource), binding_of(compiler, resource),
-         paired_image_name(resource.name), comparison.contains(resource.id)});
+         paired_image_name(resource.name),
+         comparison.contains(resource.id) || compared.contains(resource.id)});
   }
   sort_by_slot(iface.sampled_images);
   sort_by_slot(iface.separate_images);

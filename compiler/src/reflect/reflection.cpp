@@ -65,7 +65,7 @@ Result<ShaderInterface> reflect(std::span<const std::uint32_t> spirv) {
     for (const spirv_cross::BuiltInResource& builtin : resources.builtin_outputs) {
       iface.builtin_outputs.push_back(builtin_name(builtin.builtin));
     }
-    detail::reflect_images(compiler, resources, iface);
+    detail::reflect_images(compiler, resources, spirv, iface);
     return iface;
   } catch (const spirv_cross::CompilerError& error) {
     return make_error(Error::Kind::compile, "reflection", error.what());

@@ -103,15 +103,56 @@ Result<ExecutableProgram> load_executable(const Library& library, const LibraryV
   return out;
 }
 
+Result<ExecutableProgram> load_bytecode_executable(const Library& library,
+                                                   const LibraryVariant& variant, PassKind pass,
+                                                   Target target,
+                                                   const BytecodeTranslator& translator) {
+  ExecutableProgram out;
+  out.program.target = target;
+  PENUMBRA_TRY_ASSIGN(out.program.reflection, pass_reflection(variant, pass, target));
+  auto files = pass_files(variant, pass, target);
+  if (!files) return files.error();
+  std::vector<std::string> profiles;
+  for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
+    const bool vertex = stage == ShaderStage::vertex;
+    const std::optional<BytecodeFile>& file =
+        vertex ? (*files)->vert_bytecode : (*files)->frag_bytecode;
+    if (!file) {
+      return make_error(Error::Kind::bad_input, variant.variant.name,
+                        "index.json lists no " + std::string(to_string(target)) +
+                            " bytecode for the " + std::string(to_string(pass)) + " pass's " +
+                            (vertex ? "vertex" : "fragment") +
+                            " stage (a library built without --hlsl-compiler)");
+    }
+    auto translated = translate_bytecode(translator, target, stage, library.root / file->path);
+    if (!translated) return translated.error();
+    out.execution.front_end = translated->front_end;
+    profiles.push_back(file->profile);
+    auto code = reflected(std::move(translated->spirv), file->path);
+    if (!code) return code.error();
+    (vertex ? out.program.vert : out.program.frag) = std::move(*code);
+  }
+  out.execution.front_end += " (" + profiles[0] + ", " + profiles[1] + ")";
+  // The bytecode flips y as the HLSL text it was compiled from does.
+  out.program.d3d_viewport = true;
+  out.program.d3d_bytecode = true;
+  return out;
+}
+
 Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
                                                const LibraryVariant& variant, Target target) {
-  auto query = load_executable(library, variant, PassKind::query, target);
+  return load_screen_blur(
+      [&](PassKind pass) { return load_executable(library, variant, pass, target); });
+}
+
+Result<ScreenBlurExecutables> load_screen_blur(const PassLoader& load) {
+  auto query = load(PassKind::query);
   if (!query) return query.error();
-  auto blur_h = load_executable(library, variant, PassKind::blur_h, target);
+  auto blur_h = load(PassKind::blur_h);
   if (!blur_h) return blur_h.error();
-  auto blur_v = load_executable(library, variant, PassKind::blur_v, target);
+  auto blur_v = load(PassKind::blur_v);
   if (!blur_v) return blur_v.error();
-  auto composite = load_executable(library, variant, PassKind::composite, target);
+  auto composite = load(PassKind::composite);
   if (!composite) return composite.error();
   return ScreenBlurExecutables{std::move(*query), std::move(*blur_h), std::move(*blur_v),
                                std::move(*composite)};

@@ -19,7 +19,17 @@ bool declares_builtin(const ShaderInterface& iface, std::string_view builtin) {
          iface.builtin_outputs.end();
 }
 
-Status check_vertex_stage(const ShaderInterface& vert, const PassShape& shape) {
+// Direct3D 9's input registers are float4, and vkd3d declares the
+// translated input so: the input assembler fills what the vertex data lacks
+// with (0, 0, 1), as Direct3D's does.
+bool reads_position(const PassProgram& program, const StageVariable& input,
+                    const PassShape& shape) {
+  return input.components == shape.position_components ||
+         (program.d3d_bytecode && input.components == 4);
+}
+
+Status check_vertex_stage(const PassProgram& program, const PassShape& shape) {
+  const ShaderInterface& vert = program.vert.iface;
   const std::string pass(shape.name);
   const std::string supplied =
       "position (" + std::to_string(shape.position_components) + " floats) at location 0";
@@ -30,7 +40,7 @@ Status check_vertex_stage(const ShaderInterface& vert, const PassShape& shape) {
                             std::to_string(input.location) + " has no data; the " + pass +
                             " supplies only " + supplied);
     }
-    if (input.components != shape.position_components) {
+    if (!reads_position(program, input, shape)) {
       return fail(pass, "vertex input '" + input.name + "' has " +
                             std::to_string(input.components) + " components; the " + pass +
                             " supplies " + supplied);
@@ -90,7 +100,7 @@ Status check_interface(const PassProgram& program, const PassShape& shape) {
     return fail(std::string(shape.name),
                 "the program's reflection must describe a vertex stage and a fragment stage");
   }
-  PENUMBRA_TRY(check_vertex_stage(program.vert.iface, shape));
+  PENUMBRA_TRY(check_vertex_stage(program, shape));
   return check_fragment_stage(program.frag.iface, shape);
 }
 

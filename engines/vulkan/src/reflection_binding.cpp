@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <utility>
 
 #include "formats.hpp"
+#include "register_slots.hpp"
 #include "text_slots.hpp"
 
 namespace penumbra::detail {
@@ -36,15 +38,19 @@ class Planner {
     flag_ = flag;
     resources_ = module_resources(iface);
     accounted_.assign(resources_.size(), false);
-    const TextSlots slots(program_.target, resources_);
+    // Translated bytecode names its resources by register; text as its API finds them.
+    const std::unique_ptr<TextSlots> slots =
+        program_.d3d_bytecode ? std::make_unique<RegisterSlots>(program_.target, resources_)
+                              : std::make_unique<TextSlots>(program_.target, resources_);
+    source_ = slots->source();
     for (const TextureBinding& texture : bindings.textures) {
-      PENUMBRA_TRY(add_texture(slots, texture));
+      PENUMBRA_TRY(add_texture(*slots, texture));
     }
-    for (const BlockBinding& block : bindings.blocks) PENUMBRA_TRY(add_block(slots, block));
-    if (!bindings.uniforms.empty()) PENUMBRA_TRY(add_uniforms(slots, bindings.uniforms));
+    for (const BlockBinding& block : bindings.blocks) PENUMBRA_TRY(add_block(*slots, block));
+    if (!bindings.uniforms.empty()) PENUMBRA_TRY(add_uniforms(*slots, bindings.uniforms));
     for (std::size_t i = 0; i < resources_.size(); ++i) {
       if (!accounted_[i]) {
-        return fail("the text declares " + describe(resources_[i]) + " (" + stage_ +
+        return fail(source_ + " declares " + describe(resources_[i]) + " (" + stage_ +
                     ") that index.json's reflection lacks");
       }
     }
@@ -66,14 +72,14 @@ class Planner {
   }
 
   std::string lacking(const std::string& what, const std::string& where) const {
-    return "index.json's reflection names " + what + " at " + where + " (" + stage_ +
-           "), which the text does not declare";
+    return "index.json's reflection names " + what + " at " + where + " (" + stage_ + "), which " +
+           source_ + " does not declare";
   }
 
   // A sampler must compare exactly when the module samples with comparisons.
   Status check_comparison(const TextureBinding& texture, const ModuleResource& resource) const {
     if (resource.comparison == texture.sampler.state.comparison) return {};
-    return fail("texture '" + texture.name + "': the text samples it " +
+    return fail("texture '" + texture.name + "': " + source_ + " samples it " +
                 (resource.comparison ? "with" : "without") + " comparisons (" + describe(resource) +
                 ", " + stage_ + "), but index.json's reflection gives it " +
                 (texture.sampler.state.comparison ? "a comparison sampler"
@@ -117,7 +123,7 @@ class Planner {
       return fail(lacking("texture '" + texture.name + "'", slots.where_texture(texture)));
     accounted_[*image] = true;
     const ModuleResource& resource = resources_[*image];
-    PENUMBRA_TRY(check_comparison(texture, resource));
+    if (slots.images_tell_comparison()) PENUMBRA_TRY(check_comparison(texture, resource));
     PENUMBRA_TRY(check_contents(texture, *described, format));
     PlannedBinding planned{texture.name,
                            resource.set,
@@ -138,7 +144,7 @@ class Planner {
     return merge(std::move(planned));
   }
 
-  // A separate image's own sampler object (hlsl_dx10).
+  // A separate image's own sampler object (hlsl_dx10; any translated bytecode).
   Status add_sampler(const TextSlots& slots, const TextureBinding& texture) {
     const auto sampler = slots.sampler(texture);
     if (!sampler) {
@@ -149,7 +155,8 @@ class Planner {
     accounted_[*sampler] = true;
     const ModuleResource& resource = resources_[*sampler];
     PENUMBRA_TRY(check_comparison(texture, resource));
-    return merge({texture.sampler.name,
+    // Direct3D 9's sampler2D has no sampler object of its own to name.
+    return merge({texture.sampler.name.empty() ? texture.name + "'s sampler" : texture.sampler.name,
                   resource.set,
                   resource.binding,
                   resource.type,
@@ -190,7 +197,7 @@ class Planner {
       }
       planned.constants.push_back({member.name, member.parameter, *offset, member.size});
     }
-    PENUMBRA_TRY(check_members(resource, planned.constants));
+    PENUMBRA_TRY(check_members(slots, resource, planned.constants));
     return merge(std::move(planned));
   }
 
@@ -211,21 +218,18 @@ class Planner {
                             uniform.reg.empty() ? "its location" : "register " + uniform.reg));
       }
       planned.constants.push_back({uniform.name, uniform.parameter, *offset, uniform.size});
+      planned.size = std::max(planned.size, *offset + uniform.size);
     }
-    PENUMBRA_TRY(check_members(resource, planned.constants));
+    PENUMBRA_TRY(check_members(slots, resource, planned.constants));
     return merge(std::move(planned));
   }
 
-  // Every member the text declares is one the reflection fills.
-  Status check_members(const ModuleResource& resource,
+  // Every member the module declares is one the reflection fills.
+  Status check_members(const TextSlots& slots, const ModuleResource& resource,
                        const std::vector<ConstantFill>& constants) const {
-    for (const BlockMember& member : resource.block->members) {
-      const bool filled = std::any_of(constants.begin(), constants.end(),
-                                      [&](const auto& c) { return c.offset == member.offset; });
-      if (!filled) {
-        return fail("the text declares '" + member.name + "' in " + describe(resource) + " (" +
-                    stage_ + ") that index.json's reflection lacks");
-      }
+    if (const auto member = slots.unfilled(resource, constants)) {
+      return fail(source_ + " declares '" + *member + "' in " + describe(resource) + " (" + stage_ +
+                  ") that index.json's reflection lacks");
     }
     return {};
   }
@@ -259,6 +263,7 @@ class Planner {
   const PassProgram& program_;
   std::string_view pass_;
   std::string stage_;
+  std::string source_;  // "the text" or "the bytecode", for messages
   VkShaderStageFlags flag_ = 0;
   std::vector<ModuleResource> resources_;
   std::vector<bool> accounted_;

@@ -12,15 +12,6 @@ namespace {
 // registers, register(cN) at offset 16 * N (docs/frontends.md).
 constexpr std::string_view kHlslGlobalBlock = "$Global";
 
-// The number of a register written as HLSL writes it ("t2" with kind 't').
-std::optional<std::uint32_t> register_number(std::string_view reg, char kind) {
-  if (reg.size() < 2 || reg[0] != kind) return std::nullopt;
-  std::uint32_t number = 0;
-  const auto [end, error] = std::from_chars(reg.data() + 1, reg.data() + reg.size(), number);
-  if (error != std::errc() || end != reg.data() + reg.size()) return std::nullopt;
-  return number;
-}
-
 std::string slot_text(std::uint32_t set, std::uint32_t binding) {
   return "set " + std::to_string(set) + " binding " + std::to_string(binding);
 }
@@ -39,6 +30,14 @@ const char* kind_name(VkDescriptorType type) {
 }
 
 }  // namespace
+
+std::optional<std::uint32_t> register_number(std::string_view reg, char kind) {
+  if (reg.size() < 2 || reg[0] != kind) return std::nullopt;
+  std::uint32_t number = 0;
+  const auto [end, error] = std::from_chars(reg.data() + 1, reg.data() + reg.size(), number);
+  if (error != std::errc() || end != reg.data() + reg.size()) return std::nullopt;
+  return number;
+}
 
 std::string describe(const ModuleResource& resource) {
   return std::string(kind_name(resource.type)) + " '" + resource.name + "' (" +
@@ -177,6 +176,16 @@ std::optional<std::uint32_t> TextSlots::member_offset(const BlockBinding& block,
     return std::nullopt;
   }
   return it->offset;
+}
+
+std::optional<std::string> TextSlots::unfilled(const ModuleResource& buffer,
+                                               const std::vector<ConstantFill>& constants) const {
+  for (const BlockMember& member : buffer.block->members) {
+    const bool filled = std::any_of(constants.begin(), constants.end(),
+                                    [&](const auto& c) { return c.offset == member.offset; });
+    if (!filled) return member.name;
+  }
+  return std::nullopt;
 }
 
 std::string TextSlots::where_texture(const TextureBinding& texture) const {

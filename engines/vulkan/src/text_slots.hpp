@@ -8,11 +8,14 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "reflection_binding.hpp"
 
 namespace penumbra::detail {
 
@@ -35,34 +38,45 @@ std::vector<ModuleResource> module_resources(const ShaderInterface& iface);
 
 // One stage's lookups. Each returns an index into `resources` or, when the
 // module has nothing there, an empty optional; what was looked for is
-// written by the matching where_*() for messages.
+// written by the matching where_*() for messages. RegisterSlots
+// (register_slots.hpp) looks up by register instead, in translated bytecode.
 class TextSlots {
  public:
   TextSlots(Target target, const std::vector<ModuleResource>& resources)
       : target_(target), resources_(resources) {}
+  virtual ~TextSlots() = default;
 
   // The image (combined or separate) of a texture.
-  std::optional<std::size_t> texture(const TextureBinding& texture) const;
-  // hlsl_dx10's separate sampler of a texture (its s# register).
-  std::optional<std::size_t> sampler(const TextureBinding& texture) const;
-  std::optional<std::size_t> block(const BlockBinding& block) const;
+  virtual std::optional<std::size_t> texture(const TextureBinding& texture) const;
+  // The separate sampler of a texture (hlsl_dx10's s# register).
+  virtual std::optional<std::size_t> sampler(const TextureBinding& texture) const;
+  virtual std::optional<std::size_t> block(const BlockBinding& block) const;
   // A loose uniform (glsl330's struct members, hlsl_dx9's constant
   // registers): the block glslang gathers them into.
-  std::optional<std::size_t> uniform_block() const;
+  virtual std::optional<std::size_t> uniform_block() const;
   // A loose uniform's offset in uniform_block(): by name (glsl330) or 16
   // bytes per c# register (hlsl_dx9); empty when the block has no member
   // there.
-  std::optional<std::uint32_t> uniform_offset(const ConstantBinding& uniform) const;
+  virtual std::optional<std::uint32_t> uniform_offset(const ConstantBinding& uniform) const;
   // A block member's offset: the reflection's, checked against the member
   // the module has by name (essl300) or at that offset (every other target).
-  std::optional<std::uint32_t> member_offset(const BlockBinding& block, std::size_t resource,
-                                             const ConstantBinding& member) const;
+  virtual std::optional<std::uint32_t> member_offset(const BlockBinding& block,
+                                                     std::size_t resource,
+                                                     const ConstantBinding& member) const;
+  // The first member of a uniform buffer that no constant fills, or none.
+  virtual std::optional<std::string> unfilled(const ModuleResource& buffer,
+                                              const std::vector<ConstantFill>& constants) const;
+  // Whether an image's type says if it is sampled with comparisons (else
+  // only its sampler does).
+  virtual bool images_tell_comparison() const { return true; }
+  // What the module was made from, for messages: "the text".
+  virtual std::string_view source() const { return "the text"; }
 
   std::string where_texture(const TextureBinding& texture) const;
   std::string where_sampler(const TextureBinding& texture) const;
   std::string where_block(const BlockBinding& block) const;
 
- private:
+ protected:
   std::optional<std::size_t> at(std::uint32_t set, std::uint32_t binding,
                                 std::initializer_list<VkDescriptorType> types) const;
   std::optional<std::size_t> named(const std::string& name, VkDescriptorType type) const;
@@ -70,5 +84,8 @@ class TextSlots {
   Target target_;
   const std::vector<ModuleResource>& resources_;
 };
+
+// The number of a register written as HLSL writes it ("t2" with kind 't').
+std::optional<std::uint32_t> register_number(std::string_view reg, char kind);
 
 }  // namespace penumbra::detail

@@ -69,7 +69,8 @@ struct SeparateSampler {
   std::uint32_t binding = 0;
   std::string image;  // paired_image_name(name): the image it samples by name, or ""
   // Used with a depth image in the module (SPIRV-Cross's analysis of which
-  // images each sampler samples): in practice, a comparison sampler.
+  // images each sampler samples) or by a depth comparison (OpImage*Dref*):
+  // in practice, a comparison sampler.
   bool comparison = false;
   bool operator==(const SeparateSampler&) const = default;
 };

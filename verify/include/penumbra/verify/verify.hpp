@@ -7,6 +7,7 @@
 #include <optional>
 #include <string_view>
 
+#include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/vulkan/engine.hpp"
@@ -18,6 +19,9 @@ struct VerifyOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
   std::vector<Target> targets;        // only these; empty = all the library has
   bool gl = true;  // also run glsl330/glsl450 through the OpenGL driver when built with GL
+  // vkd3d-compiler for the Direct3D bytecode path; with none (empty
+  // compiler), that path's runs are reported not executed.
+  BytecodeTranslator bytecode = {};
 };
 
 // A GPU image against the CPU's next step of screen_blur's chain run on the
@@ -47,7 +51,7 @@ struct SceneRun {
   bool pass() const;  // every check above passed
 };
 
-// One variant, one target, one backend ("vulkan" or "gl").
+// One variant, one target, one backend ("vulkan", "bytecode" or "gl").
 struct TargetRun {
   Target target = Target::spirv;
   std::string backend = "vulkan";

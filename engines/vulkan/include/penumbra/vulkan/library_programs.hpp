@@ -1,6 +1,9 @@
 // Loading a built library's passes as runnable programs.
 #pragma once
 
+#include <functional>
+
+#include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/program.hpp"
@@ -24,6 +27,16 @@ struct ExecutableProgram {
 Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
                                           PassKind pass, Target target);
 
+// The pass of `variant` for Direct3D `target` from its bytecode (the .d3dbc
+// or .dxbc files index.json lists), translated to SPIR-V by `translator`
+// and bound by the reflection's registers. Errors: bad_input when the
+// library holds no bytecode for the pass (built without an HLSL compiler);
+// compile when the translator fails.
+Result<ExecutableProgram> load_bytecode_executable(const Library& library,
+                                                   const LibraryVariant& variant, PassKind pass,
+                                                   Target target,
+                                                   const BytecodeTranslator& translator);
+
 // A screen_blur variant's four passes for `target` (Engine::run_screen_blur).
 struct ScreenBlurExecutables {
   ExecutableProgram query;
@@ -38,6 +51,9 @@ struct ScreenBlurExecutables {
 
 Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
                                                const LibraryVariant& variant, Target target);
+// The same, each pass loaded by `load` (load_executable, load_bytecode_executable).
+using PassLoader = std::function<Result<ExecutableProgram>(PassKind pass)>;
+Result<ScreenBlurExecutables> load_screen_blur(const PassLoader& load);
 
 // The emitted text (or .spv bytes) of one stage of a pass.
 Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,

@@ -20,8 +20,9 @@ struct StageCode {
 };
 
 // A vertex + fragment pair: the depth pass, a query pass, or any other pass.
-// The SPIR-V may come from Penumbra's shaderlib or from any target's emitted
-// text compiled by glslang (docs/runtime.md). The runtime creates and binds
+// The SPIR-V may come from Penumbra's shaderlib, from any target's emitted
+// text compiled by glslang, or from a Direct3D target's bytecode translated
+// by vkd3d-compiler (docs/runtime.md). The runtime creates and binds
 // every resource from `reflection`, read in `target`'s terms.
 struct PassProgram {
   StageCode vert;
@@ -34,6 +35,9 @@ struct PassProgram {
   // The vertex stage writes OpenGL clip z in [-w, w]: the runtime clips there
   // too (VK_EXT_depth_clip_control).
   bool gl_clip_depth = false;
+  // The stages are vkd3d-compiler's translation of `target`'s Direct3D
+  // bytecode: resources named by register, bound by the record's registers.
+  bool d3d_bytecode = false;
 };
 
 }  // namespace penumbra

@@ -1,0 +1,22 @@
+// Finding vkd3d-compiler, the HLSL compiler and bytecode translator that
+// `penumbra build` and `penumbra verify` run.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "penumbra/support/result.hpp"
+
+namespace penumbra::cli {
+
+inline constexpr const char* kHlslCompilerHelp =
+    "vkd3d-compiler for the Direct3D bytecode (default: $PENUMBRA_HLSL_COMPILER, then "
+    "~/.cache/penumbra/vkd3d/bin/vkd3d-compiler)";
+
+// vkd3d-compiler: `flag` (--hlsl-compiler), else $PENUMBRA_HLSL_COMPILER,
+// else where ../shared/tools/fetch-vkd3d installs it (scripts/lib/setup.sh's
+// cache, $XDG_CACHE_HOME or ~/.cache); empty when none of them has it. A
+// flag or variable naming no executable file is a bad_input error.
+Result<std::filesystem::path> find_hlsl_compiler(const std::string& flag);
+
+}  // namespace penumbra::cli

@@ -1,0 +1,29 @@
+// Translating a stage's Direct3D bytecode (the .d3dbc/.dxbc files beside the
+// hlsl_* text) to Vulkan SPIR-V with vkd3d-compiler, as Proton's vkd3d does
+// when a Direct3D engine loads it (docs/verification.md).
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+
+#include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/model/model.hpp"
+#include "penumbra/support/result.hpp"
+
+namespace penumbra {
+
+struct BytecodeTranslator {
+  std::filesystem::path compiler;             // vkd3d-compiler 2.1 or newer
+  std::chrono::milliseconds timeout{60'000};  // per file
+};
+
+// `bytecode`, `target`'s bytecode of `stage` (bytecode_format()), as
+// SPIR-V that passes spirv-val for Vulkan 1.0: resources named by register
+// (t#, s#, cb#_#), bindings in vkd3d's declaration order, in a descriptor
+// set per stage (the vertex stage's 0, the fragment stage's 1: Direct3D's
+// register files are per stage). Errors (compile, at the file) name the translator's
+// message; bad_input for a target without bytecode.
+Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, Target target,
+                                          ShaderStage stage, const std::filesystem::path& bytecode);
+
+}  // namespace penumbra

@@ -1,0 +1,79 @@
+#include <unistd.h>
+
+#include <atomic>
+#include <string>
+
+#include "penumbra/compiler/bytecode_frontend.hpp"
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/compiler/targets.hpp"
+#include "penumbra/support/process.hpp"
+#include "spirv/descriptor_sets.hpp"
+#include "spirv/validation.hpp"
+
+namespace penumbra {
+namespace {
+
+// vkd3d-compiler writes the module to a file: its stdout would interleave
+// the binary with its messages. One name per call, as verify may translate
+// on several threads and processes at once.
+std::filesystem::path temporary_output() {
+  static std::atomic<unsigned> counter{0};
+  return std::filesystem::temp_directory_path() / ("penumbra-vkd3d-" + std::to_string(::getpid()) +
+                                                   "-" + std::to_string(counter++) + ".spv");
+}
+
+// Removes the file when the translation is done with it.
+struct RemovedFile {
+  std::filesystem::path path;
+  ~RemovedFile() {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+  }
+};
+
+// Direct3D gives each stage register files of its own; vkd3d-compiler's
+// command line takes no binding map, so each stage's descriptors, all in set
+// 0 from binding 0, move to a set of their own.
+std::uint32_t descriptor_set(ShaderStage stage) {
+  return stage == ShaderStage::vertex ? 0 : 1;
+}
+
+}  // namespace
+
+Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, Target target,
+                                          ShaderStage stage,
+                                          const std::filesystem::path& bytecode) {
+  const auto format = bytecode_format(target, stage);
+  if (!format) {
+    return make_error(Error::Kind::bad_input, bytecode.string(),
+                      "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
+  }
+  const std::string front_end = "vkd3d-compiler " + std::string(format->vkd3d_type) + " to SPIR-V";
+  const RemovedFile output{temporary_output()};
+  auto run = run_process({translator.compiler.string(), "-x", std::string(format->vkd3d_type), "-b",
+                          "spirv-binary", "-o", output.path.string(), bytecode.string()},
+                         translator.timeout);
+  if (!run) {
+    return make_error(Error::Kind::io, translator.compiler.string(),
+                      "cannot run the HLSL compiler (--hlsl-compiler): " + run.error().message);
+  }
+  if (run->timed_out || run->exit_code != 0) {
+    const std::string why = run->timed_out ? "no SPIR-V within the time limit"
+                                           : "exit status " + std::to_string(run->exit_code);
+    return make_error(Error::Kind::compile, bytecode.string(),
+                      front_end + ": " + why + (run->output.empty() ? "" : ":\n" + run->output));
+  }
+  auto spirv = read_spirv_file(output.path);
+  if (!spirv) {
+    return make_error(Error::Kind::compile, bytecode.string(),
+                      front_end + " wrote no SPIR-V: " + spirv.error().message);
+  }
+  move_to_descriptor_set(*spirv, descriptor_set(stage));
+  if (auto valid = validate_vulkan_spirv(*spirv); !valid) {
+    return make_error(Error::Kind::compile, bytecode.string(),
+                      front_end + " wrote SPIR-V that fails validation:\n" + valid.error().message);
+  }
+  return FrontEndResult{std::move(*spirv), front_end, {}};
+}
+
+}  // namespace penumbra
