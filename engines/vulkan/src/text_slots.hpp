@@ -13,6 +13,7 @@
 
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra::detail {
 
@@ -39,11 +40,11 @@ std::vector<ModuleResource> module_resources(const ShaderInterface& iface);
 class TextSlots {
  public:
   TextSlots(Target target, const std::vector<ModuleResource>& resources)
-      : target_(target), resources_(resources) {}
+      : dialect_(traits(target).dialect), resources_(resources) {}
 
   // The image (combined or separate) of a texture.
   std::optional<std::size_t> texture(const TextureBinding& texture) const;
-  // hlsl_dx10's separate sampler of a texture (its s# register).
+  // Direct3D 10's separate sampler of a texture (its s# register).
   std::optional<std::size_t> sampler(const TextureBinding& texture) const;
   std::optional<std::size_t> block(const BlockBinding& block) const;
   // A loose uniform (glsl330's struct members, hlsl_dx9's constant
@@ -67,7 +68,7 @@ class TextSlots {
                                 std::initializer_list<VkDescriptorType> types) const;
   std::optional<std::size_t> named(const std::string& name, VkDescriptorType type) const;
 
-  Target target_;
+  ReflectionDialect dialect_;
   const std::vector<ModuleResource>& resources_;
 };
 

@@ -1,5 +1,5 @@
-// What distinguishes one target from another, in one place: the defines the
-// shader source sees and the file names of its output.
+// What the compiler makes of a target's traits (target_traits.hpp): the
+// defines the shader source sees, its bytecode and the file names of its output.
 #pragma once
 
 #include <optional>
@@ -8,17 +8,9 @@
 
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/model.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
-
-struct TargetTraits {
-  bool comparison_sampler = true;  // has sampler2DShadow / SampleCmp; false for hlsl_dx9
-  bool is_hlsl = false;            // HLSL text (y flipped for D3D's viewport)
-  bool is_text = true;             // false for spirv (binary output)
-  int shader_model = 0;            // HLSL: the Direct3D bytecode's shader model (3 or 4); else 0
-};
-
-TargetTraits traits(Target target);
 
 // `#define` lines for the target, included into every shader via variant.glsl.
 std::string target_defines(Target target);
