@@ -13,6 +13,8 @@ constexpr TargetTraits kTraits[] = {
     {.name = "glsl450", .dialect = glsl450},
     {.name = "glsl330", .dialect = glsl330},
     {.name = "essl300", .dialect = essl300},
+    // Direct3D 11 binds as Direct3D 10: cbuffer b#, Texture2D t#, samplers s#.
+    {.name = "hlsl_dx11", .dialect = d3d10, .is_hlsl = true, .shader_model = 5},
     {.name = "hlsl_dx10", .dialect = d3d10, .is_hlsl = true, .shader_model = 4},
     // SM 3.0 has no comparison sampler: compares are made in the shader.
     {.name = "hlsl_dx9",
