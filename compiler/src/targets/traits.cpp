@@ -15,7 +15,8 @@ std::optional<BytecodeFormat> bytecode_format(Target target, ShaderStage stage) 
   if (model == 0) return std::nullopt;
   const std::string profile =
       std::string(stage == ShaderStage::vertex ? "vs_" : "ps_") + std::to_string(model) + "_0";
-  // Shader model 3 is the Direct3D 9 bytecode; 4 the container of Direct3D 10.
+  // Shader model 3 is the Direct3D 9 bytecode; 4 and 5 the container of
+  // Direct3D 10 and 11.
   if (model == 3) return BytecodeFormat{profile, "d3dbc", ".d3dbc"};
   return BytecodeFormat{profile, "dxbc-tpf", ".dxbc"};
 }

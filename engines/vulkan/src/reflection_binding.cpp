@@ -112,7 +112,7 @@ class Planner {
     return merge(std::move(planned));
   }
 
-  // A separate image's own sampler object (hlsl_dx10).
+  // A separate image's own sampler object (the d3d10 dialect).
   Status add_sampler(const TextSlots& slots, const TextureBinding& texture) {
     const auto sampler = slots.sampler(texture);
     if (!sampler) {

@@ -16,10 +16,11 @@ namespace penumbra {
 std::string target_defines(Target target);
 
 // The Direct3D bytecode a stage's HLSL text compiles to (vkd3d-compiler's
-// terms): for hlsl_dx9, vs_3_0/ps_3_0 as d3dbc; for hlsl_dx10, vs_4_0/ps_4_0
-// as dxbc-tpf.
+// terms), by the target's shader model: for hlsl_dx9, vs_3_0/ps_3_0 as
+// d3dbc; for hlsl_dx10 and hlsl_dx11, vs_4_0/ps_4_0 and vs_5_0/ps_5_0 as
+// dxbc-tpf.
 struct BytecodeFormat {
-  std::string profile;          // "vs_3_0", "ps_3_0", "vs_4_0", "ps_4_0"
+  std::string profile;          // "vs_3_0", "ps_3_0", "vs_4_0", ..., "ps_5_0"
   std::string_view vkd3d_type;  // vkd3d-compiler's -b: "d3dbc" or "dxbc-tpf"
   std::string_view extension;   // ".d3dbc" or ".dxbc", replacing the text's ".hlsl"
 };
