@@ -187,7 +187,7 @@ class TargetReflector {
     out.components = input.components;
     const std::size_t row = input.components - 1;
     if (traits(target_).is_hlsl) {
-      // SPIRV-Cross names location N's input TEXCOORD<N> in both shader models.
+      // SPIRV-Cross names location N's input TEXCOORD<N> in every shader model.
       out.semantic = "TEXCOORD" + std::to_string(input.location);
       out.format = std::string(dialect_ == Dialect::d3d9 ? kD3d9[row] : kDxgi[row]);
     } else {
