@@ -1,35 +1,18 @@
 #include "penumbra/model/model.hpp"
 
 #include <cmath>
-#include <cstddef>
 
 #include "penumbra/model/shader_contract.hpp"
-#include "penumbra/support/text.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
-namespace {
-
-// Indexed by the enum values, so the order must follow the enum declarations.
-constexpr std::array<std::string_view, kAllTargets.size()> kTargetNames = {
-    "spirv", "glsl450", "glsl330", "essl300", "hlsl_dx10", "hlsl_dx9"};
-
-template <typename Enum, std::size_t N>
-std::optional<Enum> parse_name(const std::array<std::string_view, N>& names,
-                               const std::array<Enum, N>& values, std::string_view name) {
-  for (std::size_t i = 0; i < N; ++i) {
-    if (names[i] == name) return values[i];
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 std::string_view to_string(Technique technique) {
   return describe(technique).name;
 }
 
 std::string_view to_string(Target target) {
-  return kTargetNames[static_cast<std::size_t>(target)];
+  return traits(target).name;
 }
 
 std::optional<Technique> parse_technique(std::string_view name) {
@@ -40,7 +23,10 @@ std::optional<Technique> parse_technique(std::string_view name) {
 }
 
 std::optional<Target> parse_target(std::string_view name) {
-  return parse_name(kTargetNames, kAllTargets, name);
+  for (Target target : kAllTargets) {
+    if (traits(target).name == name) return target;
+  }
+  return std::nullopt;
 }
 
 std::string allowed_techniques() {
@@ -52,7 +38,11 @@ std::string allowed_techniques() {
 }
 
 std::string allowed_targets() {
-  return join(kTargetNames, ", ");
+  std::string out;
+  for (Target target : kAllTargets) {
+    out += (out.empty() ? "" : ", ") + std::string(traits(target).name);
+  }
+  return out;
 }
 
 bool uses_minmax_mip(Technique technique) {

@@ -3,22 +3,24 @@
 #include <cstddef>
 #include <nlohmann/json.hpp>
 
+#include "penumbra/model/target_traits.hpp"
+
 namespace penumbra {
 namespace {
 
 enum class Api { vulkan, gl, d3d10, d3d9 };
 
 Api api_of(Target target) {
-  switch (target) {
-    case Target::spirv:
+  switch (traits(target).dialect) {
+    case ReflectionDialect::spirv:
       return Api::vulkan;
-    case Target::glsl450:
-    case Target::glsl330:
-    case Target::essl300:
+    case ReflectionDialect::glsl450:
+    case ReflectionDialect::glsl330:
+    case ReflectionDialect::essl300:
       return Api::gl;
-    case Target::hlsl_dx10:
+    case ReflectionDialect::d3d10:
       return Api::d3d10;
-    case Target::hlsl_dx9:
+    case ReflectionDialect::d3d9:
       return Api::d3d9;
   }
   return Api::vulkan;

@@ -9,6 +9,7 @@
 #include "default_library.hpp"
 #include "hlsl_compiler.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/target_traits.hpp"
 #include "penumbra/support/file.hpp"
 #include "stages/stages.hpp"
 
@@ -17,7 +18,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// Fast to compile today; the whole default library is not (issue 11).
+// A few quick variants for the per-file checks; the whole default library
+// is compiled once, by DefaultLibraryBytecode.
 const std::vector<std::string> kFastVariants = {"hard", "pcf_grid_k3", "pcss_b16_p16_whitepaper16",
                                                 "screen_blur_r4"};
 
@@ -50,18 +52,18 @@ TEST_P(DefaultBytecode, EveryPassListsItsBytecodeWithProfileAndSize) {
   const Variant* variant = find_default_variant(GetParam());
   ASSERT_NE(variant, nullptr) << GetParam();
   const BuildOptions options{.jobs = 2, .hlsl = {.compiler = *compiler}};
-  auto built = TemporaryLibrary::build({*variant}, {Target::hlsl_dx9, Target::hlsl_dx10}, options);
+  auto built = TemporaryLibrary::build({*variant}, hlsl_targets(), options);
   ASSERT_TRUE(built.ok()) << built.error().to_string();
   const Library& library = (*built)->library();
   const LibraryVariant& read = library.variants.at(0);
   ASSERT_FALSE(read.passes.empty());
   for (const auto& [pass, by_target] : read.passes) {
-    ASSERT_EQ(by_target.size(), 2u) << to_string(pass);
+    ASSERT_EQ(by_target.size(), hlsl_targets().size()) << to_string(pass);
     for (const auto& [target, files] : by_target) {
       SCOPED_TRACE(std::string(to_string(pass)) + ", " + std::string(to_string(target)));
-      const std::string model = target == Target::hlsl_dx9 ? "_3_0" : "_4_0";
-      expect_bytecode(library, files.vert, files.vert_bytecode, "vs" + model);
-      expect_bytecode(library, files.frag, files.frag_bytecode, "ps" + model);
+      const std::string model = std::to_string(traits(target).shader_model);
+      expect_bytecode(library, files.vert, files.vert_bytecode, "vs_" + model + "_0");
+      expect_bytecode(library, files.frag, files.frag_bytecode, "ps_" + model + "_0");
     }
   }
 }
@@ -69,16 +71,16 @@ TEST_P(DefaultBytecode, EveryPassListsItsBytecodeWithProfileAndSize) {
 INSTANTIATE_TEST_SUITE_P(Fast, DefaultBytecode, ::testing::ValuesIn(kFastVariants),
                          [](const auto& param_info) { return test_name(param_info.param); });
 
-// Every hlsl_dx9 and hlsl_dx10 file of the default library compiles with
-// the real compiler, with no warning (W####: SampleCmp on a comparison
-// texture declared Texture2D<float> truncates nothing), and every Shader
-// Model 3 file fits the 512 instruction slots of every device by the
-// compiler's own count, which index.json lists.
+// Every Direct3D file of the default library compiles with the real
+// compiler, with no warning (W####: SampleCmp on a comparison texture
+// declared Texture2D<float> truncates nothing), and every Shader Model 3
+// file fits the 512 instruction slots of every device by the compiler's own
+// count, which index.json lists.
 TEST(DefaultLibraryBytecode, EveryDirect3DFileCompilesWithoutWarningsAndFits) {
   auto compiler = recorded_hlsl_compiler();
   ASSERT_TRUE(compiler.ok()) << compiler.error().to_string();
   std::vector<Variant> variants = default_variants();
-  for (Variant& variant : variants) variant.targets = {Target::hlsl_dx9, Target::hlsl_dx10};
+  for (Variant& variant : variants) variant.targets = hlsl_targets();
   const std::filesystem::path out = std::filesystem::path(::testing::TempDir()) /
                                     ("penumbra-bytecode-all-" + std::to_string(::getpid()));
   std::vector<std::string> warnings;

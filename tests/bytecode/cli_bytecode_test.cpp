@@ -15,7 +15,8 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 
 constexpr const char* kManifest =
-    R"({"schema": 1, "targets": ["hlsl_dx9", "hlsl_dx10"], "sets": [{"technique": ["hard"]}]})";
+    R"({"schema": 1, "targets": ["hlsl_dx9", "hlsl_dx10", "hlsl_dx11"],)"
+    R"( "sets": [{"technique": ["hard"]}]})";
 constexpr const char* kNoBytecode = "no Direct3D bytecode made";
 
 class CliBytecode : public ::testing::Test {
@@ -72,10 +73,11 @@ TEST_F(CliBytecode, TheFlagNamesTheCompiler) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.err, Not(HasSubstr(kNoBytecode)));
   // Per target: depth.vert, depth.frag, fullscreen.vert and query.frag.
-  EXPECT_THAT(run.out, HasSubstr("8 bytecode files"));
-  EXPECT_EQ(listed_bytecode(), 8u);
+  EXPECT_THAT(run.out, HasSubstr("12 bytecode files"));
+  EXPECT_EQ(listed_bytecode(), 12u);
   EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx9/hard/query.frag.d3dbc"));
   EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx10/hard/query.frag.dxbc"));
+  EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx11/hard/query.frag.dxbc"));
 }
 
 TEST_F(CliBytecode, TheEnvironmentVariableNamesTheCompiler) {
@@ -84,7 +86,7 @@ TEST_F(CliBytecode, TheEnvironmentVariableNamesTheCompiler) {
   const CliRun run = build("", "PENUMBRA_HLSL_COMPILER='" + compiler->string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.err, Not(HasSubstr(kNoBytecode)));
-  EXPECT_EQ(listed_bytecode(), 8u);
+  EXPECT_EQ(listed_bytecode(), 12u);
 }
 
 TEST_F(CliBytecode, AMissingNamedCompilerIsAnError) {

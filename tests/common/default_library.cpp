@@ -10,6 +10,7 @@
 #include <cstdlib>
 
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra::testing {
 
@@ -39,6 +40,22 @@ std::vector<std::string> default_variant_names() {
   std::vector<std::string> names;
   for (const Variant& variant : default_variants()) names.push_back(variant.name);
   return names;
+}
+
+std::vector<Target> text_targets() {
+  std::vector<Target> out;
+  for (Target target : kAllTargets) {
+    if (traits(target).is_text) out.push_back(target);
+  }
+  return out;
+}
+
+std::vector<Target> hlsl_targets() {
+  std::vector<Target> out;
+  for (Target target : kAllTargets) {
+    if (traits(target).is_hlsl) out.push_back(target);
+  }
+  return out;
 }
 
 std::string test_name(std::string name) {

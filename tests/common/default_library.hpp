@@ -1,6 +1,6 @@
 // The default library's variants (permutations/default.json) as every test
-// suite reads them, test names made from them, and libraries built from
-// variants into temporary directories.
+// suite reads them, test names made from them, libraries built from
+// variants into temporary directories, and the targets a suite covers.
 #pragma once
 
 #include <filesystem>
@@ -25,6 +25,11 @@ const Variant* find_default_variant(std::string_view name);
 
 // The default variants' names, in the manifest's order (test parameters).
 std::vector<std::string> default_variant_names();
+
+// The targets with text (every one but spirv), and the HLSL targets, in
+// kAllTargets order: chosen by traits(), so suites cover a new target.
+std::vector<Target> text_targets();
+std::vector<Target> hlsl_targets();
 
 // `name` as a test name: every character but letters and digits made '_'.
 std::string test_name(std::string name);

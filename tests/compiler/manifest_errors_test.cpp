@@ -71,10 +71,10 @@ TEST(ManifestErrors, UnknownTarget) {
       manifest_error(
           R"({"schema": 1, "targets": ["spirv", "dx12"], "sets": [{"technique": "hard"}]})"),
       "perms.json: /targets/1: unknown target 'dx12'; allowed targets: spirv, glsl450, glsl330, "
-      "essl300, hlsl_dx10, hlsl_dx9");
+      "essl300, hlsl_dx11, hlsl_dx10, hlsl_dx9");
   expect_bad_input(manifest_error(with_set(R"({"technique": "hard", "target": "metal"})")),
                    "perms.json: /sets/1/target: unknown target 'metal'; allowed targets: spirv, "
-                   "glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9");
+                   "glsl450, glsl330, essl300, hlsl_dx11, hlsl_dx10, hlsl_dx9");
 }
 
 TEST(ManifestErrors, SampleCountOutOfRange) {

@@ -164,7 +164,7 @@ TEST(ManifestExpand, ExclusionWithTargetRemovesOnlyThatTarget) {
   EXPECT_EQ(variants[0].targets, kEveryTarget);
   EXPECT_EQ(variants[1].targets,
             (std::vector<Target>{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
-                                 Target::hlsl_dx10}));
+                                 Target::hlsl_dx11, Target::hlsl_dx10}));
 }
 
 TEST(ManifestExpand, ExclusionWithoutTargetDropsTheVariant) {
@@ -259,7 +259,7 @@ TEST(ManifestExpand, ExclusionsMatchTraversalAndMaxNodes) {
   EXPECT_EQ(variants[1].targets, kEveryTarget);
   EXPECT_EQ(variants[2].targets,
             (std::vector<Target>{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
-                                 Target::hlsl_dx10}));
+                                 Target::hlsl_dx11, Target::hlsl_dx10}));
 }
 
 TEST(ManifestExpand, ScreenBlurKeysAndWeights) {
@@ -289,8 +289,8 @@ TEST(ManifestExpand, ExclusionsMatchBlurRadiusAndDepthAware) {
                                                        "screen_blur_r4_depth_aware"}));
   // A key the variant lacks never matches: hard keeps every target.
   EXPECT_EQ(variants[0].targets, kEveryTarget);
-  const std::vector<Target> no_dx9{Target::spirv, Target::glsl450, Target::glsl330, Target::essl300,
-                                   Target::hlsl_dx10};
+  const std::vector<Target> no_dx9{Target::spirv,   Target::glsl450,   Target::glsl330,
+                                   Target::essl300, Target::hlsl_dx11, Target::hlsl_dx10};
   EXPECT_EQ(variants[1].targets, no_dx9);
   EXPECT_EQ(variants[2].targets, no_dx9);
   EXPECT_EQ(variants[3].targets, kEveryTarget);

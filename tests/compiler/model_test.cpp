@@ -1,10 +1,13 @@
-// Names of techniques and targets, and the variant naming rule.
+// Names of techniques and targets, the targets' traits, and the variant
+// naming rule.
 #include "penumbra/model/model.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
+
+#include "penumbra/compiler/targets.hpp"
 
 namespace penumbra {
 namespace {
@@ -23,14 +26,28 @@ TEST(Model, TargetNamesRoundTrip) {
   for (Target target : kAllTargets) EXPECT_EQ(parse_target(to_string(target)), target);
   EXPECT_EQ(to_string(Target::hlsl_dx9), "hlsl_dx9");
   EXPECT_EQ(parse_target("essl300"), Target::essl300);
-  EXPECT_EQ(parse_target("hlsl_dx11"), std::nullopt);
+  EXPECT_EQ(parse_target("hlsl_dx11"), Target::hlsl_dx11);
+  EXPECT_EQ(parse_target("hlsl_dx12"), std::nullopt);
+}
+
+// Direct3D 11 is Direct3D 10's dialect at shader model 5: its bytecode is
+// vs_5_0/ps_5_0 in the DXBC container.
+TEST(Model, Direct3D11BindsAsDirect3D10) {
+  EXPECT_EQ(traits(Target::hlsl_dx11).dialect, ReflectionDialect::d3d10);
+  EXPECT_EQ(traits(Target::hlsl_dx11).shader_model, 5);
+  const auto format = bytecode_format(Target::hlsl_dx11, ShaderStage::fragment);
+  ASSERT_TRUE(format.has_value());
+  EXPECT_EQ(format->profile, "ps_5_0");
+  EXPECT_EQ(format->vkd3d_type, "dxbc-tpf");
+  EXPECT_EQ(format->extension, ".dxbc");
+  EXPECT_FALSE(bytecode_format(Target::glsl450, ShaderStage::vertex).has_value());
 }
 
 TEST(Model, AllowedListsNameEveryValueInOrder) {
   EXPECT_EQ(allowed_techniques(),
             "hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
             "screen_blur");
-  EXPECT_EQ(allowed_targets(), "spirv, glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9");
+  EXPECT_EQ(allowed_targets(), "spirv, glsl450, glsl330, essl300, hlsl_dx11, hlsl_dx10, hlsl_dx9");
 }
 
 TEST(Model, VariantNames) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "default_library.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -31,21 +32,11 @@ ToolRun run_tool(const std::string& command) {
 std::string acceptance_command(Target target, ShaderStage stage, const std::string& file) {
   const std::string quoted = "'" + file + "'";
   const std::string st = stage == ShaderStage::vertex ? "vert" : "frag";
-  switch (target) {
-    case Target::spirv:
-      return std::string(SPIRV_VAL_EXECUTABLE) + " --target-env vulkan1.0 " + quoted;
-    case Target::glsl450:
-    case Target::glsl330:
-    case Target::essl300:
-      return std::string(GLSLANG_VALIDATOR_EXECUTABLE) + " -S " + st + " " + quoted;
-    case Target::hlsl_dx10:
-      return std::string(GLSLANG_VALIDATOR_EXECUTABLE) + " -V -D -e main -S " + st +
-             " -o /dev/null " + quoted;
-    case Target::hlsl_dx9:
-      return std::string(GLSLANG_VALIDATOR_EXECUTABLE) + " -V -D -e main -S " + st +
-             " --hlsl-dx9-compatible -o /dev/null " + quoted;
-  }
-  return {};
+  const TargetTraits t = traits(target);
+  if (!t.is_text) return std::string(SPIRV_VAL_EXECUTABLE) + " --target-env vulkan1.0 " + quoted;
+  if (!t.is_hlsl) return std::string(GLSLANG_VALIDATOR_EXECUTABLE) + " -S " + st + " " + quoted;
+  return std::string(GLSLANG_VALIDATOR_EXECUTABLE) + " -V -D -e main -S " + st +
+         (t.shader_model == 3 ? " --hlsl-dx9-compatible" : "") + " -o /dev/null " + quoted;
 }
 
 class TextAcceptance : public ::testing::TestWithParam<std::string> {};

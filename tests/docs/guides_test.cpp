@@ -23,7 +23,7 @@ namespace penumbra::testing {
 namespace {
 
 const std::filesystem::path kSourceDir = PENUMBRA_SOURCE_DIR;
-const std::vector<std::string> kGuides = {"d3d9", "d3d10", "opengl", "webgl2", "vulkan"};
+const std::vector<std::string> kGuides = {"d3d9", "d3d10", "d3d11", "opengl", "webgl2", "vulkan"};
 
 std::string read_guide(const std::string& guide) {
   std::ifstream in(kSourceDir / "docs" / "engines" / (guide + ".md"));

@@ -2,7 +2,6 @@
 // compiled for a target (compile_pass), as test inputs.
 #pragma once
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -10,9 +9,6 @@
 #include "penumbra/model/model.hpp"
 
 namespace penumbra::testing {
-
-inline constexpr std::array kTextTargets = {Target::glsl450, Target::glsl330, Target::essl300,
-                                            Target::hlsl_dx10, Target::hlsl_dx9};
 
 struct EmittedStage {
   PassKind pass = PassKind::query;

@@ -39,7 +39,7 @@ TEST_P(FrontEndErrors, ABrokenTextNamesTheTargetAndTheFile) {
   EXPECT_THAT(result.error().message, HasSubstr(file + ":"));  // glslang's log, at the line
 }
 
-INSTANTIATE_TEST_SUITE_P(TextTargets, FrontEndErrors, ::testing::ValuesIn(kTextTargets),
+INSTANTIATE_TEST_SUITE_P(TextTargets, FrontEndErrors, ::testing::ValuesIn(text_targets()),
                          [](const auto& param_info) {
                            return std::string(to_string(param_info.param));
                          });

@@ -119,7 +119,7 @@ TEST(Dx9SemanticsShim, ChangesOneSemanticOfEachEmittedEntryPoint) {
 TEST(ShimTable, AppliesEachShimToItsTargetOnly) {
   const std::string essl = "#version 300 es\nvoid main() {}\n";
   const std::string dx9(kDx9Vertex);
-  for (Target target : kTextTargets) {
+  for (Target target : text_targets()) {
     SCOPED_TRACE(to_string(target));
     const std::string& text = target == Target::essl300 ? essl : dx9;
     auto out = apply_shims(target, text);

@@ -10,17 +10,17 @@
 namespace penumbra::testing {
 
 Result<const Library*> default_library_of(const std::string& name,
-                                          std::initializer_list<Target> targets) {
+                                          const std::vector<Target>& targets) {
   static std::map<std::pair<std::string, std::vector<Target>>, std::unique_ptr<TemporaryLibrary>>
       built;
-  const auto key = std::make_pair(name, std::vector<Target>(targets));
+  const auto key = std::make_pair(name, targets);
   if (const auto found = built.find(key); found != built.end()) return &found->second->library();
   PENUMBRA_TRY_ASSIGN(auto library, build_default_variant(name, key.second));
   return &built.emplace(key, std::move(library)).first->second->library();
 }
 
 Status prove_default_variant(const std::string& name, Prover prover,
-                             std::initializer_list<Target> targets) {
+                             const std::vector<Target>& targets) {
   PENUMBRA_TRY_ASSIGN(const Library* library, default_library_of(name, targets));
   const LibraryVariant* variant = library->find(name);
   if (variant == nullptr) {

@@ -5,8 +5,8 @@
 // proves; a whole run of the binary builds each once and keeps it).
 #pragma once
 
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "penumbra/compiler/library.hpp"
 #include "proof.hpp"
@@ -17,11 +17,11 @@ namespace penumbra::testing {
 // `targets`, built on first use and removed at exit; the error names the
 // variant or the build failure.
 Result<const Library*> default_library_of(const std::string& name,
-                                          std::initializer_list<Target> targets);
+                                          const std::vector<Target>& targets);
 
 // `prover` over every pass of the default variant `name` for each of
 // `targets`: one error listing every pass that fails.
 Status prove_default_variant(const std::string& name, Prover prover,
-                             std::initializer_list<Target> targets);
+                             const std::vector<Target>& targets);
 
 }  // namespace penumbra::testing

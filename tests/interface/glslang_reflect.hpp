@@ -15,9 +15,9 @@
 namespace penumbra::testing {
 
 enum class GlslangSource {
-  glsl,       // #version picks the profile: 330, 300 es
-  hlsl_dx10,  // entry "main"
-  hlsl_dx9,   // entry "main", DX9-compatible (sampler2D, register(c#))
+  glsl,      // #version picks the profile: 330, 300 es
+  hlsl,      // entry "main"
+  hlsl_dx9,  // entry "main", DX9-compatible (sampler2D, register(c#))
 };
 
 struct GlslangObject {

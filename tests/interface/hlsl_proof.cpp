@@ -1,11 +1,11 @@
-// Proves the hlsl_dx10 and hlsl_dx9 reflections by glslang's HLSL front end
-// (entry "main"; EShMsgHlslDX9Compatible for hlsl_dx9; no binding shifts, no
+// Proves the HLSL targets' reflections by glslang's HLSL front end (entry
+// "main"; EShMsgHlslDX9Compatible for the d3d9 dialect; no binding shifts, no
 // automatic mapping), which reads a register(X#) as binding # and a DX9
 // register(cN) global as the member of $Global at offset 16 * N:
-//  - hlsl_dx10: each cbuffer's b#, size and member offsets and types; each
+//  - d3d10 (hlsl_dx10): each cbuffer's b#, size and member offsets and types; each
 //    Texture2D's t#; each SamplerState / SamplerComparisonState's s# and
 //    whether it compares;
-//  - hlsl_dx9: each constant's c# (its $Global offset / 16) and register
+//  - d3d9 (hlsl_dx9): each constant's c# (its $Global offset / 16) and register
 //    count, gl_HalfPixel's in vertex shaders; each sampler2D's s#;
 //  - both: the vertex inputs' semantics and components, the fragment
 //    outputs' render targets (COLOR# / SV_Target#).
@@ -15,6 +15,7 @@
 #include <cctype>
 
 #include "glslang_reflect.hpp"
+#include "penumbra/model/target_traits.hpp"
 #include "proof.hpp"
 
 namespace penumbra::testing {
@@ -100,7 +101,7 @@ int render_target(std::string semantic) {
 
 void observed_stage(ShaderStage stage, Target target, const GlslangReflection& text, Facts& facts) {
   const std::string key(stage_key(stage));
-  const bool dx9 = target == Target::hlsl_dx9;
+  const bool dx9 = traits(target).dialect == ReflectionDialect::d3d9;
   for (const GlslangBlock& block : text.blocks) {
     // DX9's loose constants: glslang's $Global, one register per 16 bytes.
     if (dx9 && block.name == "$Global") continue;
@@ -159,8 +160,9 @@ void observed_stage(ShaderStage stage, Target target, const GlslangReflection& t
 Status prove_glslang_hlsl(const Library& library, const LibraryVariant& variant, PassKind pass,
                           Target target) {
   PENUMBRA_TRY_ASSIGN(const PassReflection* reflection, reflection_of(variant, pass, target));
-  const GlslangSource source =
-      target == Target::hlsl_dx9 ? GlslangSource::hlsl_dx9 : GlslangSource::hlsl_dx10;
+  const GlslangSource source = traits(target).dialect == ReflectionDialect::d3d9
+                                   ? GlslangSource::hlsl_dx9
+                                   : GlslangSource::hlsl;
   Facts observed;
   for (const ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
     PENUMBRA_TRY_ASSIGN(const std::string text,

@@ -1,6 +1,6 @@
 // Every default variant's reflection in index.json proved against its
 // emitted files by parsers that are not the generator: SPIR-V by
-// SPIRV-Cross, ESSL 3.00 by glslang, HLSL (DX10 and DX9) by glslang's HLSL
+// SPIRV-Cross, ESSL 3.00 by glslang, every HLSL target by glslang's HLSL
 // front end. The OpenGL driver's proofs are in interface_gl_proof_test.cpp.
 #include <gtest/gtest.h>
 
@@ -23,8 +23,7 @@ TEST_P(InterfaceProof, GlslangFindsTheEsslReflection) {
 }
 
 TEST_P(InterfaceProof, GlslangFindsTheHlslReflection) {
-  const Status proved =
-      prove_default_variant(GetParam(), prove_glslang_hlsl, {Target::hlsl_dx10, Target::hlsl_dx9});
+  const Status proved = prove_default_variant(GetParam(), prove_glslang_hlsl, hlsl_targets());
   EXPECT_TRUE(proved.ok()) << proved.error().to_string();
 }
 

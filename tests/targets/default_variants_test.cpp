@@ -32,7 +32,7 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
       }
     }
   }
-  // Every shared pass, the min-max build passes included, for all six targets.
+  // Every shared pass, the min-max build passes included, for every target.
   const auto shared_sources = std::ranges::count_if(
       pass_plan(), [](const PassStageSource& source) { return !source.per_variant; });
   EXPECT_EQ(shared.size(), kAllTargets.size() * static_cast<std::size_t>(shared_sources));

@@ -1,5 +1,6 @@
-// hlsl_dx10 rules on hand-written modules: no gradients inside loops (found
-// through calls too), and SampleLevel / SampleCmpLevelZero as the only sampling.
+// The rules of Shader Model 4.0 and later (hlsl_dx10, hlsl_dx11) on
+// hand-written modules: no gradients inside loops (found through calls too),
+// and SampleLevel / SampleCmpLevelZero as the only sampling.
 #include <gtest/gtest.h>
 
 #include "spirv_fixture.hpp"
@@ -90,6 +91,15 @@ TEST(Dx10Rules, SampleLevelAndSampleCmpLevelZeroInsideLoopsAreAllowed) {
       "%d = OpLoad %dsampled %cmp\n"
       "%c = OpImageSampleDrefExplicitLod %float %d %uv %float_0 Lod %float_0\n";
   EXPECT_EQ(check_dx10(in_loop(body)), "");
+}
+
+// hlsl_dx11 has the same rules, by its shader model; the message names it.
+TEST(Dx10Rules, Direct3D11HasTheSameRules) {
+  RuleJob rule(Target::hlsl_dx11, {.main_body = in_loop(kImplicitSample)});
+  EXPECT_EQ(rule.check(), prefix(Target::hlsl_dx11) + "implicit-LOD sampling (Sample)" +
+                              " inside a loop is not allowed for hlsl_dx11: gradients in a loop "
+                              "make FXC unroll it or fail (X3570); sample with SampleLevel or take "
+                              "derivatives before the loop");
 }
 
 TEST(Dx10Rules, OtherTargetsMaySampleWithGradients) {

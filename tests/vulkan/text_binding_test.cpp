@@ -165,9 +165,7 @@ TEST_P(TextBindingTest, TheDepthPassNeedsTheFragmentDepth) {
             "image as in output 0");
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, TextBindingTest,
-                         ::testing::Values(Target::spirv, Target::glsl450, Target::glsl330,
-                                           Target::essl300, Target::hlsl_dx10, Target::hlsl_dx9),
+INSTANTIATE_TEST_SUITE_P(Targets, TextBindingTest, ::testing::ValuesIn(kAllTargets),
                          [](const auto& param_info) {
                            return std::string(to_string(param_info.param));
                          });

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "default_library.hpp"
 #include "test_programs.hpp"
 #include "text_programs.hpp"
 
@@ -108,7 +109,7 @@ TEST_P(TextPathTest, QueryPassComparesAsTheSpirvPath) {
   EXPECT_GT(partial, 20);
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, TextPathTest, ::testing::ValuesIn(test::kTextTargets),
+INSTANTIATE_TEST_SUITE_P(Targets, TextPathTest, ::testing::ValuesIn(testing::text_targets()),
                          [](const auto& param_info) {
                            return std::string(to_string(param_info.param));
                          });

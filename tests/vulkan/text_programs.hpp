@@ -12,9 +12,6 @@
 
 namespace penumbra::test {
 
-inline constexpr Target kTextTargets[] = {Target::glsl450, Target::glsl330, Target::essl300,
-                                          Target::hlsl_dx10, Target::hlsl_dx9};
-
 // shaders/<name>.spv with its reflect() record; fails the test if either fails.
 StageCode reflected_stage(const std::string& name);
 

@@ -54,7 +54,7 @@ Result<FrontEndResult> compile_target_text(Target target, ShaderStage stage, std
     return rejected(target, name, setup.description, program.getInfoLog());
   }
 
-  FrontEndResult result{{}, std::string(setup.description), std::move(shimmed->shims)};
+  FrontEndResult result{{}, setup.description, std::move(shimmed->shims)};
   glslang::SpvOptions options;
   options.disableOptimizer = !setup.legalize;
   spv::SpvBuildLogger logger;

@@ -6,7 +6,7 @@
 
 #include <glslang/Public/ShaderLang.h>
 
-#include <string_view>
+#include <string>
 
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/model.hpp"
@@ -14,7 +14,7 @@
 namespace penumbra {
 
 struct FrontEndSetup {
-  std::string_view description;  // FrontEndResult::front_end
+  std::string description;  // FrontEndResult::front_end
   EShMessages messages = EShMsgDefault;
   bool legalize = false;  // run glslang's HLSL legalization (spirv-opt) after translation
 };
@@ -22,7 +22,7 @@ struct FrontEndSetup {
 // glsl450, glsl330 and essl300.
 FrontEndSetup configure_glsl_front_end(Target target, ShaderStage stage, glslang::TShader& shader);
 
-// hlsl_dx10 and hlsl_dx9.
+// The HLSL targets, by shader model.
 FrontEndSetup configure_hlsl_front_end(Target target, ShaderStage stage, glslang::TShader& shader);
 
 }  // namespace penumbra

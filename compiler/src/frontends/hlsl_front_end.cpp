@@ -1,6 +1,7 @@
 #include "frontends/front_end_setup.hpp"
 #include "glsl/glslang_setup.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
 
@@ -20,7 +21,8 @@ FrontEndSetup configure_hlsl_front_end(Target target, ShaderStage stage, glslang
 
   const auto messages =
       static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl);
-  if (target == Target::hlsl_dx9) {
+  const int model = traits(target).shader_model;
+  if (model == 3) {
     // sampler2D is one texture+sampler object and loose uniforms with
     // register(c#) land in the $Global block at offset 16 * #, as in D3D9.
     // D3D9 has separate vertex and pixel constant files; the vertex stage's
@@ -31,7 +33,7 @@ FrontEndSetup configure_hlsl_front_end(Target target, ShaderStage stage, glslang
     return {"glslang HLSL (DX9-compatible)",
             static_cast<EShMessages>(messages | EShMsgHlslDX9Compatible), true};
   }
-  return {"glslang HLSL SM4", messages, true};
+  return {"glslang HLSL SM" + std::to_string(model), messages, true};
 }
 
 }  // namespace penumbra

@@ -7,10 +7,14 @@
 namespace penumbra {
 namespace {
 
+using Dialect = ReflectionDialect;
+
+// One target's reflection, written in its dialect (target_traits.hpp):
+// targets of one dialect reflect alike.
 class TargetReflector {
  public:
   TargetReflector(Target target, PassKind pass, const Variant* variant)
-      : target_(target), pass_(pass), variant_(variant) {}
+      : target_(target), dialect_(traits(target).dialect), pass_(pass), variant_(variant) {}
 
   // The stage's part: its bindings, and the vertex inputs (vertex stage) or
   // the render targets, depth target and extensions (fragment stage).
@@ -21,7 +25,7 @@ class TargetReflector {
     if (iface.stage == ShaderStage::vertex) {
       out.vert = std::move(bindings);
       for (const StageVariable& input : iface.inputs) out.vertex_inputs.push_back(attribute(input));
-      if (target_ == Target::hlsl_dx9) {
+      if (dialect_ == Dialect::d3d9) {
         out.vert.uniforms.push_back({std::string(kHalfPixelName), std::string(kHalfPixelParameter),
                                      "float4", std::nullopt, kParamMemberSize,
                                      "c" + std::to_string(half_pixel_register()), 1});
@@ -40,12 +44,12 @@ class TargetReflector {
           {output.name, output.location, std::string(api_format(target_, pass.output.format))});
     }
     if (pass.depth_target) {
-      out.depth_target = target_ == Target::hlsl_dx10
+      out.depth_target = dialect_ == Dialect::d3d10
                              ? "DXGI_FORMAT_D32_FLOAT"
                              : std::string(api_format(target_, TextureFormat::d32_float));
     }
     // WebGL2 and OpenGL ES 3.0 render to float formats only with this.
-    if (target_ == Target::essl300) out.extensions.push_back("EXT_color_buffer_float");
+    if (dialect_ == Dialect::essl300) out.extensions.push_back("EXT_color_buffer_float");
     return out;
   }
 
@@ -106,23 +110,23 @@ class TargetReflector {
                                member.size,
                                "",
                                0};
-      switch (target_) {
-        case Target::spirv:
+      switch (dialect_) {
+        case Dialect::spirv:
           constant.name = member.name;
           break;
-        case Target::glsl450:
-        case Target::essl300:
+        case Dialect::glsl450:
+        case Dialect::essl300:
           constant.name = param_block + "." + member.name;  // as GL reports block members
           break;
-        case Target::glsl330:
+        case Dialect::glsl330:
           constant.name = instance + "." + member.name;
           constant.offset.reset();
           out.uniforms.push_back(constant);
           continue;
-        case Target::hlsl_dx10:
+        case Dialect::d3d10:
           constant.name = instance + "_" + member.name;
           break;
-        case Target::hlsl_dx9:
+        case Dialect::d3d9:
           constant.name = instance + "_" + member.name;
           constant.offset.reset();
           constant.reg = "c" + std::to_string(member.offset / kParamMemberSize);
@@ -133,40 +137,40 @@ class TargetReflector {
       binding.members.push_back(std::move(constant));
     }
     if (binding.members.empty()) return;
-    if (target_ == Target::spirv) binding.set = block.set;
-    if (target_ == Target::spirv || target_ == Target::glsl450) binding.binding = block.binding;
-    if (target_ == Target::hlsl_dx10) binding.reg = "b" + std::to_string(block.binding);
+    if (dialect_ == Dialect::spirv) binding.set = block.set;
+    if (dialect_ == Dialect::spirv || dialect_ == Dialect::glsl450) binding.binding = block.binding;
+    if (dialect_ == Dialect::d3d10) binding.reg = "b" + std::to_string(block.binding);
     out.blocks.push_back(std::move(binding));
   }
 
   TextureBinding texture_binding(const TextureDescription& texture) const {
     TextureBinding out;
     out.name = std::string(texture.name);
-    const TextureFormat format = target_ == Target::hlsl_dx9 ? texture.dx9_format : texture.format;
+    const TextureFormat format = dialect_ == Dialect::d3d9 ? texture.dx9_format : texture.format;
     out.format = std::string(api_format(target_, format));
     out.view_format = std::string(api_view_format(target_, format));
     out.mipmapped = texture.mipmapped;
     out.sampler.state = texture.sampler;
     const std::string slot = std::to_string(texture.slot);
-    switch (target_) {
-      case Target::spirv:
+    switch (dialect_) {
+      case Dialect::spirv:
         out.set = 0;
         out.binding = texture.slot;
         break;
-      case Target::glsl450:
+      case Dialect::glsl450:
         out.binding = texture.slot;
         break;
-      case Target::glsl330:
-      case Target::essl300:
+      case Dialect::glsl330:
+      case Dialect::essl300:
         break;
-      case Target::hlsl_dx10:
+      case Dialect::d3d10:
         out.type = "Texture2D";
         out.reg = "t" + slot;
         out.sampler.name = "_" + out.name + "_sampler";
         out.sampler.type = texture.sampler.comparison ? "SamplerComparisonState" : "SamplerState";
         out.sampler.reg = "s" + slot;
         break;
-      case Target::hlsl_dx9:
+      case Dialect::d3d9:
         out.type = "sampler2D";
         out.reg = "s" + slot;
         break;
@@ -189,9 +193,9 @@ class TargetReflector {
     out.components = input.components;
     const std::size_t row = input.components - 1;
     if (traits(target_).is_hlsl) {
-      // SPIRV-Cross names location N's input TEXCOORD<N> in both shader models.
+      // SPIRV-Cross names location N's input TEXCOORD<N> in every shader model.
       out.semantic = "TEXCOORD" + std::to_string(input.location);
-      out.format = std::string(target_ == Target::hlsl_dx9 ? kD3d9[row] : kDxgi[row]);
+      out.format = std::string(dialect_ == Dialect::d3d9 ? kD3d9[row] : kDxgi[row]);
     } else {
       out.location = input.location;
       out.format = traits(target_).is_text ? "GL_FLOAT" : std::string(kVulkan[row]);
@@ -200,6 +204,7 @@ class TargetReflector {
   }
 
   Target target_;
+  Dialect dialect_;
   PassKind pass_;
   const Variant* variant_;  // null for passes shared by every variant
 };

@@ -44,7 +44,7 @@ std::unique_ptr<CompilerHLSL> make_hlsl(const ShaderJob& job) {
   common.vertex.flip_vert_y = true;  // keeps row j = 0 first under D3D's viewport
   compiler->set_common_options(common);
   CompilerHLSL::Options options;
-  options.shader_model = job.target == Target::hlsl_dx9 ? 30 : 40;
+  options.shader_model = traits(job.target).shader_model * 10;  // SPIRV-Cross's 30, 40, ...
   compiler->set_hlsl_options(options);
   return compiler;
 }
@@ -65,7 +65,9 @@ Status CrossCompileStage::process(ShaderJob& job) const {
                       std::string("cannot express this for ") + std::string(to_string(job.target)) +
                           ": " + error.what());
   }
-  if (job.target == Target::hlsl_dx10) job.text = dx10_comparison_textures_as_scalar(job.text);
+  if (traits(job.target).shader_model >= 4) {
+    job.text = dx10_comparison_textures_as_scalar(job.text);
+  }
   if (job.target == Target::hlsl_dx9) {
     auto rewritten = dx9_explicit_registers(job.text);
     if (!rewritten)

@@ -63,7 +63,7 @@ class WriteStage final : public Stage {
   std::filesystem::path root_;
 };
 
-// Compiles the written HLSL file (hlsl_dx9, hlsl_dx10) to Direct3D bytecode
+// Compiles the written HLSL file (the HLSL targets) to Direct3D bytecode
 // beside it with an external HLSL compiler, within the options' time limit.
 // Its errors fail the job with the compiler's message and the HLSL line;
 // its warnings become the job's diagnostics. Other targets pass through.

@@ -109,8 +109,9 @@ class GradientFinder {
 };
 
 Status violation(const ShaderJob& job, const std::string& construct, const char* why) {
-  return make_error(Error::Kind::compile, job.describe(),
-                    construct + " is not allowed for hlsl_dx10: " + why);
+  return make_error(
+      Error::Kind::compile, job.describe(),
+      construct + " is not allowed for " + std::string(to_string(job.target)) + ": " + why);
 }
 
 }  // namespace

@@ -16,8 +16,8 @@ Status check_target_rules(ShaderJob& job);
 // within Shader Model 3.0's limits.
 Status check_dx9_rules(ShaderJob& job, const SpirvModule& module);
 
-// hlsl_dx10 (dx10_rules.cpp): no gradients inside loops; SampleLevel and
-// SampleCmpLevelZero are the only sampling.
+// Shader Model 4.0 and later, hlsl_dx10 (dx10_rules.cpp): no gradients
+// inside loops; SampleLevel and SampleCmpLevelZero are the only sampling.
 Status check_dx10_rules(const ShaderJob& job, const SpirvModule& module);
 
 }  // namespace penumbra

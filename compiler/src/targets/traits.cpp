@@ -3,32 +3,6 @@
 
 namespace penumbra {
 
-TargetTraits traits(Target target) {
-  switch (target) {
-    case Target::spirv:
-      return {.comparison_sampler = true, .is_hlsl = false, .is_text = false};
-    case Target::glsl450:
-    case Target::glsl330:
-    case Target::essl300:
-      return {.comparison_sampler = true, .is_hlsl = false, .is_text = true};
-    case Target::hlsl_dx10:
-      return {.comparison_sampler = true,
-              .is_hlsl = true,
-              .is_text = true,
-              .shader_model = 4,
-              .rolled_sample_loops = true};
-    case Target::hlsl_dx9:
-      // SM 3.0 has no comparison sampler: compares are made in the shader.
-      return {.comparison_sampler = false,
-              .is_hlsl = true,
-              .is_text = true,
-              .shader_model = 3,
-              .disk_textures = true,
-              .rolled_sample_loops = true};
-  }
-  return {};
-}
-
 std::string target_defines(Target target) {
   std::string out = "#define PENUMBRA_TARGET_" + ascii_upper(to_string(target)) + " 1\n";
   out += "#define PENUMBRA_HAS_COMPARISON_SAMPLER ";
@@ -46,7 +20,8 @@ std::optional<BytecodeFormat> bytecode_format(Target target, ShaderStage stage) 
   if (model == 0) return std::nullopt;
   const std::string profile =
       std::string(stage == ShaderStage::vertex ? "vs_" : "ps_") + std::to_string(model) + "_0";
-  // Shader model 3 is the Direct3D 9 bytecode; 4 the container of Direct3D 10.
+  // Shader model 3 is the Direct3D 9 bytecode; 4 and 5 the container of
+  // Direct3D 10 and 11.
   if (model == 3) return BytecodeFormat{profile, "d3dbc", ".d3dbc"};
   return BytecodeFormat{profile, "dxbc-tpf", ".dxbc"};
 }

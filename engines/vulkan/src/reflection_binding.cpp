@@ -144,7 +144,7 @@ class Planner {
     return merge(std::move(planned));
   }
 
-  // A separate image's own sampler object (hlsl_dx10; any translated bytecode).
+  // A separate image's own sampler object (the d3d10 dialect; any translated bytecode).
   Status add_sampler(const TextSlots& slots, const TextureBinding& texture) {
     const auto sampler = slots.sampler(texture);
     if (!sampler) {

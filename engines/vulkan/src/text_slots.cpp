@@ -8,6 +8,8 @@
 namespace penumbra::detail {
 namespace {
 
+using Dialect = ReflectionDialect;
+
 // glslang's block for HLSL's loose uniforms: Direct3D 9's constant
 // registers, register(cN) at offset 16 * N (docs/frontends.md).
 constexpr std::string_view kHlslGlobalBlock = "$Global";
@@ -86,21 +88,21 @@ std::optional<std::size_t> TextSlots::named(const std::string& name, VkDescripto
 
 std::optional<std::size_t> TextSlots::texture(const TextureBinding& texture) const {
   constexpr VkDescriptorType kCombined = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  switch (target_) {
-    case Target::spirv:
-    case Target::glsl450:
+  switch (dialect_) {
+    case Dialect::spirv:
+    case Dialect::glsl450:
       if (!texture.binding) return std::nullopt;
       return at(texture.set.value_or(0), *texture.binding,
                 {kCombined, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
-    case Target::glsl330:
-    case Target::essl300:
+    case Dialect::glsl330:
+    case Dialect::essl300:
       return named(texture.name, kCombined);
-    case Target::hlsl_dx10:
+    case Dialect::d3d10:
       if (auto t = register_number(texture.reg, 't')) {
         return at(0, *t, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE});
       }
       return std::nullopt;
-    case Target::hlsl_dx9:
+    case Dialect::d3d9:
       // glslang binds a DX9 sampler2D, texture and sampler in one, at its s#.
       if (auto s = register_number(texture.reg, 's')) return at(0, *s, {kCombined});
       return std::nullopt;
@@ -109,7 +111,7 @@ std::optional<std::size_t> TextSlots::texture(const TextureBinding& texture) con
 }
 
 std::optional<std::size_t> TextSlots::sampler(const TextureBinding& texture) const {
-  if (target_ != Target::hlsl_dx10) return std::nullopt;
+  if (dialect_ != Dialect::d3d10) return std::nullopt;
   const auto s = register_number(texture.sampler.reg, 's');
   if (!s) return std::nullopt;
   return at(0, kHlslSamplerBindingBase + *s, {VK_DESCRIPTOR_TYPE_SAMPLER});
@@ -117,27 +119,27 @@ std::optional<std::size_t> TextSlots::sampler(const TextureBinding& texture) con
 
 std::optional<std::size_t> TextSlots::block(const BlockBinding& block) const {
   constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  switch (target_) {
-    case Target::spirv:
-    case Target::glsl450:
+  switch (dialect_) {
+    case Dialect::spirv:
+    case Dialect::glsl450:
       if (!block.binding) return std::nullopt;
       return at(block.set.value_or(0), *block.binding, {kBuffer});
-    case Target::hlsl_dx10:
+    case Dialect::d3d10:
       if (auto b = register_number(block.reg, 'b')) return at(0, *b, {kBuffer});
       return std::nullopt;
-    case Target::glsl330:
-    case Target::essl300:
-    case Target::hlsl_dx9:
+    case Dialect::glsl330:
+    case Dialect::essl300:
+    case Dialect::d3d9:
       return named(block.name, kBuffer);
   }
   return std::nullopt;
 }
 
 std::optional<std::size_t> TextSlots::uniform_block() const {
-  if (target_ == Target::glsl330) {
+  if (dialect_ == Dialect::glsl330) {
     return named(std::string(kLooseUniformBlockName), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
   }
-  if (target_ == Target::hlsl_dx9) {
+  if (dialect_ == Dialect::d3d9) {
     return named(std::string(kHlslGlobalBlock), VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
   }
   return std::nullopt;
@@ -152,7 +154,7 @@ std::optional<std::uint32_t> TextSlots::uniform_offset(const ConstantBinding& un
     if (it == members.end()) return std::nullopt;
     return it->offset;
   };
-  if (target_ == Target::glsl330) {
+  if (dialect_ == Dialect::glsl330) {
     return found([&](const BlockMember& m) { return m.name == uniform.name; });
   }
   const auto c = register_number(uniform.reg, 'c');
@@ -167,7 +169,7 @@ std::optional<std::uint32_t> TextSlots::member_offset(const BlockBinding& block,
   const std::vector<BlockMember>& members = resources_[resource].block->members;
   // ES block members are reported as "<block>.<member>".
   const std::string prefix = block.name + ".";
-  const bool by_name = target_ == Target::essl300;
+  const bool by_name = dialect_ == Dialect::essl300;
   const auto it = std::find_if(members.begin(), members.end(), [&](const BlockMember& m) {
     if (!by_name) return m.offset == *member.offset;
     return member.name.starts_with(prefix) && m.name == member.name.substr(prefix.size());
@@ -189,12 +191,12 @@ std::optional<std::string> TextSlots::unfilled(const ModuleResource& buffer,
 }
 
 std::string TextSlots::where_texture(const TextureBinding& texture) const {
-  switch (target_) {
-    case Target::spirv:
-    case Target::glsl450:
+  switch (dialect_) {
+    case Dialect::spirv:
+    case Dialect::glsl450:
       return slot_text(texture.set.value_or(0), texture.binding.value_or(0));
-    case Target::hlsl_dx10:
-    case Target::hlsl_dx9:
+    case Dialect::d3d10:
+    case Dialect::d3d9:
       return "register " + (texture.reg.empty() ? std::string("(none)") : texture.reg);
     default:
       return "by name";
@@ -206,11 +208,11 @@ std::string TextSlots::where_sampler(const TextureBinding& texture) const {
 }
 
 std::string TextSlots::where_block(const BlockBinding& block) const {
-  switch (target_) {
-    case Target::spirv:
-    case Target::glsl450:
+  switch (dialect_) {
+    case Dialect::spirv:
+    case Dialect::glsl450:
       return slot_text(block.set.value_or(0), block.binding.value_or(0));
-    case Target::hlsl_dx10:
+    case Dialect::d3d10:
       return "register " + (block.reg.empty() ? std::string("(none)") : block.reg);
     default:
       return "by name";

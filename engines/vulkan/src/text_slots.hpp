@@ -16,6 +16,7 @@
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "reflection_binding.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra::detail {
 
@@ -43,12 +44,12 @@ std::vector<ModuleResource> module_resources(const ShaderInterface& iface);
 class TextSlots {
  public:
   TextSlots(Target target, const std::vector<ModuleResource>& resources)
-      : target_(target), resources_(resources) {}
+      : dialect_(traits(target).dialect), resources_(resources) {}
   virtual ~TextSlots() = default;
 
   // The image (combined or separate) of a texture.
   virtual std::optional<std::size_t> texture(const TextureBinding& texture) const;
-  // The separate sampler of a texture (hlsl_dx10's s# register).
+  // The separate sampler of a texture (the d3d10 dialect's s# register).
   virtual std::optional<std::size_t> sampler(const TextureBinding& texture) const;
   virtual std::optional<std::size_t> block(const BlockBinding& block) const;
   // A loose uniform (glsl330's struct members, hlsl_dx9's constant
@@ -81,7 +82,7 @@ class TextSlots {
                                 std::initializer_list<VkDescriptorType> types) const;
   std::optional<std::size_t> named(const std::string& name, VkDescriptorType type) const;
 
-  Target target_;
+  ReflectionDialect dialect_;
   const std::vector<ModuleResource>& resources_;
 };
 

@@ -19,7 +19,7 @@ namespace penumbra {
 // "0.1.0": the version written into index.json's generator field.
 std::string_view penumbra_version();
 
-// Direct3D bytecode from the hlsl_dx9 and hlsl_dx10 text, by vkd3d-compiler
+// Direct3D bytecode from the HLSL targets' text, by vkd3d-compiler
 // 2.1 or newer (../shared/tools/fetch-vkd3d installs it).
 struct HlslCompilerOptions {
   std::filesystem::path compiler = {};  // vkd3d-compiler to run; empty: text only, no bytecode

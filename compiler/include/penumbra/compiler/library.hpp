@@ -18,7 +18,7 @@ namespace penumbra {
 struct PassFiles {
   std::string vert;  // relative to the library root
   std::string frag;
-  // Direct3D bytecode of each stage: hlsl_dx9/hlsl_dx10 built with an HLSL compiler.
+  // Direct3D bytecode of each stage: the HLSL targets built with an HLSL compiler.
   std::optional<BytecodeFile> vert_bytecode;
   std::optional<BytecodeFile> frag_bytecode;
 };

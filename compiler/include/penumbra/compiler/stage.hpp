@@ -46,7 +46,7 @@ struct ShaderJob {
   ShaderInterface interface;             // reflect: of `spirv`
   PassReflection reflection;             // reflect: this stage's part of the target's reflection
   std::string output_path;               // write: file path relative to the output directory
-  std::optional<BytecodeFile> bytecode;  // bytecode: hlsl_dx9/hlsl_dx10 with an HLSL compiler
+  std::optional<BytecodeFile> bytecode;  // bytecode: HLSL targets with an HLSL compiler
   // Warnings found by stages (e.g. over the instruction slots), reported by the build.
   std::vector<Diagnostic> diagnostics;
 

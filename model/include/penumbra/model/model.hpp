@@ -25,14 +25,15 @@ enum class Technique {
   pcss_minmax,
   screen_blur,
 };
-enum class Target { spirv, glsl450, glsl330, essl300, hlsl_dx10, hlsl_dx9 };
+enum class Target { spirv, glsl450, glsl330, essl300, hlsl_dx11, hlsl_dx10, hlsl_dx9 };
 
 inline constexpr std::array kAllTechniques = {Technique::hard,        Technique::pcf_grid,
                                               Technique::pcf_poisson, Technique::pcss,
                                               Technique::minmax_pcf,  Technique::backprojection,
                                               Technique::pcss_minmax, Technique::screen_blur};
 inline constexpr std::array kAllTargets = {Target::spirv,   Target::glsl450,   Target::glsl330,
-                                           Target::essl300, Target::hlsl_dx10, Target::hlsl_dx9};
+                                           Target::essl300, Target::hlsl_dx11, Target::hlsl_dx10,
+                                           Target::hlsl_dx9};
 
 std::string_view to_string(Technique technique);
 std::string_view to_string(Target target);

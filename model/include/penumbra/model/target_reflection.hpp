@@ -2,7 +2,8 @@
 // that API's own terms: what index.json's `reflection.<pass>.<target>` holds
 // and what an engine binds by (docs/shader-interface.md, "Reflection").
 //
-// Which fields a record fills depends on the target:
+// Which fields a record fills depends on the target's dialect
+// (target_traits.hpp); hlsl_dx11 fills what hlsl_dx10 does:
 //
 // | target    | blocks                 | uniforms              | textures                 |
 // |-----------|------------------------|-----------------------|--------------------------|

@@ -1,0 +1,378 @@
+struct MinmaxCursor
+{
+    float2 node;
+    float level;
+    float span;
+    float2 first_root;
+    float start;
+    bool done;
+};
+
+cbuffer ShadowParams : register(b0)
+{
+    float4 params_shadow_map_size : packoffset(c0);
+    float4 params_light : packoffset(c1);
+    float4 params_sampling : packoffset(c2);
+    float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
+};
+
+Texture2D<float4> shadow_depth : register(t1);
+SamplerState _shadow_depth_sampler : register(s1);
+Texture2D<float4> shadow_minmax : register(t4);
+SamplerState _shadow_minmax_sampler : register(s4);
+Texture2D<float4> receivers : register(t3);
+SamplerState _receivers_sampler : register(s3);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : SV_Target0;
+};
+
+static float penumbra_texel_reads;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float2 minmax_top_node()
+{
+    penumbra_texel_reads += 1.0f;
+    return shadow_minmax.SampleLevel(_shadow_minmax_sampler, 0.5f.xx, params_minmax_info.x - 1.0f).xy;
+}
+
+float4 minmax_clip_window(float2 first, float2 last)
+{
+    return float4(max(first, 0.0f.xx), min(last, params_shadow_map_size.xy - 1.0f.xx));
+}
+
+float4 backprojection_window(float3 query, float z_min)
+{
+    float half_width = ((params_light.w * params_light.z) * (query.z - z_min)) / (query.z * z_min);
+    float2 map_size = params_shadow_map_size.xy;
+    float2 param = floor((query.xy - half_width.xx) * map_size) - 1.0f.xx;
+    float2 param_1 = floor((query.xy + half_width.xx) * map_size) + 1.0f.xx;
+    return minmax_clip_window(param, param_1);
+}
+
+bool minmax_window_empty(float4 window)
+{
+    return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
+}
+
+float2 backprojection_slope(float2 uv)
+{
+    return (uv - 0.5f.xx) * (params_light.y / params_light.z);
+}
+
+float backprojection_whole_light_area()
+{
+    return (4.0f * params_light.x) * params_light.x;
+}
+
+float minmax_level_spanning(float4 window, float nodes)
+{
+    float level = 0.0f;
+    float inv_span = 1.0f;
+    [loop]
+    for (int k = 0; k < 16; k++)
+    {
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
+        {
+            break;
+        }
+        level += 1.0f;
+        inv_span *= 0.5f;
+    }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy / cursor.span.xx);
+    cursor.node = cursor.first_root;
+    cursor.done = false;
+    return cursor;
+}
+
+float4 minmax_node_part(MinmaxCursor cursor, float4 window)
+{
+    float2 first = cursor.node * cursor.span;
+    return float4(max(first, window.xy), min((first + cursor.span.xx) - 1.0f.xx, window.zw));
+}
+
+float shadow_texel(float2 texel)
+{
+    penumbra_texel_reads += 1.0f;
+    return shadow_depth.SampleLevel(_shadow_depth_sampler, (texel + 0.5f.xx) * params_shadow_map_size.zw, 0.0f).x;
+}
+
+float2 minmax_node(float level, float2 node)
+{
+    if (level < 0.5f)
+    {
+        float2 param = node;
+        float _167 = shadow_texel(param);
+        float depth = _167;
+        return float2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0f;
+    float2 uv = (node + 0.5f.xx) * exp2(level - params_minmax_info.x);
+    return shadow_minmax.SampleLevel(_shadow_minmax_sampler, uv, level - 1.0f).xy;
+}
+
+float2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    float2 param_1 = cursor.node;
+    float2 _360 = minmax_node(param, param_1);
+    return _360;
+}
+
+float4 minmax_node_texels(MinmaxCursor cursor)
+{
+    float2 first = cursor.node * cursor.span;
+    float2 param = first;
+    float2 param_1 = (first + cursor.span.xx) - 1.0f.xx;
+    return minmax_clip_window(param, param_1);
+}
+
+float backprojection_gain(float z, float z_receiver)
+{
+    return (z * z_receiver) / (z_receiver - z);
+}
+
+float4 backprojection_project(float4 texels, float z, float3 query, float2 receiver_slope)
+{
+    float param = z;
+    float param_1 = query.z;
+    float gain = backprojection_gain(param, param_1);
+    float2 param_2 = texels.xy * params_shadow_map_size.zw;
+    float2 param_3 = (texels.zw + 1.0f.xx) * params_shadow_map_size.zw;
+    return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+}
+
+bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 receiver_slope)
+{
+    float4 param = texels;
+    float param_1 = z_min;
+    float3 param_2 = query;
+    float2 param_3 = receiver_slope;
+    float4 rect = backprojection_project(param, param_1, param_2, param_3);
+    float2 _558 = params_light.x.xx;
+    bool _560 = all(bool2(rect.xy.x <= _558.x, rect.xy.y <= _558.y));
+    bool _571;
+    if (_560)
+    {
+        float2 _568 = (-params_light.x).xx;
+        _571 = all(bool2(rect.zw.x >= _568.x, rect.zw.y >= _568.y));
+    }
+    else
+    {
+        _571 = _560;
+    }
+    return _571;
+}
+
+float backprojection_light_area(float4 rect)
+{
+    float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
+    return size.x * size.y;
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0f;
+    cursor.level -= 1.0f;
+    cursor.span *= 0.5f;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    float2 _391;
+    [loop]
+    for (int k = 0; k <= 16; k++)
+    {
+        bool root = cursor.level >= cursor.start;
+        if (root)
+        {
+            _391 = cursor.first_root;
+        }
+        else
+        {
+            _391 = floor(cursor.node * 0.5f) * 2.0f;
+        }
+        float2 first_sibling = _391;
+        float2 offset = cursor.node - first_sibling;
+        if (offset.x < 0.5f)
+        {
+            cursor.node.x += 1.0f;
+            break;
+        }
+        if (offset.y < 0.5f)
+        {
+            cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
+            break;
+        }
+        if (root)
+        {
+            cursor.done = true;
+            break;
+        }
+        cursor.node = floor(cursor.node * 0.5f);
+        cursor.level += 1.0f;
+        cursor.span *= 2.0f;
+    }
+}
+
+float backprojection_area(float3 query, float4 window, float limit)
+{
+    float2 param = query.xy;
+    float2 receiver_slope = backprojection_slope(param);
+    float light_area = backprojection_whole_light_area();
+    float area = 0.0f;
+    float visits = 0.0f;
+    float4 param_1 = window;
+    MinmaxCursor cursor = minmax_begin(param_1);
+    [loop]
+    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    {
+        [loop]
+        for (int loop_middle = 0; all(bool2(loop_middle < 65, !cursor.done)); loop_middle++)
+        {
+            [loop]
+            for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
+            {
+                visits += 1.0f;
+                bool descend = false;
+                MinmaxCursor param_2 = cursor;
+                float4 param_3 = window;
+                float4 param_4 = minmax_node_part(param_2, param_3);
+                if (!minmax_window_empty(param_4))
+                {
+                    MinmaxCursor param_5 = cursor;
+                    float2 _690 = minmax_cursor_read(param_5);
+                    float2 range = _690;
+                    MinmaxCursor param_6 = cursor;
+                    float4 texels = minmax_node_texels(param_6);
+                    float z_min = range.x * params_sampling.w;
+                    bool _704 = range.x < limit;
+                    bool _716;
+                    if (_704)
+                    {
+                        float4 param_7 = texels;
+                        float param_8 = z_min;
+                        float3 param_9 = query;
+                        float2 param_10 = receiver_slope;
+                        _716 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                    }
+                    else
+                    {
+                        _716 = _704;
+                    }
+                    if (_716)
+                    {
+                        bool _722 = range.y < limit;
+                        bool _730;
+                        if (_722)
+                        {
+                            _730 = range.x == range.y;
+                        }
+                        else
+                        {
+                            _730 = _722;
+                        }
+                        if (_730)
+                        {
+                            float4 param_11 = texels;
+                            float param_12 = z_min;
+                            float3 param_13 = query;
+                            float2 param_14 = receiver_slope;
+                            float4 param_15 = backprojection_project(param_11, param_12, param_13, param_14);
+                            area += backprojection_light_area(param_15);
+                        }
+                        else
+                        {
+                            descend = cursor.level > 0.5f;
+                        }
+                    }
+                }
+                if (descend)
+                {
+                    MinmaxCursor param_16 = cursor;
+                    minmax_descend(param_16);
+                    cursor = param_16;
+                }
+                else
+                {
+                    MinmaxCursor param_17 = cursor;
+                    minmax_next(param_17);
+                    cursor = param_17;
+                }
+                cursor.done = (cursor.done || (area >= light_area)) || (visits >= 16384.0f);
+            }
+        }
+    }
+    return area;
+}
+
+float shadow_visibility(float3 query)
+{
+    float param = query.z;
+    float limit = min(shadow_reference(param), query.z * params_sampling.z);
+    float2 _794 = minmax_top_node();
+    float map_min = _794.x;
+    if (!(map_min < limit))
+    {
+        return 1.0f;
+    }
+    float3 param_1 = query;
+    float param_2 = map_min * params_sampling.w;
+    float4 window = backprojection_window(param_1, param_2);
+    float4 param_3 = window;
+    if (minmax_window_empty(param_3))
+    {
+        return 1.0f;
+    }
+    float3 param_4 = query;
+    float4 param_5 = window;
+    float param_6 = limit;
+    float _824 = backprojection_area(param_4, param_5, param_6);
+    return max(0.0f, 1.0f - (_824 / backprojection_whole_light_area()));
+}
+
+void frag_main()
+{
+    penumbra_texel_reads = 0.0f;
+    float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
+    float3 param = query;
+    float _842 = shadow_visibility(param);
+    float visible = _842;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = visibility;
+    return stage_output;
+}

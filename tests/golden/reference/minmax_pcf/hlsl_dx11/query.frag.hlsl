@@ -1,0 +1,281 @@
+struct MinmaxCursor
+{
+    float2 node;
+    float level;
+    float span;
+    float2 first_root;
+    float start;
+    bool done;
+};
+
+cbuffer ShadowParams : register(b0)
+{
+    float4 params_shadow_map_size : packoffset(c0);
+    float4 params_light : packoffset(c1);
+    float4 params_sampling : packoffset(c2);
+    float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
+};
+
+Texture2D<float4> shadow_depth : register(t1);
+SamplerState _shadow_depth_sampler : register(s1);
+Texture2D<float4> shadow_minmax : register(t4);
+SamplerState _shadow_minmax_sampler : register(s4);
+Texture2D<float4> receivers : register(t3);
+SamplerState _receivers_sampler : register(s3);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : SV_Target0;
+};
+
+static float penumbra_texel_reads;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float4 minmax_clip_window(float2 first, float2 last)
+{
+    return float4(max(first, 0.0f.xx), min(last, params_shadow_map_size.xy - 1.0f.xx));
+}
+
+bool minmax_window_empty(float4 window)
+{
+    return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
+}
+
+float minmax_level_spanning(float4 window, float nodes)
+{
+    float level = 0.0f;
+    float inv_span = 1.0f;
+    [loop]
+    for (int k = 0; k < 16; k++)
+    {
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
+        {
+            break;
+        }
+        level += 1.0f;
+        inv_span *= 0.5f;
+    }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy / cursor.span.xx);
+    cursor.node = cursor.first_root;
+    cursor.done = false;
+    return cursor;
+}
+
+float4 minmax_node_part(MinmaxCursor cursor, float4 window)
+{
+    float2 first = cursor.node * cursor.span;
+    return float4(max(first, window.xy), min((first + cursor.span.xx) - 1.0f.xx, window.zw));
+}
+
+float shadow_texel(float2 texel)
+{
+    penumbra_texel_reads += 1.0f;
+    return shadow_depth.SampleLevel(_shadow_depth_sampler, (texel + 0.5f.xx) * params_shadow_map_size.zw, 0.0f).x;
+}
+
+float2 minmax_node(float level, float2 node)
+{
+    if (level < 0.5f)
+    {
+        float2 param = node;
+        float _128 = shadow_texel(param);
+        float depth = _128;
+        return float2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0f;
+    float2 uv = (node + 0.5f.xx) * exp2(level - params_minmax_info.x);
+    return shadow_minmax.SampleLevel(_shadow_minmax_sampler, uv, level - 1.0f).xy;
+}
+
+float2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    float2 param_1 = cursor.node;
+    float2 _307 = minmax_node(param, param_1);
+    return _307;
+}
+
+float minmax_texel_count(float4 part)
+{
+    return ((part.z - part.x) + 1.0f) * ((part.w - part.y) + 1.0f);
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0f;
+    cursor.level -= 1.0f;
+    cursor.span *= 0.5f;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    float2 _338;
+    [loop]
+    for (int k = 0; k <= 16; k++)
+    {
+        bool root = cursor.level >= cursor.start;
+        if (root)
+        {
+            _338 = cursor.first_root;
+        }
+        else
+        {
+            _338 = floor(cursor.node * 0.5f) * 2.0f;
+        }
+        float2 first_sibling = _338;
+        float2 offset = cursor.node - first_sibling;
+        if (offset.x < 0.5f)
+        {
+            cursor.node.x += 1.0f;
+            break;
+        }
+        if (offset.y < 0.5f)
+        {
+            cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
+            break;
+        }
+        if (root)
+        {
+            cursor.done = true;
+            break;
+        }
+        cursor.node = floor(cursor.node * 0.5f);
+        cursor.level += 1.0f;
+        cursor.span *= 2.0f;
+    }
+}
+
+float minmax_pcf_count(float2 first, float reference)
+{
+    float count = 0.0f;
+    float2 param = first;
+    float2 param_1 = first + 11.0f.xx;
+    float4 window = minmax_clip_window(param, param_1);
+    float4 param_2 = window;
+    if (minmax_window_empty(param_2))
+    {
+        return 0.0f;
+    }
+    float4 param_3 = window;
+    MinmaxCursor cursor = minmax_begin(param_3);
+    [loop]
+    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    {
+        [loop]
+        for (int loop_middle = 0; all(bool2(loop_middle < 2, !cursor.done)); loop_middle++)
+        {
+            [loop]
+            for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
+            {
+                MinmaxCursor param_4 = cursor;
+                float4 param_5 = window;
+                float4 part = minmax_node_part(param_4, param_5);
+                bool descend = false;
+                float4 param_6 = part;
+                if (!minmax_window_empty(param_6))
+                {
+                    MinmaxCursor param_7 = cursor;
+                    float2 _475 = minmax_cursor_read(param_7);
+                    float2 range = _475;
+                    if (range.y < reference)
+                    {
+                        float4 param_8 = part;
+                        count += minmax_texel_count(param_8);
+                    }
+                    else
+                    {
+                        bool _491 = reference > range.x;
+                        bool _497;
+                        if (_491)
+                        {
+                            _497 = cursor.level > 0.5f;
+                        }
+                        else
+                        {
+                            _497 = _491;
+                        }
+                        descend = _497;
+                    }
+                }
+                if (descend)
+                {
+                    MinmaxCursor param_9 = cursor;
+                    minmax_descend(param_9);
+                    cursor = param_9;
+                }
+                else
+                {
+                    MinmaxCursor param_10 = cursor;
+                    minmax_next(param_10);
+                    cursor = param_10;
+                }
+            }
+        }
+    }
+    return count;
+}
+
+float shadow_visibility(float3 query)
+{
+    float2 first = floor(query.xy * params_shadow_map_size.xy) - 6.0f.xx;
+    float param = query.z;
+    float2 param_1 = first;
+    float param_2 = shadow_reference(param);
+    float _538 = minmax_pcf_count(param_1, param_2);
+    float count = _538;
+    float _541;
+    if (count > 0.0f)
+    {
+        _541 = (144.0f - count) * 0.0069444444961845874786376953125f;
+    }
+    else
+    {
+        _541 = 1.0f;
+    }
+    return _541;
+}
+
+void frag_main()
+{
+    penumbra_texel_reads = 0.0f;
+    float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
+    float3 param = query;
+    float _564 = shadow_visibility(param);
+    float visible = _564;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = visibility;
+    return stage_output;
+}

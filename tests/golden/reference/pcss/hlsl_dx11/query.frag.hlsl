@@ -1,0 +1,154 @@
+static const float2 POISSON_DISK[16] = { float2(-0.94201624393463134765625f, -0.39906215667724609375f), float2(0.94558608531951904296875f, -0.768907248973846435546875f), float2(-0.094184100627899169921875f, -0.929388701915740966796875f), float2(0.34495937824249267578125f, 0.29387760162353515625f), float2(-0.91588580608367919921875f, 0.4577143192291259765625f), float2(-0.8154423236846923828125f, -0.87912464141845703125f), float2(-0.38277542591094970703125f, 0.2767684459686279296875f), float2(0.9748439788818359375f, 0.7564837932586669921875f), float2(0.4432332515716552734375f, -0.9751155376434326171875f), float2(0.5374298095703125f, -0.473734200000762939453125f), float2(-0.2649691104888916015625f, -0.418930232524871826171875f), float2(0.79197514057159423828125f, 0.19090187549591064453125f), float2(-0.24188840389251708984375f, 0.997065067291259765625f), float2(-0.8140995502471923828125f, 0.91437590122222900390625f), float2(0.1998412609100341796875f, 0.786413669586181640625f), float2(0.14383161067962646484375f, -0.141007900238037109375f) };
+
+cbuffer ShadowParams : register(b0)
+{
+    float4 params_shadow_map_size : packoffset(c0);
+    float4 params_light : packoffset(c1);
+    float4 params_sampling : packoffset(c2);
+    float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
+};
+
+Texture2D<float4> shadow_depth : register(t1);
+SamplerState _shadow_depth_sampler : register(s1);
+Texture2D<float> shadow_cmp : register(t2);
+SamplerComparisonState _shadow_cmp_sampler : register(s2);
+Texture2D<float4> receivers : register(t3);
+SamplerState _receivers_sampler : register(s3);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : SV_Target0;
+};
+
+static float penumbra_texel_reads;
+
+float shadow_depth_point(float2 uv)
+{
+    penumbra_texel_reads += 1.0f;
+    return shadow_depth.SampleLevel(_shadow_depth_sampler, uv, 0.0f).x * params_sampling.w;
+}
+
+void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv, float zReceiver)
+{
+    float searchWidth = (params_light.w * (zReceiver - params_light.z)) / zReceiver;
+    float blockerSum = 0.0f;
+    numBlockers = 0.0f;
+    [loop]
+    for (int i = 0; i < 16; i++)
+    {
+        float2 param = uv + (POISSON_DISK[i] * searchWidth);
+        float _236 = shadow_depth_point(param);
+        float shadowMapDepth = _236;
+        bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
+        blockerSum += (blocks ? shadowMapDepth : 0.0f);
+        numBlockers += float(blocks);
+    }
+    float _258;
+    if (numBlockers > 0.0f)
+    {
+        _258 = blockerSum / numBlockers;
+    }
+    else
+    {
+        _258 = zReceiver;
+    }
+    avgBlockerDepth = _258;
+}
+
+float PenumbraSize(float zReceiver, float zBlocker)
+{
+    return (zReceiver - zBlocker) / zBlocker;
+}
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float shadow_compare_bilinear(float2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 4.0f;
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    float3 _106 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _106.xy, _106.z);
+}
+
+float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
+{
+    float sum = 0.0f;
+    [loop]
+    for (int i = 0; i < 16; i++)
+    {
+        float2 offset = POISSON_DISK[i] * filterRadiusUV;
+        float2 param = uv + offset;
+        float param_1 = zReceiver;
+        float _196 = shadow_compare_bilinear(param, param_1);
+        sum += _196;
+    }
+    return sum / 16.0f;
+}
+
+float PCSS(float3 coords)
+{
+    float2 uv = coords.xy;
+    float zReceiver = coords.z;
+    float avgBlockerDepth = 0.0f;
+    float numBlockers = 0.0f;
+    float2 param_2 = uv;
+    float param_3 = zReceiver;
+    float param;
+    float param_1;
+    FindBlocker(param, param_1, param_2, param_3);
+    avgBlockerDepth = param;
+    numBlockers = param_1;
+    if (numBlockers < 1.0f)
+    {
+        return 1.0f;
+    }
+    float param_4 = zReceiver;
+    float param_5 = avgBlockerDepth;
+    float penumbraRatio = PenumbraSize(param_4, param_5);
+    float filterRadiusUV = ((penumbraRatio * params_light.w) * params_light.z) / coords.z;
+    float2 param_6 = uv;
+    float param_7 = zReceiver;
+    float param_8 = filterRadiusUV;
+    float _312 = PCF_Filter(param_6, param_7, param_8);
+    return _312;
+}
+
+float shadow_visibility(float3 query)
+{
+    float3 param = query;
+    float _317 = PCSS(param);
+    return _317;
+}
+
+void frag_main()
+{
+    penumbra_texel_reads = 0.0f;
+    float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
+    float3 param = query;
+    float _331 = shadow_visibility(param);
+    float visible = _331;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = visibility;
+    return stage_output;
+}
