@@ -18,7 +18,7 @@ struct PassStageSource {
   bool per_variant;            // false: shared by every variant of a target
 };
 
-// Every pass of every technique, from the shader contract's pass
+// Every pass of every technique, from shader_contract.hpp's pass
 // descriptions; a pass's vertex stage comes first. The min-max build passes
 // and screen_blur's blur and composite passes share passes/fullscreen.vert,
 // compiled once per pass. Which passes a variant runs: runs_pass().

@@ -29,7 +29,7 @@ std::string float_array(std::string_view name, const std::vector<float>& values)
   return out + ");\n";
 }
 
-// The shader contract's bindings, which the shaderlib's layout qualifiers
+// shader_contract.hpp's bindings, which the shaderlib's layout qualifiers
 // name: PENUMBRA_SLOT_PARAMS, PENUMBRA_SLOT_SHADOW_DEPTH, ...
 std::string slot_defines() {
   std::string out = "#define PENUMBRA_SLOT_PARAMS " + std::to_string(kParamsSlot) + "\n";

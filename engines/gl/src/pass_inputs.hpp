@@ -1,4 +1,4 @@
-// The images one engine call's passes read, by the shader contract's
+// The images one engine call's passes read, by shader_contract.hpp's
 // TextureId (find_texture of the reflection's name): the caller's images,
 // uploaded on first use in the format of the binding that reads them, and
 // the textures earlier passes drew.

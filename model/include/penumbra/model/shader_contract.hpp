@@ -1,4 +1,4 @@
-// The shader contract, described once: the parameter block, the textures a
+// The shader interface, described once: the parameter block, the textures a
 // pass may read and how an engine must create and sample each, the passes
 // (their sources, vertex inputs and render targets) and the passes each
 // technique runs. The compiler writes every target's reflection from this
@@ -38,8 +38,8 @@ enum class Filter { nearest, linear };
 // read at explicit levels.
 enum class MipFilter { none, nearest };
 
-// The sampler state a texture needs. Every texture of the contract is
-// addressed clamp-to-edge (the contract's addressing), so no border colour
+// The sampler state a texture needs. Every texture here is addressed
+// clamp-to-edge (docs/shader-interface.md), so no border colour
 // is ever read.
 struct SamplerState {
   bool comparison = false;          // compare with LESS_EQUAL: lit when reference <= texel
@@ -47,7 +47,7 @@ struct SamplerState {
   MipFilter mip_filter = MipFilter::none;
 };
 
-// The textures of the contract, in binding order.
+// The textures a pass may read, in binding order.
 enum class TextureId {
   shadow_depth,   // the map, point reads
   shadow_cmp,     // the same map through a comparison sampler
