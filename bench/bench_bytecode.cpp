@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "penumbra/compiler/build.hpp"
@@ -55,15 +56,16 @@ struct TempLibrary {
   }
 };
 
+// `text`, compiled as the build's bytecode stage does (bytecode_format()).
 Result<double> median_compile(const Options& options, const std::filesystem::path& text,
-                              const BytecodeFile& bytecode) {
-  const std::string type = bytecode.profile.ends_with("_3_0") ? "d3dbc" : "dxbc-tpf";
+                              const BytecodeFormat& format) {
   std::vector<double> times;
   for (int i = 0; i < options.repeats; ++i) {
     const auto start = Clock::now();
-    auto run = run_process({options.compiler.string(), "-x", "hlsl", "-p", bytecode.profile, "-b",
-                            type, "-e", "main", "-o", "/dev/null", text.string()},
-                           std::chrono::minutes(10));
+    auto run = run_process(
+        {options.compiler.string(), "-x", "hlsl", "-p", format.profile, "-b",
+         std::string(format.vkd3d_type), "-e", "main", "-o", "/dev/null", text.string()},
+        std::chrono::minutes(10));
     if (!run) return run.error();
     if (run->exit_code != 0) {
       return make_error(Error::Kind::compile, text.string(), "vkd3d-compiler: " + run->output);
@@ -96,14 +98,16 @@ Status bench_manifest(const Options& options, const std::filesystem::path& manif
   for (const LibraryVariant& variant : library->variants) {
     for (const auto& [pass, by_target] : variant.passes) {
       for (const auto& [target, files] : by_target) {
-        for (const auto& [text, bytecode] : {std::pair{files.vert, files.vert_bytecode},
-                                             std::pair{files.frag, files.frag_bytecode}}) {
-          if (!bytecode) continue;
+        for (const auto& [stage, text, bytecode] :
+             {std::tuple{ShaderStage::vertex, files.vert, files.vert_bytecode},
+              std::tuple{ShaderStage::fragment, files.frag, files.frag_bytecode}}) {
+          const auto format = bytecode_format(target, stage);
+          if (!bytecode || !format) continue;
           const bool seen = std::any_of(rows.begin(), rows.end(),
                                         [&](const Row& row) { return row.file == text; });
           if (seen) continue;  // a shared pass's file, listed by every variant
           double seconds = 0.0;
-          PENUMBRA_TRY_ASSIGN(seconds, median_compile(options, library_dir.root / text, *bytecode));
+          PENUMBRA_TRY_ASSIGN(seconds, median_compile(options, library_dir.root / text, *format));
           rows.push_back({text, bytecode->profile, bytecode->instruction_slots, seconds});
         }
       }

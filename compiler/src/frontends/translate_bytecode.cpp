@@ -6,9 +6,9 @@
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/targets.hpp"
-#include "penumbra/support/process.hpp"
 #include "spirv/descriptor_sets.hpp"
 #include "spirv/validation.hpp"
+#include "vkd3d/run_vkd3d.hpp"
 
 namespace penumbra {
 namespace {
@@ -50,13 +50,11 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
   }
   const std::string front_end = "vkd3d-compiler " + std::string(format->vkd3d_type) + " to SPIR-V";
   const RemovedFile output{temporary_output()};
-  auto run = run_process({translator.compiler.string(), "-x", std::string(format->vkd3d_type), "-b",
-                          "spirv-binary", "-o", output.path.string(), bytecode.string()},
-                         translator.timeout);
-  if (!run) {
-    return make_error(Error::Kind::io, translator.compiler.string(),
-                      "cannot run the HLSL compiler (--hlsl-compiler): " + run.error().message);
-  }
+  auto run = run_vkd3d(translator.compiler,
+                       {"-x", std::string(format->vkd3d_type), "-b", "spirv-binary", "-o",
+                        output.path.string(), bytecode.string()},
+                       translator.timeout);
+  if (!run) return run.error();
   if (run->timed_out || run->exit_code != 0) {
     const std::string why = run->timed_out ? "no SPIR-V within the time limit"
                                            : "exit status " + std::to_string(run->exit_code);

@@ -4,9 +4,9 @@
 
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/support/file.hpp"
-#include "penumbra/support/process.hpp"
 #include "stages/stages.hpp"
 #include "targets/sm3_slots.hpp"
+#include "vkd3d/run_vkd3d.hpp"
 
 namespace penumbra {
 namespace {
@@ -74,14 +74,11 @@ Status BytecodeStage::process(ShaderJob& job) const {
   const std::filesystem::path output = root_ / relative;
   const std::string tool = "vkd3d-compiler " + format->profile + ": ";
 
-  auto run =
-      run_process({options_.compiler.string(), "-x", "hlsl", "-p", format->profile, "-b",
-                   std::string(format->vkd3d_type), "-e", "main", "-o", output.string(), source},
-                  options_.timeout);
-  if (!run) {
-    return make_error(Error::Kind::io, options_.compiler.string(),
-                      "cannot run the HLSL compiler (--hlsl-compiler): " + run.error().message);
-  }
+  auto run = run_vkd3d(options_.compiler,
+                       {"-x", "hlsl", "-p", format->profile, "-b", std::string(format->vkd3d_type),
+                        "-e", "main", "-o", output.string(), source},
+                       options_.timeout);
+  if (!run) return run.error();
   // The message names the file as the library will: relative to its root.
   auto located = [&](const CompilerMessage& m) {
     const std::string line = source_line(source, m.line);
@@ -125,13 +122,9 @@ Status BytecodeStage::process(ShaderJob& job) const {
 // compiler: our own model of a Direct3D 9 compiler under-counted by 2-10x.
 Status BytecodeStage::count_slots(ShaderJob& job, const std::filesystem::path& bytecode) const {
   const std::string tool = "vkd3d-compiler -b d3d-asm: ";
-  auto run =
-      run_process({options_.compiler.string(), "-x", "d3dbc", "-b", "d3d-asm", bytecode.string()},
-                  options_.timeout);
-  if (!run) {
-    return make_error(Error::Kind::io, options_.compiler.string(),
-                      "cannot run the HLSL compiler (--hlsl-compiler): " + run.error().message);
-  }
+  auto run = run_vkd3d(options_.compiler, {"-x", "d3dbc", "-b", "d3d-asm", bytecode.string()},
+                       options_.timeout);
+  if (!run) return run.error();
   if (run->timed_out || run->exit_code != 0) {
     return make_error(Error::Kind::compile, job.describe(),
                       tool + "cannot disassemble " + job.bytecode->path + ": " + run->output);
