@@ -1,5 +1,6 @@
 #include "penumbra/model/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "penumbra/model/shader_contract.hpp"
@@ -61,6 +62,29 @@ int minmax_max_visits(int kernel) {
     visits += 4 * per_axis * per_axis;
   }
   return visits;
+}
+
+int minmax_max_steps(int kernel) {
+  const int visits = minmax_max_visits(kernel);
+  return visits + (visits - 4) / 4;
+}
+
+std::optional<int> walk_step_bound(const Variant& variant, int limit) {
+  const bool brute_force = variant.keys.traversal == kBruteForceTraversal;
+  std::optional<int> own;
+  if (variant.technique == Technique::minmax_pcf && variant.keys.kernel) {
+    // Brute force reads a texel a step.
+    const int kernel = *variant.keys.kernel;
+    own = brute_force ? kernel * kernel : minmax_max_steps(kernel);
+  }
+  if (variant.technique == Technique::backprojection) {
+    // A walk steps at most twice per visit (a visit, and the rise from the
+    // children of a visited node); brute force reads a texel a step.
+    const int nodes = variant.keys.max_nodes.value_or(kDefaultMaxNodes);
+    own = brute_force ? nodes : 2 * nodes;
+  }
+  if (own && limit > 0) own = std::min(*own, limit);
+  return own;
 }
 
 std::vector<float> gaussian_weights(int radius) {

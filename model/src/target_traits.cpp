@@ -31,7 +31,8 @@ constexpr TargetTraits kTraits[] = {
      .is_hlsl = true,
      .shader_model = 3,
      .disk_textures = true,
-     .rolled_sample_loops = true},
+     .rolled_sample_loops = true,
+     .walk_step_limit = 224},
 };
 static_assert(std::size(kTraits) == kAllTargets.size());
 

@@ -17,7 +17,8 @@ Status check_variant(const Variant& variant) {
 
 Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& shadow_map,
                                       const LightParams& light, const FloatImage& receivers,
-                                      const SamplingPrecision& precision) {
+                                      const SamplingPrecision& precision,
+                                      const ShaderLimits& limits) {
   PENUMBRA_TRY(check_variant(variant));
   if (shadow_map.channels != 1 || shadow_map.pixel_count() == 0) {
     return make_error(Error::Kind::bad_input, "shadow map",
@@ -39,8 +40,8 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
   for (int j = 0; j < receivers.height; ++j) {
     for (int i = 0; i < receivers.width; ++i) {
       const Query query{receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2)};
-      const Sample sample = mip ? evaluate(variant, map, *mip, light, query, precision)
-                                : evaluate(variant, map, light, query, precision);
+      const Sample sample = mip ? evaluate(variant, map, *mip, light, query, precision, limits)
+                                : evaluate(variant, map, light, query, precision, limits);
       result.visibility.at(i, j) = float(sample.visibility);
       result.ambiguous.at(i, j) = sample.ambiguous ? 1.0f : 0.0f;
     }

@@ -1,6 +1,7 @@
 // minmax_pcf's reference counts the window texel by texel: the semantics are
 // the brute-force count, and the shader's mip traversal must equal it (tests
-// prove the CPU traversal in minmax_traversal.cpp does). Every step is float
+// prove the CPU traversal in minmax_traversal.cpp does). Where a target caps
+// the walk's steps, the count is what the same walk reached. Every step is float
 // arithmetic the GPU performs identically (a correctly rounded product, floor,
 // exact integer counts below 2^24), so the tolerance is 0.
 #include "penumbra/reference/minmax_pcf.hpp"
@@ -30,11 +31,12 @@ TexelRect minmax_pcf_window(const ShadowMapView& map, double u, double v, int ke
 }
 
 long long count_occluders_brute_force(const ShadowMapView& map, const TexelRect& window,
-                                      float z_ref) {
+                                      float z_ref, long long max_texels) {
   const TexelRect inside = clip(window, map.width(), map.height());
   long long count = 0;
+  long long read = 0;
   for (int j = inside.y0; j <= inside.y1; ++j) {
-    for (int i = inside.x0; i <= inside.x1; ++i) {
+    for (int i = inside.x0; i <= inside.x1 && read < max_texels; ++i, ++read) {
       if (float(map.depth(i, j)) < z_ref) ++count;
     }
   }
@@ -48,10 +50,19 @@ float minmax_pcf_visibility(long long count, int kernel) {
 
 namespace detail {
 
-Sample minmax_pcf(const ShadowMapView& map, const LightParams& light, const Query& q, int kernel) {
+Sample minmax_pcf(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
+                  const Query& q, const VariantKeys& keys, std::optional<int> capped_steps) {
+  const int kernel = keys.kernel.value();
   const TexelRect window = minmax_pcf_window(map, q.u, q.v, kernel);
-  const long long count =
-      count_occluders_brute_force(map, window, float_reference(q.z, light.bias));
+  const float z_ref = float_reference(q.z, light.bias);
+  long long count = 0;
+  if (!capped_steps) {
+    count = count_occluders_brute_force(map, window, z_ref);
+  } else if (keys.traversal == kBruteForceTraversal) {
+    count = count_occluders_brute_force(map, window, z_ref, *capped_steps);
+  } else {
+    count = count_occluders(mip, window, z_ref, *capped_steps).count;
+  }
   return {minmax_pcf_visibility(count, kernel), false};
 }
 

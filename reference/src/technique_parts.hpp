@@ -31,10 +31,21 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
 double poisson_pcf(const ShadowMapView& map, const Query& q, double z_ref,
                    const std::vector<Point2>& disk, double radius);
 
-Sample minmax_pcf(const ShadowMapView& map, const LightParams& light, const Query& q, int kernel);
+// `capped_steps`: the steps of the shader's walk where a target's cap stops
+// it short (walk_step_bound()); then the result is what the walk reached.
+Sample minmax_pcf(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
+                  const Query& q, const VariantKeys& keys, std::optional<int> capped_steps);
 
 Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
-                      const Query& q);
+                      const Query& q, const VariantKeys& keys, std::optional<int> capped_steps);
+
+// backprojection's shader stopped after `steps` steps of its walk over
+// `window` (brute_force: texels in row order): the visibility of the area
+// it reached, ambiguous where one of the shader's float32 decisions that
+// steer the walk lies too close to call.
+Sample backprojection_capped(const ShadowMapView& map, const MinMaxMip& mip,
+                             const LightParams& light, const Query& q, const TexelRect& window,
+                             const VariantKeys& keys, int steps);
 
 // screen_blur's factor: the mean of 9 point_compare()s at (u + i / W,
 // v + j / H), i, j in -1..1, ambiguous when any of them is.

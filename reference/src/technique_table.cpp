@@ -1,6 +1,7 @@
 #include "technique_table.hpp"
 
 #include <cstddef>
+#include <optional>
 
 #include "technique_parts.hpp"
 
@@ -21,6 +22,15 @@ double point_tolerance(const SamplingPrecision&) {
 // and a mean of such samples by no more.
 double bilinear_tolerance(const SamplingPrecision& precision) {
   return 2 * precision.step() + kFloatSlack;
+}
+
+// The steps of the variant's walk where the target's cap stops it short of
+// its own bound; nullopt when the walk runs its course.
+std::optional<int> capped_walk_steps(const ReceiverInputs& in) {
+  const std::optional<int> own = walk_step_bound(in.variant);
+  const std::optional<int> capped = walk_step_bound(in.variant, in.limits.walk_steps);
+  if (own && capped && *capped < *own) return capped;
+  return std::nullopt;
 }
 
 Status needs_nothing(const Variant&) {
@@ -62,14 +72,15 @@ constexpr TechniqueReference kReferences[] = {
                    in.variant.pcf_disk.value(), in.precision);
      },
      bilinear_tolerance},
-    // Its reference counts texel by texel, though its shader reads the mip.
-    {Technique::minmax_pcf, false,
+    // Its reference counts texel by texel, or walks the mip where a cap stops the walk.
+    {Technique::minmax_pcf, true,
      [](const Variant& v) -> Status {
        PENUMBRA_TRY(check_kernel(v, kMaxSamples, false));
        return check_traversal(v);
      },
      [](const ReceiverInputs& in) {
-       return minmax_pcf(in.map, in.light, in.query, in.variant.keys.kernel.value());
+       return minmax_pcf(in.map, *in.mip, in.light, in.query, in.variant.keys,
+                         capped_walk_steps(in));
      },
      // An integer count of point compares, 1 - C / K^2 in float: bit-exact.
      [](const SamplingPrecision&) { return 0.0; }},
@@ -78,7 +89,10 @@ constexpr TechniqueReference kReferences[] = {
        PENUMBRA_TRY(check_max_nodes(v));
        return check_traversal(v);
      },
-     [](const ReceiverInputs& in) { return backprojection(in.map, *in.mip, in.light, in.query); },
+     [](const ReceiverInputs& in) {
+       return backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
+                             capped_walk_steps(in));
+     },
      // Exact compares; only float32 sums of patch areas differ.
      [](const SamplingPrecision&) { return 1e-4; }},
     {Technique::pcss_minmax, true, needs_pcf_disk,

@@ -17,6 +17,7 @@ struct ReceiverInputs {
   const Query& query;
   double z_ref;  // query.z - bias: what comparisons use
   const SamplingPrecision& precision;
+  const ShaderLimits& limits;
 };
 
 struct TechniqueReference {

@@ -75,9 +75,10 @@ namespace {
 
 // `mip` may be null for the techniques whose reference does not read it.
 Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMip* mip,
-                const LightParams& light, const Query& query, const SamplingPrecision& precision) {
+                const LightParams& light, const Query& query, const SamplingPrecision& precision,
+                const ShaderLimits& limits) {
   return detail::reference_for(variant.technique)
-      .evaluate({variant, map, mip, light, query, query.z - light.bias, precision});
+      .evaluate({variant, map, mip, light, query, query.z - light.bias, precision, limits});
 }
 
 }  // namespace
@@ -87,16 +88,18 @@ bool reference_reads_mip(Technique technique) {
 }
 
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const MinMaxMip& mip,
-                const LightParams& light, const Query& query, const SamplingPrecision& precision) {
-  return dispatch(variant, map, &mip, light, query, precision);
+                const LightParams& light, const Query& query, const SamplingPrecision& precision,
+                const ShaderLimits& limits) {
+  return dispatch(variant, map, &mip, light, query, precision, limits);
 }
 
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
-                const Query& query, const SamplingPrecision& precision) {
+                const Query& query, const SamplingPrecision& precision,
+                const ShaderLimits& limits) {
   if (!reference_reads_mip(variant.technique))
-    return dispatch(variant, map, nullptr, light, query, precision);
+    return dispatch(variant, map, nullptr, light, query, precision, limits);
   const MinMaxMip mip(map);
-  return dispatch(variant, map, &mip, light, query, precision);
+  return dispatch(variant, map, &mip, light, query, precision, limits);
 }
 
 }  // namespace penumbra::reference

@@ -34,6 +34,7 @@ struct MinmaxCursor {
   float span;       // 2^level: texels per node side
   vec2 first_root;  // the 2x2 roots start here, at level `start`
   float start;
+  bool climbed;  // risen to a parent whose subtree is done: the next step moves past it
   bool done;
 };
 
@@ -69,6 +70,7 @@ MinmaxCursor minmax_begin(vec4 window) {
   cursor.start = cursor.level;
   cursor.first_root = floor(window.xy / cursor.span);
   cursor.node = cursor.first_root;
+  cursor.climbed = false;
   cursor.done = false;
   return cursor;
 }
@@ -102,29 +104,29 @@ void minmax_descend(inout MinmaxCursor cursor) {
   cursor.span *= 0.5;
 }
 
-// Past the node's subtree: to its next sibling in the order (2i, 2j),
-// (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1) (the roots likewise from first_root),
-// climbing while the node is the last of its siblings; done after the last root.
+// One step past the node's subtree: to its next sibling in the order
+// (2i, 2j), (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1) (the roots likewise from
+// first_root), or up to the parent when the node is the last of its
+// siblings (`climbed`: the next step moves past the parent); done after the
+// last root. One level a step, not a loop to the next sibling: every step
+// of a walk then costs at most one loop body, which bounds its executed
+// instructions (Shader Model 3 guarantees only 65,535).
 void minmax_next(inout MinmaxCursor cursor) {
-  PENUMBRA_LOOP for (int k = 0; k <= MINMAX_MAX_LEVEL; ++k) {
-    bool root = cursor.level >= cursor.start;
-    vec2 first_sibling = root ? cursor.first_root : floor(cursor.node * 0.5) * 2.0;
-    vec2 offset = cursor.node - first_sibling;
-    if (offset.x < 0.5) {
-      cursor.node.x += 1.0;
-      break;
-    }
-    if (offset.y < 0.5) {
-      cursor.node = vec2(first_sibling.x, cursor.node.y + 1.0);
-      break;
-    }
-    if (root) {
-      cursor.done = true;
-      break;
-    }
+  bool root = cursor.level >= cursor.start;
+  vec2 first_sibling = root ? cursor.first_root : floor(cursor.node * 0.5) * 2.0;
+  vec2 offset = cursor.node - first_sibling;
+  cursor.climbed = false;
+  if (offset.x < 0.5) {
+    cursor.node.x += 1.0;
+  } else if (offset.y < 0.5) {
+    cursor.node = vec2(first_sibling.x, cursor.node.y + 1.0);
+  } else if (root) {
+    cursor.done = true;
+  } else {
     cursor.node = floor(cursor.node * 0.5);
     cursor.level += 1.0;
     cursor.span *= 2.0;
+    cursor.climbed = true;
   }
 }
 

@@ -8,7 +8,8 @@
 // Texels at or behind the receiver are skipped. The min-max walk skips nodes
 // that cannot touch the light and sums flat nodes whole;
 // BACKPROJECTION_MAX_NODES bounds the nodes it visits (brute force: the
-// texels it reads).
+// texels it reads) and BACKPROJECTION_MAX_STEPS its steps, which a target
+// may cap lower.
 #include "common/minmax_traversal.glsl"
 
 // Slopes (u - 0.5) Fw / n of map coordinates `uv`.
@@ -59,8 +60,8 @@ vec4 backprojection_window(vec3 query, float z_min) {
 
 // S: the projected area inside the light of the texels with normalized
 // depth below `limit` (they occlude and lie in front of the receiver),
-// stopping at the light's area (2L)^2 or after BACKPROJECTION_MAX_NODES
-// nodes or texels.
+// stopping at the light's area (2L)^2, after BACKPROJECTION_MAX_NODES
+// nodes or texels, or after BACKPROJECTION_MAX_STEPS steps.
 float backprojection_area(vec3 query, vec4 window, float limit) {
   vec2 receiver_slope = backprojection_slope(query.xy);
   float light_area = backprojection_whole_light_area();
@@ -69,7 +70,7 @@ float backprojection_area(vec3 query, vec4 window, float limit) {
 #if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
   vec2 texel = window.xy;
   bool done = false;
-  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_NODES, done) {
+  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, done) {
     visits += 1.0;
     float depth = shadow_texel(texel);
     if (depth < limit) {
@@ -84,10 +85,10 @@ float backprojection_area(vec3 query, vec4 window, float limit) {
   }
 #else
   MinmaxCursor cursor = minmax_begin(window);
-  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_NODES, cursor.done) {
-    visits += 1.0;
+  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, cursor.done) {
     bool descend = false;
-    if (!minmax_window_empty(minmax_node_part(cursor, window))) {
+    if (!cursor.climbed) visits += 1.0;
+    if (!cursor.climbed && !minmax_window_empty(minmax_node_part(cursor, window))) {
       vec2 range = minmax_cursor_read(cursor);
       vec4 texels = minmax_node_texels(cursor);
       float z_min = range.x * INV_DEPTH_SCALE;

@@ -2,29 +2,33 @@
 // (d < reference) of the KERNEL_SIZE x KERNEL_SIZE window at
 // floor(uv * size) - floor(K / 2); texels outside the map do not occlude.
 // C is counted exactly: whole min-max nodes that all occlude or none do are
-// answered without descending (PENUMBRA_TRAVERSAL_BRUTE_FORCE: every texel).
+// answered without descending (PENUMBRA_TRAVERSAL_BRUTE_FORCE: every texel,
+// row by row). MINMAX_MAX_STEPS bounds the steps of either; where a target
+// caps it below what the window needs, C counts what the steps reached.
 #include "common/minmax_traversal.glsl"
 
 float minmax_pcf_count(vec2 first, float reference) {
   float count = 0.0;
-#if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
-  PENUMBRA_SAMPLE_LOOP for (int j = 0; j < KERNEL_SIZE; ++j) {
-    PENUMBRA_SAMPLE_LOOP for (int i = 0; i < KERNEL_SIZE; ++i) {
-      vec2 texel = first + vec2(float(i), float(j));
-      bool inside = all(greaterThanEqual(texel, vec2(0.0))) &&
-                    all(lessThan(texel, params.shadow_map_size.xy));
-      if (inside && shadow_texel(texel) < reference) count += 1.0;
-    }
-  }
-#else
   vec4 window = minmax_clip_window(first, first + float(KERNEL_SIZE - 1));
   if (minmax_window_empty(window)) return 0.0;
+#if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
+  vec2 texel = window.xy;
+  float steps = 0.0;
+  bool done = false;
+  MINMAX_FOR_BOUNDED(MINMAX_MAX_STEPS, done) {
+    if (shadow_texel(texel) < reference) count += 1.0;
+    texel.x += 1.0;
+    if (texel.x > window.z) texel = vec2(window.x, texel.y + 1.0);
+    // MINMAX_FOR_BOUNDED rounds its bound up: stop at exactly the bound.
+    steps += 1.0;
+    done = texel.y > window.w || steps >= float(MINMAX_MAX_STEPS);
+  }
+#else
   MinmaxCursor cursor = minmax_begin(window);
-  // MINMAX_MAX_VISITS bounds the nodes this walk can visit for any window.
-  MINMAX_FOR_BOUNDED(MINMAX_MAX_VISITS, cursor.done) {
+  MINMAX_FOR_BOUNDED(MINMAX_MAX_STEPS, cursor.done) {
     vec4 part = minmax_node_part(cursor, window);
     bool descend = false;
-    if (!minmax_window_empty(part)) {
+    if (!cursor.climbed && !minmax_window_empty(part)) {
       vec2 range = minmax_cursor_read(cursor);
       if (range.y < reference) {
         count += minmax_texel_count(part);  // every texel occludes

@@ -24,6 +24,33 @@ TEST(MinmaxTraversal, MaxVisitsFollowsTheFormula) {
   EXPECT_EQ(minmax_max_visits(128), 22892);
 }
 
+// A step stands on a node or rises from the children of a descended node.
+TEST(MinmaxTraversal, MaxStepsAddOneRiseForEveryFourVisitsPastTheRoots) {
+  EXPECT_EQ(minmax_max_steps(2), 4);
+  EXPECT_EQ(minmax_max_steps(3), 40 + 9);
+  EXPECT_EQ(minmax_max_steps(128), 22892 + 5722);
+}
+
+// The variant's own bound, or a target's cap where that is lower.
+TEST(MinmaxTraversal, WalkStepBoundIsCappedByTheTarget) {
+  Variant pcf;
+  pcf.technique = Technique::minmax_pcf;
+  pcf.keys.kernel = 64;
+  EXPECT_EQ(walk_step_bound(pcf), minmax_max_steps(64));
+  EXPECT_EQ(walk_step_bound(pcf, 224), 224);
+  pcf.keys.traversal = std::string(kBruteForceTraversal);
+  EXPECT_EQ(walk_step_bound(pcf), 64 * 64);
+  pcf.keys.kernel = 8;
+  EXPECT_EQ(walk_step_bound(pcf, 224), 64);
+  Variant back;
+  back.technique = Technique::backprojection;
+  EXPECT_EQ(walk_step_bound(back), 2 * kDefaultMaxNodes);
+  back.keys.traversal = std::string(kBruteForceTraversal);
+  EXPECT_EQ(walk_step_bound(back, 224), 224);
+  Variant hard;
+  EXPECT_FALSE(walk_step_bound(hard, 224).has_value());
+}
+
 // A variant of `technique` with the keys `set` gives.
 template <typename Set>
 Variant variant_of(Technique technique, Set set) {
@@ -38,7 +65,9 @@ TEST(VariantHeader, MinmaxDefines) {
   const Variant minmax = variant_of(Technique::minmax_pcf, [](VariantKeys& k) { k.kernel = 12; });
   const std::string pcf = variant_header(&minmax, Target::hlsl_dx9);
   EXPECT_THAT(pcf, HasSubstr("#define KERNEL_SIZE 12\n"));
-  EXPECT_THAT(pcf, HasSubstr("#define MINMAX_MAX_VISITS 316\n"));
+  EXPECT_THAT(pcf, HasSubstr("#define MINMAX_MAX_STEPS 224\n"));  // hlsl_dx9's cap
+  EXPECT_THAT(variant_header(&minmax, Target::spirv),
+              HasSubstr("#define MINMAX_MAX_STEPS " + std::to_string(316 + 78) + "\n"));
   EXPECT_THAT(pcf, ::testing::Not(HasSubstr("PENUMBRA_TRAVERSAL_BRUTE_FORCE")));
 
   const Variant brute = variant_of(Technique::backprojection, [](VariantKeys& k) {
@@ -47,6 +76,7 @@ TEST(VariantHeader, MinmaxDefines) {
   const std::string back = variant_header(&brute, Target::spirv);
   EXPECT_THAT(back, HasSubstr("#define PENUMBRA_TRAVERSAL_BRUTE_FORCE 1\n"));
   EXPECT_THAT(back, HasSubstr("#define BACKPROJECTION_MAX_NODES 16384\n"));
+  EXPECT_THAT(back, HasSubstr("#define BACKPROJECTION_MAX_STEPS 16384\n"));
 
   const Variant bounded =
       variant_of(Technique::backprojection, [](VariantKeys& k) { k.max_nodes = 4096; });

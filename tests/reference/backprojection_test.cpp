@@ -120,6 +120,39 @@ INSTANTIATE_TEST_SUITE_P(LightSizes, BackprojectionWindow, ::testing::Values(0.0
                            return "L" + std::to_string(int(param_info.param * 100));
                          });
 
+// A target's cap on the walk (hlsl_dx9): the reference then walks the
+// shader's nodes (or texels, brute force) itself. A cap the walk never
+// reaches gives the texel-by-texel sum; a small one stops it short, so
+// less area is summed and more light seen.
+TEST(BackprojectionCapped, WalkEqualsTheSumUnlessTheCapStopsIt) {
+  LightParams light = unit_light();
+  light.light_world_size = 0.3;
+  std::mt19937 generator(5);
+  std::uniform_real_distribution<double> uv(0.0, 1.0), depth(2.0, 3.0);
+  for (const bool brute_force : {false, true}) {
+    Variant variant = testing::backprojection_variant();
+    if (brute_force) variant.keys.traversal = std::string(kBruteForceTraversal);
+    const int own = walk_step_bound(variant).value();
+    int stopped_short = 0;
+    for (unsigned seed = 0; seed < 4; ++seed) {
+      const FloatImage image = testing::blocky_map(40, 30, 12, 1.0f, 1.9f, 5.0f, seed);
+      const ShadowMapView map(image);
+      const MinMaxMip mip(map);
+      for (int k = 0; k < 200; ++k) {
+        const Query q{uv(generator), uv(generator), depth(generator)};
+        const double whole = evaluate(variant, map, mip, light, q).visibility;
+        const Sample uncut = evaluate(variant, map, mip, light, q, {}, {own - 1});
+        ASSERT_NEAR(uncut.visibility, whole, 1e-9) << "receiver " << q.u << ", " << q.v;
+        EXPECT_FALSE(uncut.ambiguous);
+        const Sample cut = evaluate(variant, map, mip, light, q, {}, {8});
+        ASSERT_GE(cut.visibility, whole - 1e-9) << "receiver " << q.u << ", " << q.v;
+        stopped_short += cut.visibility > whole + 1e-6;
+      }
+    }
+    EXPECT_GT(stopped_short, 50) << (brute_force ? "brute force" : "walk");
+  }
+}
+
 TEST(CheckVariant, BackprojectionKeys) {
   Variant variant = testing::backprojection_variant();
   EXPECT_TRUE(check_variant(variant));

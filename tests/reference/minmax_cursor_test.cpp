@@ -1,9 +1,10 @@
-// The stack-free walk of shaderlib/common/minmax_traversal.glsl, simulated
-// on the CPU step for step (same start level, roots, child order and cursor
-// steps as MinmaxCursor): over the reference's MinMaxMip it visits the same
-// nodes as the reference's count_occluders(), never more than the shader's
-// loop bound MINMAX_MAX_VISITS (minmax_max_visits()), and counts exactly the
-// texels brute force counts.
+// The shaders' stack-free walk (shaderlib/common/minmax_traversal.glsl),
+// as the reference's MinmaxCursor takes it in count_occluders(): it counts
+// exactly the texels brute force counts within the shader's bounds
+// (minmax_max_visits(), minmax_max_steps()), and a walk a target caps
+// counts what its steps reached.
+#include "penumbra/reference/minmax_cursor.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,89 +20,21 @@
 namespace penumbra::reference {
 namespace {
 
-// The shader's MinmaxCursor (node coordinates are exact integers there too).
-struct Cursor {
-  int x = 0, y = 0, level = 0, span = 1, first_x = 0, first_y = 0, start = 0;
-  bool done = false;
-
-  explicit Cursor(const TexelRect& w) {
-    for (int k = 0; k < 16; ++k) {  // MINMAX_MAX_LEVEL
-      if (std::max(w.x1 / span - w.x0 / span, w.y1 / span - w.y0 / span) <= 1) break;
-      ++level;
-      span *= 2;
+// The nodes the walk reads, each checked to lie inside its level.
+void expect_reads_inside_levels(const MinMaxMip& mip, const TexelRect& window) {
+  for (MinmaxCursor cursor(window); !cursor.done();) {
+    const bool reads = !cursor.climbed() && !intersect(cursor.texels(), window).empty();
+    if (reads) {
+      ASSERT_TRUE(cursor.x() < mip.width(cursor.level()) && cursor.y() < mip.height(cursor.level()))
+          << "read outside level " << cursor.level();
     }
-    start = level;
-    first_x = x = w.x0 / span;
-    first_y = y = w.y0 / span;
-  }
-  void descend() {
-    x *= 2;
-    y *= 2;
-    --level;
-    span /= 2;
-  }
-  // minmax_next: to the next sibling, climbing while the node is the last.
-  void next() {
-    for (int k = 0; k <= 16; ++k) {  // MINMAX_MAX_LEVEL + 1
-      const bool root = level >= start;
-      const int sx = root ? first_x : x / 2 * 2;
-      const int sy = root ? first_y : y / 2 * 2;
-      if (x == sx) {
-        ++x;
-        return;
-      }
-      if (y == sy) {
-        x = sx;
-        ++y;
-        return;
-      }
-      if (root) {
-        done = true;
-        return;
-      }
-      x /= 2;
-      y /= 2;
-      ++level;
-      span *= 2;
-    }
-    ADD_FAILURE() << "the climb outran its loop bound";
-  }
-};
-
-struct Walk {
-  long long count = 0;  // occluding texels
-  int visits = 0;       // nodes the cursor stood on
-};
-
-// minmax_pcf_count: the occluder count of a window inside the map.
-Walk cursor_walk(const MinMaxMip& mip, const TexelRect& w, float reference) {
-  Walk walk;
-  Cursor cursor(w);
-  while (!cursor.done) {
-    ++walk.visits;
-    const TexelRect part = intersect(
-        {cursor.x * cursor.span, cursor.y * cursor.span, cursor.x * cursor.span + cursor.span - 1,
-         cursor.y * cursor.span + cursor.span - 1},
-        w);
-    bool descend = false;
-    if (!part.empty()) {
-      // The shader reads only nodes that exist in their level.
-      EXPECT_TRUE(cursor.x < mip.width(cursor.level) && cursor.y < mip.height(cursor.level))
-          << "read outside level " << cursor.level;
-      const MinMax range = mip.node(cursor.level, cursor.x, cursor.y);
-      if (range.max < reference) {
-        walk.count += part.count();
-      } else {
-        descend = reference > range.min && cursor.level > 0;
-      }
-    }
+    const bool descend = reads && cursor.level() > 0 && cursor.x() % 3 == 0;  // any pattern
     if (descend) {
       cursor.descend();
     } else {
       cursor.next();
     }
   }
-  return walk;
 }
 
 // Maps that make the walk descend: a checkerboard (every node above level 0
@@ -130,7 +63,7 @@ FloatImage blocks(int width, int height, std::mt19937& random) {
   return map;
 }
 
-TEST(MinmaxCursor, VisitsTheReferenceNodesWithinTheBoundAndCountsExactly) {
+TEST(MinmaxCursor, CountsExactlyWithinTheBoundsAndACapStopsIt) {
   std::mt19937 random(4);
   std::vector<FloatImage> maps;
   for (auto [w, h] : std::vector<std::array<int, 2>>{
@@ -141,9 +74,9 @@ TEST(MinmaxCursor, VisitsTheReferenceNodesWithinTheBoundAndCountsExactly) {
   std::vector<MinMaxMip> mips;
   for (const FloatImage& map : maps) mips.emplace_back(ShadowMapView(map));
   std::uniform_real_distribution<float> unit(-0.2f, 1.2f);
-  int most_visits_at_128 = 0;
+  int most_steps_at_128 = 0;
+  int truncated = 0;
   for (int kernel = 1; kernel <= 128; ++kernel) {
-    const int bound = minmax_max_visits(kernel);
     for (std::size_t m = 0; m < maps.size(); ++m) {
       const ShadowMapView map(maps[m]);
       for (int sample = 0; sample < 12; ++sample) {
@@ -155,22 +88,40 @@ TEST(MinmaxCursor, VisitsTheReferenceNodesWithinTheBoundAndCountsExactly) {
                                        cx - kernel / 2 + kernel - 1, cy - kernel / 2 + kernel - 1},
                                       map.width(), map.height());
         if (window.empty()) continue;
+        expect_reads_inside_levels(mips[m], window);
         const float reference = sample % 3 == 0 ? 0.5f : unit(random);
-        const Walk walk = cursor_walk(mips[m], window, reference);
-        ASSERT_LE(walk.visits, bound)
-            << "K " << kernel << " map " << map.width() << "x" << map.height() << " window "
-            << window.x0 << "," << window.y0;
+        const MipCount walk = count_occluders(mips[m], window, reference);
+        ASSERT_FALSE(walk.truncated);
+        ASSERT_LE(walk.visits, minmax_max_visits(kernel)) << "K " << kernel;
+        ASSERT_LE(walk.steps, minmax_max_steps(kernel)) << "K " << kernel;
         ASSERT_EQ(walk.count, count_occluders_brute_force(map, window, reference))
             << "K " << kernel;
-        // The reference's stack walk stands on the same nodes.
-        ASSERT_EQ(walk.visits, count_occluders(mips[m], window, reference).visits)
-            << "K " << kernel;
-        if (kernel == 128) most_visits_at_128 = std::max(most_visits_at_128, walk.visits);
+        if (kernel == 128) most_steps_at_128 = std::max(most_steps_at_128, walk.steps);
+        // Capped one step short, the walk stops there with part of the count.
+        if (walk.steps < 2) continue;
+        const MipCount capped = count_occluders(mips[m], window, reference, walk.steps - 1);
+        ASSERT_TRUE(capped.truncated);
+        ASSERT_EQ(capped.steps, walk.steps - 1);
+        ASSERT_LE(capped.count, walk.count);
+        ++truncated;
       }
     }
   }
   // The walk does use a good part of the bound: it is not vacuous.
-  EXPECT_GT(most_visits_at_128 * 2, minmax_max_visits(128));
+  EXPECT_GT(most_steps_at_128 * 2, minmax_max_steps(128));
+  EXPECT_GT(truncated, 1000);
+}
+
+// Brute force capped after n texels counts the first n in rows.
+TEST(MinmaxCursor, BruteForceCapCountsTheFirstTexelsInRows) {
+  FloatImage image(4, 4, 1, 1.0f);
+  image.at(3, 0) = 0.0f;
+  image.at(0, 1) = 0.0f;
+  const ShadowMapView map(image);
+  EXPECT_EQ(count_occluders_brute_force(map, {0, 0, 3, 3}, 0.5f, 3), 0);
+  EXPECT_EQ(count_occluders_brute_force(map, {0, 0, 3, 3}, 0.5f, 4), 1);
+  EXPECT_EQ(count_occluders_brute_force(map, {0, 0, 3, 3}, 0.5f, 5), 2);
+  EXPECT_EQ(count_occluders_brute_force(map, {0, 0, 3, 3}, 0.5f), 2);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "backend.hpp"
 #include "chain_check.hpp"
 #include "minmax_check.hpp"
+#include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -35,12 +36,14 @@ TargetRun failed_run(Target target, std::string backend, const Error& error) {
   return run;
 }
 
-// The query's visibility against the reference (screen_blur: the factor).
+// The query's visibility against the reference of `target`'s shader
+// (screen_blur: the factor).
 Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
-                             const FloatImage& texel_reads, const Variant& variant,
+                             const FloatImage& texel_reads, const Variant& variant, Target target,
                              const SceneFixture& fixture) {
+  const reference::ShaderLimits limits{traits(target).walk_step_limit};
   auto expected = reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
-                                            fixture.receivers, ctx.precision);
+                                            fixture.receivers, ctx.precision, limits);
   if (!expected) return expected.error();
   auto comparison = reference::compare(visibility, expected->visibility, expected->ambiguous,
                                        reference::tolerance(variant.technique, ctx.precision));
@@ -58,8 +61,8 @@ Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
 // GPU's own input to it.
 Result<SceneRun> check_screen_blur_scene(const Context& ctx, const SceneOutput& gpu,
                                          const ChainOutput& chain, const Variant& variant,
-                                         const SceneFixture& fixture) {
-  auto scene = check_scene(ctx, gpu.visibility, gpu.texel_reads, variant, fixture);
+                                         Target target, const SceneFixture& fixture) {
+  auto scene = check_scene(ctx, gpu.visibility, gpu.texel_reads, variant, target, fixture);
   if (!scene) return scene.error();
   auto blur =
       check_chain(chain.blurred, reference::screen_blur(variant, gpu.visibility, fixture.receivers),
@@ -98,9 +101,10 @@ Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& e
   for (const SceneFixture& fixture : scenes.scenes) {
     auto gpu = passes->run(fixture);
     if (!gpu) return gpu.error();
-    auto scene = gpu->chain
-                     ? check_screen_blur_scene(ctx, *gpu, *gpu->chain, entry.variant, fixture)
-                     : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, fixture);
+    auto scene =
+        gpu->chain
+            ? check_screen_blur_scene(ctx, *gpu, *gpu->chain, entry.variant, target, fixture)
+            : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, target, fixture);
     if (!scene) return scene.error();
     run.pass = run.pass && scene->pass();
     run.scenes.push_back(std::move(*scene));

@@ -73,13 +73,15 @@ std::string variant_header(const Variant* variant, Target target) {
   if (keys.pcf_samples)
     out += "#define PCF_NUM_SAMPLES " + std::to_string(*keys.pcf_samples) + "\n";
   if (keys.traversal) out += "#define PENUMBRA_TRAVERSAL_" + ascii_upper(*keys.traversal) + " 1\n";
+  const std::optional<int> steps = walk_step_bound(*variant, traits(target).walk_step_limit);
   if (variant->technique == Technique::minmax_pcf && keys.kernel) {
-    out += "#define MINMAX_MAX_VISITS " + std::to_string(minmax_max_visits(*keys.kernel)) + "\n";
+    if (steps) out += "#define MINMAX_MAX_STEPS " + std::to_string(*steps) + "\n";
     out += "#define MINMAX_PCF_INV_AREA " + glsl_float(minmax_pcf_inv_area(*keys.kernel)) + "\n";
   }
   if (variant->technique == Technique::backprojection) {
     out += "#define BACKPROJECTION_MAX_NODES " +
            std::to_string(keys.max_nodes.value_or(kDefaultMaxNodes)) + "\n";
+    out += "#define BACKPROJECTION_MAX_STEPS " + std::to_string(*steps) + "\n";
   }
   if (keys.blur_radius) {
     out += "#define BLUR_RADIUS " + std::to_string(*keys.blur_radius) + "\n";

@@ -38,18 +38,21 @@ int slots_of(std::string_view opcode) {
 
 }  // namespace
 
+int sm3_line_slots(std::string_view line) {
+  const std::size_t first = line.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return 0;
+  line.remove_prefix(first);
+  const std::string_view opcode = line.substr(0, line.find_first_of(" \t\r"));
+  if (opcode.starts_with("//") || is_declaration(opcode)) return 0;
+  return slots_of(opcode);
+}
+
 int count_sm3_slots(std::string_view assembly) {
   int slots = 0;
   while (!assembly.empty()) {
     const std::size_t end = std::min(assembly.find('\n'), assembly.size());
-    std::string_view line = assembly.substr(0, end);
+    slots += sm3_line_slots(assembly.substr(0, end));
     assembly.remove_prefix(std::min(end + 1, assembly.size()));
-    const std::size_t first = line.find_first_not_of(" \t");
-    if (first == std::string_view::npos) continue;
-    line.remove_prefix(first);
-    const std::string_view opcode = line.substr(0, line.find_first_of(" \t\r"));
-    if (opcode.starts_with("//") || is_declaration(opcode)) continue;
-    slots += slots_of(opcode);
   }
   return slots;
 }

@@ -6,6 +6,10 @@
 
 namespace penumbra {
 
+// The instructions every ps_3_0 device executes in one invocation
+// (D3DCAPS9 MaxPShaderInstructionsExecuted, at least 65,535).
+inline constexpr long long kPs30MinimumExecuted = 65535;
+
 // The slots every vs_3_0 and ps_3_0 device runs (D3DCAPS9
 // MaxVertexShader30InstructionSlots / MaxPixelShader30InstructionSlots).
 inline constexpr int kSm3MinimumSlots = 512;
@@ -15,5 +19,8 @@ inline constexpr int kSm3MinimumSlots = 512;
 // count as the instructions they expand to (the Direct3D 9 reference's slot
 // counts: nrm 3, sincos 8, m4x4 4, ...).
 int count_sm3_slots(std::string_view assembly);
+
+// The slots of one line of that assembly (0 for what does not execute).
+int sm3_line_slots(std::string_view line);
 
 }  // namespace penumbra

@@ -123,6 +123,12 @@ inline float minmax_pcf_inv_area(int kernel) {
 // a K x K window, for any map and position (its loop bound).
 int minmax_max_visits(int kernel);
 
+// MINMAX_MAX_STEPS before a target's cap: the most steps of that walk. A
+// step stands on a node or rises from a finished group of four children,
+// once per descended node, and every descent adds four visits, so
+// visits + (visits - 4) / 4.
+int minmax_max_steps(int kernel);
+
 // screen_blur's baked weights (BLUR_WEIGHTS, index.json `blur_weights`) for
 // radius R >= 1: w_k = exp(-k^2 / (2 sigma^2)) with sigma = R / 2 for
 // k = -R..R, divided by their sum in double and then rounded to float.
@@ -143,5 +149,13 @@ struct Variant {
 // hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16,
 // minmax_pcf_k16_brute_force, backprojection_n4096, screen_blur_r4_depth_aware.
 std::string variant_name(Technique technique, const VariantKeys& keys);
+
+// The steps `variant`'s walk may take (minmax_pcf: MINMAX_MAX_STEPS,
+// backprojection: BACKPROJECTION_MAX_STEPS; with the brute_force traversal
+// a step reads one texel): the walk's own bound, capped by `limit` when it
+// is positive (a target's walk_step_limit); nullopt for techniques without
+// a walk. Below the walk's own bound the result depends on the cap, and
+// the reference models it.
+std::optional<int> walk_step_bound(const Variant& variant, int limit = 0);
 
 }  // namespace penumbra

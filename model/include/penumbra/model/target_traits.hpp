@@ -35,6 +35,10 @@ struct TargetTraits {
   // unroll at compile time, which takes minutes at the largest sample
   // counts and overflows ps_3_0's 512 instruction slots.
   bool rolled_sample_loops = false;
+  // Caps the steps of a min-max walk (0: no cap) so that a shader stays
+  // within the executed instructions every device runs: hlsl_dx9, for
+  // ps_3_0's 65,535. At most 255, one ps_3_0 loop, so that the cap is exact.
+  int walk_step_limit = 0;
 };
 
 TargetTraits traits(Target target);

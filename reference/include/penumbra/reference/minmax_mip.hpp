@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "penumbra/reference/shadow_map.hpp"
@@ -79,16 +80,21 @@ int start_level(const TexelRect& window);
 int level_spanning(const TexelRect& window, int nodes);
 
 struct MipCount {
-  long long count = 0;  // occluding texels (depth < z_ref) in the window, inside the map
-  int visits = 0;       // nodes taken from the traversal stack, skipped ones included
-  int reads = 0;        // nodes whose (min, max) was read: what the shader's .y counts
+  long long count = 0;     // occluding texels (depth < z_ref) in the window, inside the map
+  int visits = 0;          // nodes the walk stood on, skipped ones included
+  int reads = 0;           // nodes whose (min, max) was read: what the shader's .y counts
+  int steps = 0;           // steps of the walk: visits and rises (MinmaxCursor)
+  bool truncated = false;  // stopped at max_steps before the walk was done
 };
 
-// minmax_pcf's traversal (docs/techniques.md): from the 2 x 2 roots of
-// start_level(), depth first with children (2i, 2j), (2i+1, 2j), (2i, 2j+1),
-// (2i+1, 2j+1); a node missing the window is skipped unread, a node with
-// z_ref <= min adds nothing, one with max < z_ref adds its texels in the
-// window, any other is descended. `window` may reach outside the map.
-MipCount count_occluders(const MinMaxMip& mip, const TexelRect& window, float z_ref);
+// minmax_pcf's traversal (docs/techniques.md), the shaders' MinmaxCursor
+// walk: from the 2 x 2 roots of start_level(), depth first with children
+// (2i, 2j), (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1); a node missing the window
+// is skipped unread, a node with z_ref <= min adds nothing, one with
+// max < z_ref adds its texels in the window, any other is descended.
+// `window` may reach outside the map. After `max_steps` steps (a target's
+// cap, minmax_max_steps() or more for none) the count is what was reached.
+MipCount count_occluders(const MinMaxMip& mip, const TexelRect& window, float z_ref,
+                         int max_steps = std::numeric_limits<int>::max());
 
 }  // namespace penumbra::reference

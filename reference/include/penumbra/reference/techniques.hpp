@@ -19,6 +19,13 @@ struct Query {
   double z = 0.0;
 };
 
+// What one target's shader is held to where it changes results.
+struct ShaderLimits {
+  // traits(target).walk_step_limit: the cap on a min-max walk's steps
+  // (0: none). A walk it stops returns what it reached (walk_step_bound()).
+  int walk_steps = 0;
+};
+
 struct Sample {
   double visibility = 1.0;  // in [0, 1]
   bool ambiguous = false;   // a point sample lies so close to a texel boundary that a
@@ -29,21 +36,23 @@ struct Sample {
 // as many points as the sample-count keys, traversal and max_nodes in range).
 Status check_variant(const Variant& variant);
 
-// Whether the reference of `technique` reads the min-max mip: backprojection
-// and pcss_minmax. minmax_pcf's counts texel by texel, though its shader
-// reads the mip (uses_minmax_mip()).
+// Whether the reference of `technique` reads the min-max mip: minmax_pcf
+// (for a capped walk; uncapped it counts texel by texel), backprojection
+// and pcss_minmax.
 bool reference_reads_mip(Technique technique);
 
-// One receiver. `variant` must pass check_variant(); `mip` must be built from `map`
-// (read where reference_reads_mip()).
+// One receiver, as the shader of a target with `limits` computes it.
+// `variant` must pass check_variant(); `mip` must be built from `map` (read
+// where reference_reads_mip()).
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const MinMaxMip& mip,
                 const LightParams& light, const Query& query,
-                const SamplingPrecision& precision = {});
+                const SamplingPrecision& precision = {}, const ShaderLimits& limits = {});
 
 // The same, building the mip first where the technique reads it: O(W H) per
 // call for those, so for single receivers (evaluate_image builds it once).
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightParams& light,
-                const Query& query, const SamplingPrecision& precision = {});
+                const Query& query, const SamplingPrecision& precision = {},
+                const ShaderLimits& limits = {});
 
 struct ReferenceImage {
   FloatImage visibility;  // 1 channel, the receivers' size
@@ -54,6 +63,7 @@ struct ReferenceImage {
 // `shadow_map` (1 channel, linear z). Errors name what is wrong with the inputs.
 Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& shadow_map,
                                       const LightParams& light, const FloatImage& receivers,
-                                      const SamplingPrecision& precision = {});
+                                      const SamplingPrecision& precision = {},
+                                      const ShaderLimits& limits = {});
 
 }  // namespace penumbra::reference

@@ -9,6 +9,7 @@ struct MinmaxCursor
     float span;
     vec2 first_root;
     float start;
+    bool climbed;
     bool done;
 };
 
@@ -97,6 +98,7 @@ MinmaxCursor minmax_begin(vec4 window)
     cursor.start = cursor.level;
     cursor.first_root = floor(window.xy / vec2(cursor.span));
     cursor.node = cursor.first_root;
+    cursor.climbed = false;
     cursor.done = false;
     return cursor;
 }
@@ -131,8 +133,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _360 = minmax_node(param, param_1);
-    return _360;
+    vec2 _362 = minmax_node(param, param_1);
+    return _362;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -165,17 +167,17 @@ bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receive
     vec3 param_2 = query;
     vec2 param_3 = receiver_slope;
     vec4 rect = backprojection_project(param, param_1, param_2, param_3);
-    bool _560 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _571;
-    if (_560)
+    bool _554 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _565;
+    if (_554)
     {
-        _571 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _565 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _571 = _560;
+        _565 = _554;
     }
-    return _571;
+    return _565;
 }
 
 float backprojection_light_area(vec4 rect)
@@ -193,38 +195,43 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    vec2 _391;
-    for (int k = 0; k <= 16; k++)
+    bool root = cursor.level >= cursor.start;
+    vec2 _385;
+    if (root)
     {
-        bool root = cursor.level >= cursor.start;
-        if (root)
-        {
-            _391 = cursor.first_root;
-        }
-        else
-        {
-            _391 = floor(cursor.node * 0.5) * 2.0;
-        }
-        vec2 first_sibling = _391;
-        vec2 offset = cursor.node - first_sibling;
-        if (offset.x < 0.5)
-        {
-            cursor.node.x += 1.0;
-            break;
-        }
+        _385 = cursor.first_root;
+    }
+    else
+    {
+        _385 = floor(cursor.node * 0.5) * 2.0;
+    }
+    vec2 first_sibling = _385;
+    vec2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5)
+    {
+        cursor.node.x += 1.0;
+    }
+    else
+    {
         if (offset.y < 0.5)
         {
             cursor.node = vec2(first_sibling.x, cursor.node.y + 1.0);
-            break;
         }
-        if (root)
+        else
         {
-            cursor.done = true;
-            break;
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5);
+                cursor.level += 1.0;
+                cursor.span *= 2.0;
+                cursor.climbed = true;
+            }
         }
-        cursor.node = floor(cursor.node * 0.5);
-        cursor.level += 1.0;
-        cursor.span *= 2.0;
     }
 }
 
@@ -239,50 +246,63 @@ float backprojection_area(vec3 query, vec4 window, float limit)
     MinmaxCursor cursor = minmax_begin(param_1);
     for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
-        for (int loop_middle = 0; all(bvec2(loop_middle < 65, !cursor.done)); loop_middle++)
+        for (int loop_middle = 0; all(bvec2(loop_middle < 129, !cursor.done)); loop_middle++)
         {
             for (int loop_inner = 0; all(bvec2(loop_inner < 255, !cursor.done)); loop_inner++)
             {
-                visits += 1.0;
                 bool descend = false;
-                MinmaxCursor param_2 = cursor;
-                vec4 param_3 = window;
-                vec4 param_4 = minmax_node_part(param_2, param_3);
-                if (!minmax_window_empty(param_4))
+                if (!cursor.climbed)
+                {
+                    visits += 1.0;
+                }
+                bool _678 = !cursor.climbed;
+                bool _689;
+                if (_678)
+                {
+                    MinmaxCursor param_2 = cursor;
+                    vec4 param_3 = window;
+                    vec4 param_4 = minmax_node_part(param_2, param_3);
+                    _689 = !minmax_window_empty(param_4);
+                }
+                else
+                {
+                    _689 = _678;
+                }
+                if (_689)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _690 = minmax_cursor_read(param_5);
-                    vec2 range = _690;
+                    vec2 _695 = minmax_cursor_read(param_5);
+                    vec2 range = _695;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params.sampling.w;
-                    bool _704 = range.x < limit;
-                    bool _716;
-                    if (_704)
+                    bool _709 = range.x < limit;
+                    bool _721;
+                    if (_709)
                     {
                         vec4 param_7 = texels;
                         float param_8 = z_min;
                         vec3 param_9 = query;
                         vec2 param_10 = receiver_slope;
-                        _716 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _721 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _716 = _704;
+                        _721 = _709;
                     }
-                    if (_716)
+                    if (_721)
                     {
-                        bool _722 = range.y < limit;
-                        bool _730;
-                        if (_722)
+                        bool _727 = range.y < limit;
+                        bool _735;
+                        if (_727)
                         {
-                            _730 = range.x == range.y;
+                            _735 = range.x == range.y;
                         }
                         else
                         {
-                            _730 = _722;
+                            _735 = _727;
                         }
-                        if (_730)
+                        if (_735)
                         {
                             vec4 param_11 = texels;
                             float param_12 = z_min;
@@ -320,8 +340,8 @@ float shadow_visibility(vec3 query)
 {
     float param = query.z;
     float limit = min(shadow_reference(param), query.z * params.sampling.z);
-    vec2 _794 = minmax_top_node();
-    float map_min = _794.x;
+    vec2 _799 = minmax_top_node();
+    float map_min = _799.x;
     if (!(map_min < limit))
     {
         return 1.0;
@@ -337,8 +357,8 @@ float shadow_visibility(vec3 query)
     vec3 param_4 = query;
     vec4 param_5 = window;
     float param_6 = limit;
-    float _824 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0, 1.0 - (_824 / backprojection_whole_light_area()));
+    float _829 = backprojection_area(param_4, param_5, param_6);
+    return max(0.0, 1.0 - (_829 / backprojection_whole_light_area()));
 }
 
 void main()
@@ -346,8 +366,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _842 = shadow_visibility(param);
-    float visible = _842;
+    float _847 = shadow_visibility(param);
+    float visible = _847;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

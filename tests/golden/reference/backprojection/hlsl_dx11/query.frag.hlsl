@@ -5,6 +5,7 @@ struct MinmaxCursor
     float span;
     float2 first_root;
     float start;
+    bool climbed;
     bool done;
 };
 
@@ -108,6 +109,7 @@ MinmaxCursor minmax_begin(float4 window)
     cursor.start = cursor.level;
     cursor.first_root = floor(window.xy / cursor.span.xx);
     cursor.node = cursor.first_root;
+    cursor.climbed = false;
     cursor.done = false;
     return cursor;
 }
@@ -142,8 +144,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _360 = minmax_node(param, param_1);
-    return _360;
+    float2 _362 = minmax_node(param, param_1);
+    return _362;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -176,19 +178,19 @@ bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 r
     float3 param_2 = query;
     float2 param_3 = receiver_slope;
     float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _558 = params_light.x.xx;
-    bool _560 = all(bool2(rect.xy.x <= _558.x, rect.xy.y <= _558.y));
-    bool _571;
-    if (_560)
+    float2 _552 = params_light.x.xx;
+    bool _554 = all(bool2(rect.xy.x <= _552.x, rect.xy.y <= _552.y));
+    bool _565;
+    if (_554)
     {
-        float2 _568 = (-params_light.x).xx;
-        _571 = all(bool2(rect.zw.x >= _568.x, rect.zw.y >= _568.y));
+        float2 _562 = (-params_light.x).xx;
+        _565 = all(bool2(rect.zw.x >= _562.x, rect.zw.y >= _562.y));
     }
     else
     {
-        _571 = _560;
+        _565 = _554;
     }
-    return _571;
+    return _565;
 }
 
 float backprojection_light_area(float4 rect)
@@ -206,39 +208,43 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    float2 _391;
-    [loop]
-    for (int k = 0; k <= 16; k++)
+    bool root = cursor.level >= cursor.start;
+    float2 _385;
+    if (root)
     {
-        bool root = cursor.level >= cursor.start;
-        if (root)
-        {
-            _391 = cursor.first_root;
-        }
-        else
-        {
-            _391 = floor(cursor.node * 0.5f) * 2.0f;
-        }
-        float2 first_sibling = _391;
-        float2 offset = cursor.node - first_sibling;
-        if (offset.x < 0.5f)
-        {
-            cursor.node.x += 1.0f;
-            break;
-        }
+        _385 = cursor.first_root;
+    }
+    else
+    {
+        _385 = floor(cursor.node * 0.5f) * 2.0f;
+    }
+    float2 first_sibling = _385;
+    float2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5f)
+    {
+        cursor.node.x += 1.0f;
+    }
+    else
+    {
         if (offset.y < 0.5f)
         {
             cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
-            break;
         }
-        if (root)
+        else
         {
-            cursor.done = true;
-            break;
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5f);
+                cursor.level += 1.0f;
+                cursor.span *= 2.0f;
+                cursor.climbed = true;
+            }
         }
-        cursor.node = floor(cursor.node * 0.5f);
-        cursor.level += 1.0f;
-        cursor.span *= 2.0f;
     }
 }
 
@@ -255,51 +261,64 @@ float backprojection_area(float3 query, float4 window, float limit)
     for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
         [loop]
-        for (int loop_middle = 0; all(bool2(loop_middle < 65, !cursor.done)); loop_middle++)
+        for (int loop_middle = 0; all(bool2(loop_middle < 129, !cursor.done)); loop_middle++)
         {
             [loop]
             for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
             {
-                visits += 1.0f;
                 bool descend = false;
-                MinmaxCursor param_2 = cursor;
-                float4 param_3 = window;
-                float4 param_4 = minmax_node_part(param_2, param_3);
-                if (!minmax_window_empty(param_4))
+                if (!cursor.climbed)
+                {
+                    visits += 1.0f;
+                }
+                bool _678 = !cursor.climbed;
+                bool _689;
+                if (_678)
+                {
+                    MinmaxCursor param_2 = cursor;
+                    float4 param_3 = window;
+                    float4 param_4 = minmax_node_part(param_2, param_3);
+                    _689 = !minmax_window_empty(param_4);
+                }
+                else
+                {
+                    _689 = _678;
+                }
+                if (_689)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _690 = minmax_cursor_read(param_5);
-                    float2 range = _690;
+                    float2 _695 = minmax_cursor_read(param_5);
+                    float2 range = _695;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params_sampling.w;
-                    bool _704 = range.x < limit;
-                    bool _716;
-                    if (_704)
+                    bool _709 = range.x < limit;
+                    bool _721;
+                    if (_709)
                     {
                         float4 param_7 = texels;
                         float param_8 = z_min;
                         float3 param_9 = query;
                         float2 param_10 = receiver_slope;
-                        _716 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _721 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _716 = _704;
+                        _721 = _709;
                     }
-                    if (_716)
+                    if (_721)
                     {
-                        bool _722 = range.y < limit;
-                        bool _730;
-                        if (_722)
+                        bool _727 = range.y < limit;
+                        bool _735;
+                        if (_727)
                         {
-                            _730 = range.x == range.y;
+                            _735 = range.x == range.y;
                         }
                         else
                         {
-                            _730 = _722;
+                            _735 = _727;
                         }
-                        if (_730)
+                        if (_735)
                         {
                             float4 param_11 = texels;
                             float param_12 = z_min;
@@ -337,8 +356,8 @@ float shadow_visibility(float3 query)
 {
     float param = query.z;
     float limit = min(shadow_reference(param), query.z * params_sampling.z);
-    float2 _794 = minmax_top_node();
-    float map_min = _794.x;
+    float2 _799 = minmax_top_node();
+    float map_min = _799.x;
     if (!(map_min < limit))
     {
         return 1.0f;
@@ -354,8 +373,8 @@ float shadow_visibility(float3 query)
     float3 param_4 = query;
     float4 param_5 = window;
     float param_6 = limit;
-    float _824 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0f, 1.0f - (_824 / backprojection_whole_light_area()));
+    float _829 = backprojection_area(param_4, param_5, param_6);
+    return max(0.0f, 1.0f - (_829 / backprojection_whole_light_area()));
 }
 
 void frag_main()
@@ -363,8 +382,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _842 = shadow_visibility(param);
-    float visible = _842;
+    float _847 = shadow_visibility(param);
+    float visible = _847;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -9,6 +9,7 @@ struct MinmaxCursor
     float span;
     vec2 first_root;
     float start;
+    bool climbed;
     bool done;
 };
 
@@ -72,6 +73,7 @@ MinmaxCursor minmax_begin(vec4 window)
     cursor.start = cursor.level;
     cursor.first_root = floor(window.xy / vec2(cursor.span));
     cursor.node = cursor.first_root;
+    cursor.climbed = false;
     cursor.done = false;
     return cursor;
 }
@@ -106,8 +108,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _307 = minmax_node(param, param_1);
-    return _307;
+    vec2 _309 = minmax_node(param, param_1);
+    return _309;
 }
 
 float minmax_texel_count(vec4 part)
@@ -124,38 +126,43 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    vec2 _338;
-    for (int k = 0; k <= 16; k++)
+    bool root = cursor.level >= cursor.start;
+    vec2 _332;
+    if (root)
     {
-        bool root = cursor.level >= cursor.start;
-        if (root)
-        {
-            _338 = cursor.first_root;
-        }
-        else
-        {
-            _338 = floor(cursor.node * 0.5) * 2.0;
-        }
-        vec2 first_sibling = _338;
-        vec2 offset = cursor.node - first_sibling;
-        if (offset.x < 0.5)
-        {
-            cursor.node.x += 1.0;
-            break;
-        }
+        _332 = cursor.first_root;
+    }
+    else
+    {
+        _332 = floor(cursor.node * 0.5) * 2.0;
+    }
+    vec2 first_sibling = _332;
+    vec2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5)
+    {
+        cursor.node.x += 1.0;
+    }
+    else
+    {
         if (offset.y < 0.5)
         {
             cursor.node = vec2(first_sibling.x, cursor.node.y + 1.0);
-            break;
         }
-        if (root)
+        else
         {
-            cursor.done = true;
-            break;
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5);
+                cursor.level += 1.0;
+                cursor.span *= 2.0;
+                cursor.climbed = true;
+            }
         }
-        cursor.node = floor(cursor.node * 0.5);
-        cursor.level += 1.0;
-        cursor.span *= 2.0;
     }
 }
 
@@ -182,8 +189,18 @@ float minmax_pcf_count(vec2 first, float reference)
                 vec4 param_5 = window;
                 vec4 part = minmax_node_part(param_4, param_5);
                 bool descend = false;
-                vec4 param_6 = part;
-                if (!minmax_window_empty(param_6))
+                bool _462 = !cursor.climbed;
+                bool _469;
+                if (_462)
+                {
+                    vec4 param_6 = part;
+                    _469 = !minmax_window_empty(param_6);
+                }
+                else
+                {
+                    _469 = _462;
+                }
+                if (_469)
                 {
                     MinmaxCursor param_7 = cursor;
                     vec2 _475 = minmax_cursor_read(param_7);

@@ -5,6 +5,7 @@ struct MinmaxCursor
     float span;
     float2 first_root;
     float start;
+    bool climbed;
     bool done;
 };
 
@@ -83,6 +84,7 @@ MinmaxCursor minmax_begin(float4 window)
     cursor.start = cursor.level;
     cursor.first_root = floor(window.xy / cursor.span.xx);
     cursor.node = cursor.first_root;
+    cursor.climbed = false;
     cursor.done = false;
     return cursor;
 }
@@ -117,8 +119,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _307 = minmax_node(param, param_1);
-    return _307;
+    float2 _309 = minmax_node(param, param_1);
+    return _309;
 }
 
 float minmax_texel_count(float4 part)
@@ -135,39 +137,43 @@ void minmax_descend(inout MinmaxCursor cursor)
 
 void minmax_next(inout MinmaxCursor cursor)
 {
-    float2 _338;
-    [loop]
-    for (int k = 0; k <= 16; k++)
+    bool root = cursor.level >= cursor.start;
+    float2 _332;
+    if (root)
     {
-        bool root = cursor.level >= cursor.start;
-        if (root)
-        {
-            _338 = cursor.first_root;
-        }
-        else
-        {
-            _338 = floor(cursor.node * 0.5f) * 2.0f;
-        }
-        float2 first_sibling = _338;
-        float2 offset = cursor.node - first_sibling;
-        if (offset.x < 0.5f)
-        {
-            cursor.node.x += 1.0f;
-            break;
-        }
+        _332 = cursor.first_root;
+    }
+    else
+    {
+        _332 = floor(cursor.node * 0.5f) * 2.0f;
+    }
+    float2 first_sibling = _332;
+    float2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5f)
+    {
+        cursor.node.x += 1.0f;
+    }
+    else
+    {
         if (offset.y < 0.5f)
         {
             cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
-            break;
         }
-        if (root)
+        else
         {
-            cursor.done = true;
-            break;
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5f);
+                cursor.level += 1.0f;
+                cursor.span *= 2.0f;
+                cursor.climbed = true;
+            }
         }
-        cursor.node = floor(cursor.node * 0.5f);
-        cursor.level += 1.0f;
-        cursor.span *= 2.0f;
     }
 }
 
@@ -197,8 +203,18 @@ float minmax_pcf_count(float2 first, float reference)
                 float4 param_5 = window;
                 float4 part = minmax_node_part(param_4, param_5);
                 bool descend = false;
-                float4 param_6 = part;
-                if (!minmax_window_empty(param_6))
+                bool _462 = !cursor.climbed;
+                bool _469;
+                if (_462)
+                {
+                    float4 param_6 = part;
+                    _469 = !minmax_window_empty(param_6);
+                }
+                else
+                {
+                    _469 = _462;
+                }
+                if (_469)
                 {
                     MinmaxCursor param_7 = cursor;
                     float2 _475 = minmax_cursor_read(param_7);
