@@ -76,15 +76,17 @@ struct Disk {
 };
 
 // The keys that select a variant of a technique. Unused keys stay empty.
+// Every member has an initializer, so that designated initializers naming
+// only some keys ({.kernel = 8}) raise no missing-initializer warning.
 struct VariantKeys {
-  std::optional<int> kernel;             // pcf_grid: odd K; minmax_pcf: any K
-  std::optional<int> blocker_samples;    // pcss
-  std::optional<int> pcf_samples;        // pcf_poisson, pcss, pcss_minmax
-  std::optional<std::string> disk;       // disk family name: pcf_poisson, pcss, pcss_minmax
-  std::optional<std::string> traversal;  // minmax_pcf, backprojection: "brute_force"; unset = mip
-  std::optional<int> max_nodes;          // backprojection: traversal work bound; unset = default
-  std::optional<int> blur_radius;        // screen_blur: Gaussian taps each side (sigma = R / 2)
-  std::optional<bool> depth_aware;       // screen_blur: true or unset (a manifest's false)
+  std::optional<int> kernel = std::nullopt;           // pcf_grid: odd K; minmax_pcf: any K
+  std::optional<int> blocker_samples = std::nullopt;  // pcss
+  std::optional<int> pcf_samples = std::nullopt;      // pcf_poisson, pcss, pcss_minmax
+  std::optional<std::string> disk = std::nullopt;     // disk family: pcf_poisson, pcss, pcss_minmax
+  std::optional<std::string> traversal = std::nullopt;  // minmax_pcf, backprojection: "brute_force"
+  std::optional<int> max_nodes = std::nullopt;     // backprojection: work bound; unset = default
+  std::optional<int> blur_radius = std::nullopt;   // screen_blur: taps each side (sigma = R / 2)
+  std::optional<bool> depth_aware = std::nullopt;  // screen_blur: true, or unset for false
 };
 
 // The keys' names, in the one order every listing of keys follows.

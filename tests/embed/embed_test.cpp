@@ -1,0 +1,109 @@
+// The embedded shaders against the library they came from: every program
+// of index.json is found, by name and by technique and keys, with the
+// files' bytes, the SPIR-V words, the bytecode and the reflection.
+#include "penumbra/compiler/embed.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "embed_test/shaders.hpp"
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/support/file.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+const Library& built() {
+  static const Library library = [] {
+    auto loaded = load_library(PENUMBRA_EMBEDDED_LIBRARY);
+    EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
+    return loaded.ok() ? std::move(*loaded) : Library{};
+  }();
+  return library;
+}
+
+std::string file_text(const std::string& relative) {
+  auto text = read_file(built().root / relative);
+  EXPECT_TRUE(text.ok()) << relative;
+  return text.ok() ? *text : std::string();
+}
+
+void expect_stage(const shaders::StageCode& code, Target target, const std::string& path,
+                  const std::optional<BytecodeFile>& bytecode) {
+  if (target == Target::spirv) {
+    auto words = read_spirv_file(built().root / path);
+    ASSERT_TRUE(words.ok());
+    EXPECT_TRUE(std::ranges::equal(code.spirv, *words)) << path;
+    EXPECT_TRUE(code.text.empty());
+  } else {
+    EXPECT_EQ(code.text, file_text(path)) << path;
+    EXPECT_TRUE(code.spirv.empty());
+  }
+  if (!bytecode) {
+    EXPECT_TRUE(code.bytecode.empty()) << path;
+    return;
+  }
+  const std::string bytes = file_text(bytecode->path);
+  EXPECT_TRUE(std::ranges::equal(code.bytecode, bytes, {}, {}, [](char c) {
+    return static_cast<std::uint8_t>(c);
+  })) << bytecode->path;
+  EXPECT_EQ(code.profile, bytecode->profile);
+}
+
+TEST(Embedded, EveryProgramOfTheLibraryWithItsFilesAndReflection) {
+  std::size_t programs = 0, with_bytecode = 0;
+  for (const LibraryVariant& entry : built().variants) {
+    for (const auto& [pass, by_target] : entry.passes) {
+      for (const auto& [target, files] : by_target) {
+        SCOPED_TRACE(entry.variant.name + " " + std::string(to_string(target)) + " " +
+                     std::string(to_string(pass)));
+        const shaders::Program* program =
+            embed_test::library().find(entry.variant.name, target, pass);
+        ASSERT_NE(program, nullptr);
+        EXPECT_EQ(program->variant, entry.variant.name);
+        expect_stage(program->vertex, target, files.vert, files.vert_bytecode);
+        expect_stage(program->fragment, target, files.frag, files.frag_bytecode);
+        EXPECT_EQ(nlohmann::json::parse(program->reflection),
+                  nlohmann::json(entry.reflection.at(pass).at(target)));
+        ++programs;
+        with_bytecode += files.frag_bytecode.has_value();
+      }
+    }
+  }
+  EXPECT_EQ(embed_test::library().programs().size(), programs);
+  EXPECT_GT(programs, 80u);
+  EXPECT_GT(with_bytecode, 20u);  // the Direct3D targets, built with vkd3d-compiler
+}
+
+TEST(Embedded, FoundByTechniqueAndKeys) {
+  const shaders::Program* pcss = embed_test::find(
+      Technique::pcss, {.blocker_samples = 16, .pcf_samples = 16, .disk = "whitepaper16"},
+      Target::hlsl_dx10);
+  ASSERT_NE(pcss, nullptr);
+  EXPECT_EQ(pcss->variant, "pcss_b16_p16_whitepaper16");
+  EXPECT_EQ(pcss->fragment.profile, "ps_4_0");
+  EXPECT_THAT(pcss->fragment.text, ::testing::HasSubstr("SampleCmpLevelZero"));
+  const shaders::Program* depth = embed_test::find(Technique::minmax_pcf, {.kernel = 8},
+                                                   Target::spirv, PassKind::minmax_reduce);
+  ASSERT_NE(depth, nullptr);
+  ASSERT_FALSE(depth->fragment.spirv.empty());
+  EXPECT_EQ(depth->fragment.spirv[0], 0x07230203u);  // SPIR-V's magic
+  // Keys, targets and passes the library does not hold.
+  EXPECT_EQ(embed_test::find(Technique::pcss,
+                             {.blocker_samples = 32, .pcf_samples = 16, .disk = "whitepaper16"},
+                             Target::hlsl_dx10),
+            nullptr);
+  EXPECT_EQ(embed_test::find(Technique::hard, {}, Target::hlsl_dx9, PassKind::blur_h), nullptr);
+}
+
+TEST(EmbedLibrary, ANameThatIsNoIdentifierIsRefused) {
+  const auto result = embed_library(built(), ::testing::TempDir(), {.name = "3d-shaders"});
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error().where, "--name");
+  EXPECT_THAT(result.error().message, ::testing::HasSubstr("not a C++ identifier"));
+}
+
+}  // namespace
+}  // namespace penumbra::testing
