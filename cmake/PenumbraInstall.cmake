@@ -1,31 +1,62 @@
-# Install the CLI and export the libraries for consumers (find_package(penumbra)).
+# `cmake --install build --prefix P`: bin/penumbra, the headers, the static
+# libraries, share/penumbra/shaderlib and a relocatable CMake package,
+# find_package(Penumbra CONFIG [COMPONENTS compiler runtime]) from
+# P/lib/cmake/Penumbra:
+#   compiler  Penumbra::compiler (with Penumbra::support, Penumbra::model)
+#             and the executable Penumbra::penumbra; always loaded; needs
+#             glslang, SPIRV-Tools, SPIRV-Cross and nlohmann_json.
+#   runtime   Penumbra::runtime: Penumbra::vulkan, Penumbra::verify,
+#             Penumbra::reference and Penumbra::gl where built; needs Vulkan
+#             (and OpenGL/EGL with gl), looked up only when requested.
 include(CMakePackageConfigHelpers)
-set(_targets penumbra_support penumbra_model penumbra_shaderlib_sources penumbra_compiler penumbra_reference)
-if(PENUMBRA_BUILD_GL)
-  list(APPEND _targets penumbra_gl)
-endif()
+
+set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
+set(PENUMBRA_INSTALL_SHADERLIBDIR ${CMAKE_INSTALL_DATADIR}/penumbra/shaderlib)
+
+set_target_properties(penumbra_cli PROPERTIES EXPORT_NAME penumbra)
+install(TARGETS penumbra_support penumbra_model penumbra_shaderlib_sources penumbra_compiler
+        EXPORT PenumbraCompilerTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS penumbra_cli EXPORT PenumbraCompilerTargets
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY support/include/ model/include/ compiler/include/
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT PenumbraCompilerTargets NAMESPACE Penumbra::
+        DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
+
+# The shader library's sources as `penumbra build` embeds them, for engines
+# that read or ship them (Penumbra_SHADERLIB_DIR).
+foreach(_file IN LISTS PENUMBRA_SHADERLIB_FILES)
+  get_filename_component(_dir ${_file} DIRECTORY)
+  install(FILES shaderlib/${_file} DESTINATION ${PENUMBRA_INSTALL_SHADERLIBDIR}/${_dir})
+endforeach()
+
 if(PENUMBRA_BUILD_RUNTIME)
-  list(APPEND _targets penumbra_vulkan penumbra_verify)
+  add_library(penumbra_runtime INTERFACE)
+  add_library(penumbra::runtime ALIAS penumbra_runtime)
+  set_target_properties(penumbra_runtime PROPERTIES EXPORT_NAME runtime)
+  target_link_libraries(penumbra_runtime INTERFACE penumbra_vulkan penumbra_verify
+                                                   penumbra_reference)
+  set(_runtime_targets penumbra_runtime penumbra_vulkan penumbra_verify penumbra_reference)
+  set(_runtime_headers engines/vulkan/include/ verify/include/ reference/include/)
+  if(PENUMBRA_BUILD_GL)
+    target_link_libraries(penumbra_runtime INTERFACE penumbra_gl)
+    list(APPEND _runtime_targets penumbra_gl)
+    list(APPEND _runtime_headers engines/gl/include/)
+  endif()
+  install(TARGETS ${_runtime_targets} EXPORT PenumbraRuntimeTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY ${_runtime_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT PenumbraRuntimeTargets NAMESPACE Penumbra::
+          DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 endif()
-install(TARGETS ${_targets} EXPORT penumbraTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(TARGETS penumbra_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY support/include/ model/include/ compiler/include/ reference/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-if(PENUMBRA_BUILD_RUNTIME)
-  install(DIRECTORY engines/vulkan/include/ verify/include/
-          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-endif()
-if(PENUMBRA_BUILD_GL)
-  install(DIRECTORY engines/gl/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-endif()
-install(EXPORT penumbraTargets NAMESPACE penumbra::
-        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/penumbra)
-configure_package_config_file(cmake/penumbraConfig.cmake.in
-  ${CMAKE_CURRENT_BINARY_DIR}/penumbraConfig.cmake
-  INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/penumbra)
-write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/penumbraConfigVersion.cmake
+
+configure_package_config_file(cmake/PenumbraConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/PenumbraConfig.cmake
+  INSTALL_DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR}
+  PATH_VARS PENUMBRA_INSTALL_SHADERLIBDIR)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/PenumbraConfigVersion.cmake
   COMPATIBILITY SameMajorVersion)
-install(FILES ${CMAKE_CURRENT_BINARY_DIR}/penumbraConfig.cmake
-              ${CMAKE_CURRENT_BINARY_DIR}/penumbraConfigVersion.cmake
-        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/penumbra)
+install(FILES ${PROJECT_BINARY_DIR}/PenumbraConfig.cmake
+              ${PROJECT_BINARY_DIR}/PenumbraConfigVersion.cmake
+        DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})

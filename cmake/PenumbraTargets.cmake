@@ -13,12 +13,14 @@ function(penumbra_target_defaults target)
 endfunction()
 
 # penumbra_add_library(NAME ALIAS SOURCES...): a static library with its
-# public headers in include/, private ones in src/, penumbra::ALIAS both in
-# the tree and installed (find_package(penumbra)).
+# public headers in include/, private ones in src/, penumbra::ALIAS in the
+# tree and Penumbra::ALIAS installed (cmake/PenumbraInstall.cmake). C++20 is a
+# usage requirement: the public headers need it.
 function(penumbra_add_library name alias)
   add_library(${name} STATIC ${ARGN})
   add_library(penumbra::${alias} ALIAS ${name})
   set_target_properties(${name} PROPERTIES EXPORT_NAME ${alias})
+  target_compile_features(${name} PUBLIC cxx_std_20)
   target_include_directories(${name}
     PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>

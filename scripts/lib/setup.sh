@@ -53,14 +53,15 @@ install_hlsl_compiler() {
   export PENUMBRA_HLSL_COMPILER="$wrapper"
 }
 
-# configure_and_build BUILD_DIR [TARGET]: configures (tests on, with the HLSL
-# compiler of install_hlsl_compiler when there is one) and builds TARGET, or
-# everything.
+# configure_and_build BUILD_DIR [TARGET]: configures (tests on, warnings as
+# errors, with the HLSL compiler of install_hlsl_compiler when there is one)
+# and builds TARGET, or everything.
 configure_and_build() {
   local build_dir="$1"
   local target="${2:-all}"
   local hlsl=()
   if [ -n "${PENUMBRA_HLSL_COMPILER:-}" ]; then hlsl=("-DPENUMBRA_HLSL_COMPILER=$PENUMBRA_HLSL_COMPILER"); fi
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON "${hlsl[@]}"
+  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON \
+    -DPENUMBRA_WERROR=ON "${hlsl[@]}"
   cmake --build "$build_dir" --parallel "$(nproc)" --target "$target"
 }
