@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <iostream>
+#include <thread>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -7,9 +8,15 @@
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "select_variants.hpp"
 
 namespace penumbra::cli {
 namespace {
+
+// -j's default: one shader per core.
+int default_jobs() {
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 1024u));
+}
 
 bool has_hlsl(const std::vector<Variant>& variants) {
   return std::ranges::any_of(variants, [](const Variant& v) {
@@ -23,24 +30,43 @@ void add_build_command(CLI::App& app, int& exit_code) {
   struct Args {
     std::string manifest;
     std::string out;
-    int jobs = 1;
+    int jobs = default_jobs();
+    std::vector<std::string> variants;
+    std::vector<std::string> targets;
     std::string hlsl_compiler;
     int hlsl_timeout = 60;
+    bool keep_going = false;
+    bool quiet = false;
     bool verbose = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("build", "Compile every variant of a manifest into OUT");
   cmd->add_option("manifest", args->manifest, "Permutation manifest (JSON)")->required();
   cmd->add_option("-o,--out", args->out, "Output directory (replaced only on success)")->required();
-  cmd->add_option("-j,--jobs", args->jobs, "Shaders compiled in parallel")
-      ->check(CLI::Range(1, 64));
+  cmd->add_option("-j,--jobs", args->jobs,
+                  "Shaders compiled in parallel (1..1024; default: the number of cores)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--variant", args->variants,
+                  "Build only this variant of the manifest (repeatable)");
+  cmd->add_option("--target", args->targets, "Build only for this target (repeatable)");
+  cmd->add_flag("-k,--keep-going", args->keep_going,
+                "After a shader fails, compile the others and report every failure "
+                "(OUT is still written only when all succeed)");
   cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
   cmd->add_option("--hlsl-timeout", args->hlsl_timeout,
                   "Seconds one HLSL file may take to compile to bytecode")
       ->check(CLI::Range(1, 86400));
-  cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
+  auto* quiet =
+      cmd->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (no summary line)");
+  cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes")->excludes(quiet);
   cmd->callback([args, &exit_code] {
-    auto variants = load_variants(args->manifest);
+    auto all_variants = load_variants(args->manifest);
+    if (!all_variants) {
+      exit_code = report(all_variants.error());
+      return;
+    }
+    auto variants =
+        select_variants(std::move(*all_variants), args->variants, args->targets, args->manifest);
     if (!variants) {
       exit_code = report(variants.error());
       return;
@@ -52,15 +78,18 @@ void add_build_command(CLI::App& app, int& exit_code) {
     }
     const BuildOptions options{
         .jobs = args->jobs,
-        .hlsl = {.compiler = *compiler, .timeout = std::chrono::seconds(args->hlsl_timeout)}};
+        .hlsl = {.compiler = *compiler, .timeout = std::chrono::seconds(args->hlsl_timeout)},
+        .keep_going = args->keep_going};
     auto summary = build_library(*variants, args->out, options, stderr_diagnostics(args->verbose));
     if (!summary) {
       exit_code = report(summary.error());
       return;
     }
-    std::cout << "built " << summary->variants << " variants (" << summary->files
-              << " shader files, " << summary->bytecode << " bytecode files) into " << args->out
-              << "\n";
+    if (!args->quiet) {
+      std::cout << "built " << summary->variants << " variants (" << summary->files
+                << " shader files, " << summary->bytecode << " bytecode files) into " << args->out
+                << "\n";
+    }
     if (compiler->empty() && has_hlsl(*variants)) {
       std::cerr << "penumbra: no Direct3D bytecode made: no HLSL compiler (give --hlsl-compiler "
                    "PATH or PENUMBRA_HLSL_COMPILER; scripts/lib/setup.sh installs vkd3d-compiler "

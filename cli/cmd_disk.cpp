@@ -6,18 +6,32 @@
 #include "penumbra/compiler/disk.hpp"
 
 namespace penumbra::cli {
+namespace {
+
+constexpr const char* kWhitepaper = "whitepaper";  // the built-in 16 points, not generated
+
+}  // namespace
 
 void add_disk_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<DiskOptions>();
   CLI::App* cmd = app.add_subcommand("disk", "Print a Poisson disk as JSON");
-  cmd->add_option("--count", options->count, "Number of points (1..128)")->required();
-  cmd->add_option("--seed", options->seed, "Generator seed");
+  cmd->add_option("--count", options->count, "Number of points (1..128; whitepaper: 16)")
+      ->capture_default_str();
+  cmd->add_option("--seed", options->seed, "Generator seed")->capture_default_str();
   cmd->add_option("--method", options->method,
-                  "Generator: sample_elimination, best_candidate, or whitepaper (16 points)");
+                  "Generator, or whitepaper for the NVIDIA PCSS whitepaper's 16 points")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"sample_elimination", "best_candidate", kWhitepaper}));
   cmd->callback([options, &exit_code] {
-    auto disk = options->method == "whitepaper" && options->count == 16
-                    ? Result<Disk>(whitepaper16())
-                    : generate_disk(*options);
+    if (options->method == kWhitepaper && options->count != 16) {
+      exit_code =
+          report(make_error(Error::Kind::bad_input, "--count " + std::to_string(options->count),
+                            "the whitepaper disk has exactly 16 points; give --count 16 "
+                            "or leave --count out"));
+      return;
+    }
+    auto disk =
+        options->method == kWhitepaper ? Result<Disk>(whitepaper16()) : generate_disk(*options);
     if (!disk) {
       exit_code = report(disk.error());
       return;

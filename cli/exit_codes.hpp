@@ -10,7 +10,9 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitCheckFailed = 1;  // a verification check failed
 inline constexpr int kExitBadInput = 2;     // bad input or usage, with a message
 
-// Prints "penumbra: error: <where>: <message>" to stderr; returns kExitBadInput.
+// Prints "penumbra: error: <where>: <message>" to stderr, or, when `where`
+// starts with FILE:LINE:COL, "FILE:LINE:COL: error: <rest of where>:
+// <message>"; returns kExitBadInput.
 int report(const Error& error);
 
 // Diagnostics to stderr, notes only when `verbose`.

@@ -71,6 +71,31 @@ TEST_F(BuildErrors, SampleCountOver128) {
   EXPECT_THAT(err, HasSubstr("1..128"));
 }
 
+// Manifest errors lead with FILE:LINE:COL of the offending value, as a
+// compiler's do.
+TEST_F(BuildErrors, ErrorsPointAtTheLineAndColumnOfTheValue) {
+  const std::string err = build_fails(
+      "{\"schema\": 1,\n"
+      " \"targets\": [\"spirv\"],\n"
+      " \"sets\": [{\"technique\": [\"hard\"]},\n"
+      "          {\"technique\": \"minmax_pcf\", \"kernel\": 8, \"traversal\": \"foo\"}]}\n");
+  EXPECT_THAT(err, HasSubstr("manifest.json:4:65: error: /sets/1/traversal: unknown traversal "
+                             "'foo'"));
+  EXPECT_THAT(err, ::testing::Not(HasSubstr("penumbra: error")));
+}
+
+TEST_F(BuildErrors, AValueInsideAListIsPointedAt) {
+  const std::string err = build_fails(
+      "{\"schema\": 1,\n \"targets\": [\"spirv\",\n   \"metal\"],\n"
+      " \"sets\": [{\"technique\": [\"hard\"]}]}");
+  EXPECT_THAT(err, HasSubstr("manifest.json:3:4: error: /targets/1: unknown target 'metal'"));
+}
+
+TEST_F(BuildErrors, MalformedJsonIsPointedAt) {
+  const std::string err = build_fails("{\"schema\": 1,\n  \"sets\": [}");
+  EXPECT_THAT(err, HasSubstr("manifest.json:2:12: error: malformed JSON"));
+}
+
 TEST_F(BuildErrors, MissingManifestFile) {
   const auto out = dir.path() / "out";
   const CliRun run = run_penumbra("build '" + (dir.path() / "absent.json").string() + "' -o '" +

@@ -38,14 +38,15 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
   return jobs;
 }
 
-// Runs all jobs on `threads` workers and stops early after a failure. Returns
-// the error of the first failing job in plan order among those that ran.
-Status run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int threads) {
+// Runs all jobs on `threads` workers; unless `keep_going`, stops early after
+// a failure. The errors of the failed jobs, in plan order.
+std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int threads,
+                            bool keep_going) {
   std::vector<std::optional<Error>> errors(jobs.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   auto worker = [&] {
-    for (std::size_t i = next++; i < jobs.size() && !failed; i = next++) {
+    for (std::size_t i = next++; i < jobs.size() && (keep_going || !failed); i = next++) {
       try {
         if (Status status = pipeline.run(jobs[i]); !status) errors[i] = status.error();
       } catch (const std::exception& e) {  // a library below us threw: report, never terminate
@@ -59,10 +60,19 @@ Status run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int thre
     for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
     worker();
   }
+  std::vector<Error> failures;
   for (auto& error : errors) {
-    if (error) return *error;
+    if (error) failures.push_back(std::move(*error));
   }
-  return {};
+  return failures;
+}
+
+// --keep-going's summary: how many shaders failed, of how many.
+Error keep_going_error(const std::vector<Error>& failures, std::size_t jobs,
+                       const std::filesystem::path& out) {
+  return make_error(failures.front().kind, out.string(),
+                    std::to_string(failures.size()) + " of " + std::to_string(jobs) +
+                        " shaders failed (each reported above); not written, left as it was");
 }
 
 // OUT is replaced wholesale, so it must be absent, empty, or a library that
@@ -102,14 +112,22 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
   if (!staged) return staged.error();
 
   std::vector<ShaderJob> jobs = plan_jobs(variants);
-  const int threads = std::clamp(options.jobs, 1, 64);
+  // No more threads than shaders.
+  const int threads =
+      std::clamp(options.jobs, 1, static_cast<int>(std::max<std::size_t>(jobs.size(), 1)));
   diagnostics({Severity::note, out_dir.string(),
                "compiling " + std::to_string(jobs.size()) + " shaders for " +
                    std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
                    " threads"});
-  PENUMBRA_TRY(run_jobs(jobs, Pipeline(staged->staging(), options.hlsl), threads));
+  std::vector<Error> failures =
+      run_jobs(jobs, Pipeline(staged->staging(), options.hlsl), threads, options.keep_going);
+  if (!failures.empty() && !options.keep_going) return failures.front();
   for (const ShaderJob& job : jobs) {
     for (const Diagnostic& d : job.diagnostics) diagnostics(d);
+  }
+  if (!failures.empty()) {
+    for (const Error& e : failures) diagnostics({Severity::error, e.where, e.message});
+    return keep_going_error(failures, jobs.size(), out_dir);
   }
 
   const std::string index = index_json(variants, jobs).dump(2) + "\n";

@@ -29,6 +29,9 @@ struct HlslCompilerOptions {
 struct BuildOptions {
   int jobs = 1;                   // shaders compiled in parallel (penumbra build -j)
   HlslCompilerOptions hlsl = {};  // the bytecode stage; off when hlsl.compiler is empty
+  // After a shader fails, compile the rest anyway and report every failure
+  // (penumbra build --keep-going); OUT is still written only when all succeed.
+  bool keep_going = false;
 };
 
 struct BuildSummary {
@@ -39,7 +42,9 @@ struct BuildSummary {
 
 // Compiles everything into a staging directory and swaps it into `out_dir`
 // only when all of it succeeded: on error `out_dir` is left as it was.
-// `diagnostics` is called from the calling thread only.
+// Without keep_going the error is the first failing shader's; with it, every
+// failing shader is reported to `diagnostics` as an error and the returned
+// error counts them. `diagnostics` is called from the calling thread only.
 Result<BuildSummary> build_library(std::span<const Variant> variants,
                                    const std::filesystem::path& out_dir,
                                    const BuildOptions& options,

@@ -61,7 +61,8 @@ struct Manifest {
 };
 
 // Reads and validates a manifest file. Errors: io when the file cannot be
-// read; bad_input naming the file, the JSON path and what is allowed.
+// read; bad_input naming the file, the JSON path and what is allowed, and
+// where the offending value is: `where` is "FILE:LINE:COL: /json/path".
 Result<Manifest> load_manifest(const std::filesystem::path& path);
 
 // The same for manifest text; `source_name` stands for the file in messages.

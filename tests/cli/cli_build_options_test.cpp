@@ -1,0 +1,167 @@
+// `penumbra build`'s everyday options, run on the real executable: -j's
+// default, -q, --keep-going, and the --variant and --target filters.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <thread>
+
+#include "cli_harness.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+// Three cheap variants, for spirv and hlsl_dx10.
+constexpr const char* kManifest =
+    R"({"schema": 1, "targets": ["spirv", "hlsl_dx10"],)"
+    R"( "sets": [{"technique": ["hard"]}, {"technique": ["pcf_grid"], "kernel": [3, 5]}]})";
+
+class BuildOptions : public ::testing::Test {
+ protected:
+  ScratchDir dir{"build-options"};
+
+  // `penumbra build` of kManifest into out/ with `flags`, and no HLSL compiler
+  // unless `flags` names one.
+  CliRun build(const std::string& flags) {
+    const auto manifest = dir.write("manifest.json", kManifest);
+    const std::string home = (dir.path() / "home").string();
+    return run_penumbra(
+        "build '" + manifest.string() + "' -o '" + out().string() + "' " + flags,
+        "HOME='" + home + "' XDG_CACHE_HOME='" + home + "/cache' " + "PENUMBRA_HLSL_COMPILER=");
+  }
+  std::filesystem::path out() const { return dir.path() / "out"; }
+
+  // The variant names and targets of out/index.json.
+  std::vector<std::string> built_variants() const {
+    std::ifstream in(out() / "index.json");
+    const auto index = nlohmann::json::parse(in);
+    std::vector<std::string> names;
+    for (const auto& variant : index.at("variants")) names.push_back(variant.at("name"));
+    return names;
+  }
+
+  // An "HLSL compiler" that fails every file, saying which.
+  std::string failing_compiler() const {
+    const auto script = dir.write("failing-compiler.sh",
+                                  "#!/bin/sh\nfor a; do last=$a; done\n"
+                                  "echo \"$last:1:1: E5000: made to fail\" >&2\nexit 1\n");
+    std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+    return "--hlsl-compiler '" + script.string() + "'";
+  }
+};
+
+TEST_F(BuildOptions, JobsDefaultToTheNumberOfCores) {
+  const CliRun run = build("-v");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // "compiling N shaders for 3 variants on T threads": T is the cores, at
+  // most one thread per shader.
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(run.err, match,
+                                std::regex("compiling ([0-9]+) shaders .* on ([0-9]+) threads")))
+      << run.err;
+  const int shaders = std::stoi(match[1]);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  EXPECT_EQ(std::stoi(match[2]), std::min(cores, shaders));
+
+  const CliRun help = run_penumbra("build --help");
+  EXPECT_THAT(help.out, HasSubstr("default: the number of cores"));
+}
+
+TEST_F(BuildOptions, JobsZeroIsBadUsage) {
+  const CliRun run = build("-j 0");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--jobs"));
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(BuildOptions, QuietPrintsNoSummaryButKeepsWarnings) {
+  const CliRun normal = build("");
+  ASSERT_EQ(normal.exit_code, 0) << normal.err;
+  EXPECT_THAT(normal.out, HasSubstr("built 3 variants"));
+
+  const CliRun quiet = build("-q");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.out, "");
+  // Without an HLSL compiler the missing bytecode is still said.
+  EXPECT_THAT(quiet.err, HasSubstr("no Direct3D bytecode made"));
+  EXPECT_TRUE(std::filesystem::exists(out() / "index.json"));
+}
+
+TEST_F(BuildOptions, QuietAndVerboseExcludeEachOther) {
+  const CliRun run = build("-q -v");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(BuildOptions, WithoutKeepGoingTheFirstFailureStopsTheBuild) {
+  const CliRun run = build("-j 1 " + failing_compiler());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("made to fail"));
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(BuildOptions, KeepGoingReportsEveryFailingVariantAndWritesNothing) {
+  // A previous library stays as it was.
+  ASSERT_EQ(build("-q").exit_code, 0);
+  const auto index_before = std::filesystem::last_write_time(out() / "index.json");
+
+  const CliRun run = build("--keep-going " + failing_compiler());
+  EXPECT_EQ(run.exit_code, 2);
+  for (const char* variant : {"hard", "pcf_grid_k3", "pcf_grid_k5"}) {
+    EXPECT_THAT(run.err, HasSubstr("variant " + std::string(variant) + ", target hlsl_dx10"))
+        << "every failing variant is reported";
+  }
+  EXPECT_THAT(run.err, HasSubstr("shaders failed"));
+  EXPECT_THAT(run.out, Not(HasSubstr("built")));
+  EXPECT_EQ(std::filesystem::last_write_time(out() / "index.json"), index_before);
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "manifest.json" || name == "failing-compiler.sh" || name == "out")
+        << name << ": no staging folder left behind";
+  }
+}
+
+TEST_F(BuildOptions, VariantAndTargetFilters) {
+  const CliRun run = build("--variant pcf_grid_k5 --variant hard --target spirv");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("built 2 variants"));
+  auto names = built_variants();
+  std::ranges::sort(names);
+  EXPECT_EQ(names, (std::vector<std::string>{"hard", "pcf_grid_k5"}));
+  EXPECT_TRUE(std::filesystem::exists(out() / "spirv"));
+  EXPECT_FALSE(std::filesystem::exists(out() / "hlsl_dx10"));
+  // A build for spirv alone needs no HLSL compiler and says nothing of it.
+  EXPECT_THAT(run.err, Not(HasSubstr("no Direct3D bytecode made")));
+}
+
+TEST_F(BuildOptions, AnUnknownVariantIsBadInputListingTheAllowedNames) {
+  const CliRun run = build("--variant pcf_grid_k7");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--variant pcf_grid_k7"));
+  EXPECT_THAT(run.err, HasSubstr("pcf_grid_k3, pcf_grid_k5"));
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(BuildOptions, AnUnknownTargetIsBadInputListingTheAllowedTargets) {
+  const CliRun run = build("--target metal");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--target metal"));
+  EXPECT_THAT(run.err, HasSubstr("hlsl_dx9"));
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(BuildOptions, ATargetTheManifestDoesNotBuildIsBadInput) {
+  const CliRun run = build("--target glsl450");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("--target glsl450"));
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+}  // namespace
+}  // namespace penumbra::testing
