@@ -1,10 +1,14 @@
 # `cmake --install build --prefix P`: bin/penumbra, the headers, the static
 # libraries, share/penumbra/shaderlib and a relocatable CMake package,
-# find_package(Penumbra CONFIG [COMPONENTS compiler runtime]) from
+# find_package(Penumbra CONFIG [COMPONENTS shaders compiler runtime]) from
 # P/lib/cmake/Penumbra:
-#   compiler  Penumbra::compiler (with Penumbra::support, Penumbra::model)
-#             and the executable Penumbra::penumbra; always loaded; needs
-#             glslang, SPIRV-Tools, SPIRV-Cross and nlohmann_json.
+#   shaders   Penumbra::shaders (the lookup over embedded shaders, with
+#             Penumbra::model and Penumbra::support), the executable
+#             Penumbra::penumbra and penumbra_add_shader_library(); always
+#             loaded; needs nlohmann_json only.
+#   compiler  Penumbra::compiler; loaded when no component is named, or
+#             compiler or runtime is; needs glslang, SPIRV-Tools and
+#             SPIRV-Cross.
 #   runtime   Penumbra::runtime: Penumbra::vulkan, Penumbra::verify,
 #             Penumbra::reference and Penumbra::gl where built; needs Vulkan
 #             (and OpenGL/EGL with gl), looked up only when requested.
@@ -14,13 +18,17 @@ set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
 set(PENUMBRA_INSTALL_SHADERLIBDIR ${CMAKE_INSTALL_DATADIR}/penumbra/shaderlib)
 
 set_target_properties(penumbra_cli PROPERTIES EXPORT_NAME penumbra)
-install(TARGETS penumbra_support penumbra_model penumbra_shaderlib_sources penumbra_compiler
-        EXPORT PenumbraCompilerTargets
+install(TARGETS penumbra_support penumbra_model penumbra_shaders EXPORT PenumbraTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(TARGETS penumbra_cli EXPORT PenumbraCompilerTargets
-        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY support/include/ model/include/ compiler/include/
+install(TARGETS penumbra_cli EXPORT PenumbraTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY support/include/ model/include/ shaders/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT PenumbraTargets NAMESPACE Penumbra:: DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
+install(FILES cmake/PenumbraShaderLibrary.cmake DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
+
+install(TARGETS penumbra_shaderlib_sources penumbra_compiler EXPORT PenumbraCompilerTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY compiler/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT PenumbraCompilerTargets NAMESPACE Penumbra::
         DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 

@@ -61,6 +61,22 @@ if(NOT variants MATCHES "(^|;)hard(;|$)" OR NOT variants MATCHES "(^|;)pcf_grid"
   message(FATAL_ERROR "install test: `penumbra list` in the consumer's build wrote '${variants}'")
 endif()
 
+# The shaders component alone: penumbra_add_shader_library() generates at
+# build time with the installed executable, without glslang, Vulkan or GL
+# (finding any of them disabled fails the configure); a second build of the
+# untouched project runs nothing.
+set(embedded ${WORK_DIR}/embedded_consumer)
+run(${CMAKE_COMMAND} -S ${TEST_DIR}/embedded_consumer -B ${embedded} ${common_args}
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_DISABLE_FIND_PACKAGE_glslang=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DCMAKE_DISABLE_FIND_PACKAGE_OpenGL=ON)
+run(${CMAKE_COMMAND} --build ${embedded})
+run(${embedded}/embedded)
+message(STATUS "${run_output}")
+run(${CMAKE_COMMAND} --build ${embedded} --verbose)
+if(GENERATOR STREQUAL "Ninja" AND NOT run_output MATCHES "no work to do")
+  message(FATAL_ERROR "install test: rebuilding the untouched embedded consumer ran:\n${run_output}")
+endif()
+
 # The runtime component: missing without Vulkan, found with it when built.
 run(${CMAKE_COMMAND} -S ${TEST_DIR}/runtime_probe -B ${WORK_DIR}/probe_without_vulkan
     ${common_args} -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DEXPECT_RUNTIME=OFF)

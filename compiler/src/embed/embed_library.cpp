@@ -143,8 +143,13 @@ Result<EmbedSummary> embed_library(const Library& library, const std::filesystem
     return make_error(Error::Kind::io, out.string(),
                       "cannot create the folder: " + error.message());
   }
-  PENUMBRA_TRY(write_file_atomic(out / "include" / options.name / "shaders.hpp",
-                                 header(options.name, summary.programs)));
+  // The header changes only with the program count: left alone otherwise,
+  // so that what includes it is not rebuilt for a new blob.
+  const std::filesystem::path header_path = out / "include" / options.name / "shaders.hpp";
+  const std::string header_text = header(options.name, summary.programs);
+  if (auto existing = read_file(header_path); !existing || *existing != header_text) {
+    PENUMBRA_TRY(write_file_atomic(header_path, header_text));
+  }
   PENUMBRA_TRY(write_file_atomic(out / (options.name + "_shaders.cpp"), source));
   return summary;
 }

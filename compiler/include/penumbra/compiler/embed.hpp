@@ -22,9 +22,9 @@ struct EmbedSummary {
 };
 
 // Writes `out`/include/<name>/shaders.hpp, which declares <name>::library()
-// and <name>::find(), and `out`/<name>_shaders.cpp, which holds every file
-// of `library` (identical contents once) and the table. `name` must be a
-// C++ identifier.
+// and <name>::find() (rewritten only when its text changes), and
+// `out`/<name>_shaders.cpp, which holds every file of `library` (identical
+// contents once) and the table. `name` must be a C++ identifier.
 Result<EmbedSummary> embed_library(const Library& library, const std::filesystem::path& out,
                                    const EmbedOptions& options);
 
