@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <atomic>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "build/index_json.hpp"
@@ -108,6 +109,7 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
     return make_error(Error::Kind::bad_input, out_dir.string(), "no variants to build");
   }
   PENUMBRA_TRY(check_replaceable(out_dir));
+  const auto shaderlib = options.shaderlib ? options.shaderlib : embedded_shaderlib();
   auto staged = StagedDirectory::create(out_dir);
   if (!staged) return staged.error();
 
@@ -119,8 +121,8 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                "compiling " + std::to_string(jobs.size()) + " shaders for " +
                    std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
                    " threads"});
-  std::vector<Error> failures =
-      run_jobs(jobs, Pipeline(staged->staging(), options.hlsl), threads, options.keep_going);
+  std::vector<Error> failures = run_jobs(jobs, Pipeline(shaderlib, staged->staging(), options.hlsl),
+                                         threads, options.keep_going);
   if (!failures.empty() && !options.keep_going) return failures.front();
   for (const ShaderJob& job : jobs) {
     for (const Diagnostic& d : job.diagnostics) diagnostics(d);
@@ -135,16 +137,24 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
   PENUMBRA_TRY(staged->commit());
   const auto bytecode =
       std::ranges::count_if(jobs, [](const ShaderJob& job) { return job.bytecode.has_value(); });
-  return BuildSummary{variants.size(), jobs.size(), static_cast<std::size_t>(bytecode)};
+  std::set<std::string> inputs;
+  for (const ShaderJob& job : jobs) {
+    for (const std::string& path : job.inputs) inputs.insert(shaderlib->location(path));
+  }
+  return BuildSummary{variants.size(),
+                      jobs.size(),
+                      static_cast<std::size_t>(bytecode),
+                      {inputs.begin(), inputs.end()}};
 }
 
-Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass) {
+Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass,
+                                  std::shared_ptr<const ShaderlibSource> shaderlib) {
   if (!runs_pass(pass, variant)) {
     return make_error(Error::Kind::bad_input, "variant " + variant.name,
                       "has no " + std::string(to_string(pass)) + " pass (technique " +
                           std::string(to_string(variant.technique)) + " does not use it)");
   }
-  const Pipeline pipeline(std::nullopt);
+  const Pipeline pipeline(shaderlib ? std::move(shaderlib) : embedded_shaderlib(), std::nullopt);
   CompiledPass out;
   PassReflection vert;
   PassReflection frag;

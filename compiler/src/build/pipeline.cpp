@@ -4,10 +4,11 @@
 
 namespace penumbra {
 
-Pipeline::Pipeline(std::optional<std::filesystem::path> write_root,
+Pipeline::Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
+                   std::optional<std::filesystem::path> write_root,
                    const HlslCompilerOptions& hlsl) {
-  stages_.push_back(std::make_unique<PreprocessStage>());
-  stages_.push_back(std::make_unique<CompileStage>());
+  stages_.push_back(std::make_unique<PreprocessStage>(shaderlib));
+  stages_.push_back(std::make_unique<CompileStage>(std::move(shaderlib)));
   stages_.push_back(std::make_unique<ValidateStage>());
   stages_.push_back(std::make_unique<OptimizeStage>());
   stages_.push_back(std::make_unique<CrossCompileStage>());

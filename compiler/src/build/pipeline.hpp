@@ -15,9 +15,9 @@ class Pipeline {
  public:
   // preprocess, compile, validate, optimize, cross-compile, reflect, and,
   // when `write_root` is given, write, then bytecode when `hlsl` names a
-  // compiler.
-  explicit Pipeline(std::optional<std::filesystem::path> write_root,
-                    const HlslCompilerOptions& hlsl = {});
+  // compiler. Shaderlib files come from `shaderlib`.
+  Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
+           std::optional<std::filesystem::path> write_root, const HlslCompilerOptions& hlsl = {});
 
   // Runs every stage in order; stops at the first error, naming the stage.
   Status run(ShaderJob& job) const;

@@ -1,8 +1,8 @@
 #include "glsl/glslang_setup.hpp"
 
 #include <mutex>
-
-#include "penumbra/shaderlib/files.hpp"
+#include <optional>
+#include <regex>
 
 namespace penumbra {
 namespace {
@@ -34,9 +34,11 @@ glslang::TShader::Includer::IncludeResult* ShaderlibIncluder::includeLocal(
   if (name == "variant.glsl") {
     return new IncludeResult(header_name, variant_header_.data(), variant_header_.size(), nullptr);
   }
-  auto text = shaderlib::file(name);
+  auto text = source_.read(name);
   if (!text) return nullptr;  // glslang reports the missing include with its location
-  return new IncludeResult(header_name, text->data(), text->size(), nullptr);
+  read_.emplace_back(name);
+  auto* owned = new std::string(std::move(*text));
+  return new IncludeResult(header_name, owned->data(), owned->size(), owned);
 }
 
 glslang::TShader::Includer::IncludeResult* ShaderlibIncluder::includeSystem(
@@ -45,7 +47,59 @@ glslang::TShader::Includer::IncludeResult* ShaderlibIncluder::includeSystem(
 }
 
 void ShaderlibIncluder::releaseInclude(IncludeResult* result) {
+  if (result) delete static_cast<std::string*>(result->userData);
   delete result;
+}
+
+namespace {
+
+// A name glslang gives a place: a shaderlib path (the pass, an include),
+// "variant.glsl" (generated, no file), or a source-string number (the pass).
+std::string place_location(const ShaderlibSource& source, std::string_view name,
+                           std::string_view pass) {
+  if (name == "variant.glsl") return "<generated variant.glsl>";
+  if (!name.empty() && name.find_first_not_of("0123456789") == std::string_view::npos) {
+    return source.location(pass);
+  }
+  return source.location(name);
+}
+
+}  // namespace
+
+Error glslang_error(const ShaderlibSource& source, const std::string& context,
+                    std::string_view heading, std::string_view log, std::string_view pass) {
+  // "ERROR: techniques/pcss.glsl:12: 'x' : undeclared identifier"
+  static const std::regex kMessage(R"(^(ERROR|WARNING): (.+):([0-9]+): (.*)$)");
+  static const std::regex kSummary(R"(^ERROR: [0-9]+ compilation errors\..*$)");
+  std::optional<std::string> where;
+  std::string message(heading);
+  std::string rest;
+  std::size_t begin = 0;
+  while (begin < log.size()) {
+    std::size_t end = log.find('\n', begin);
+    if (end == std::string_view::npos) end = log.size();
+    const std::string line(log.substr(begin, end - begin));
+    begin = end + 1;
+    std::smatch match;
+    if (line.empty() || std::regex_match(line, kSummary)) continue;
+    if (!std::regex_match(line, match, kMessage)) {
+      rest += "\n" + line;
+      continue;
+    }
+    const std::string place = place_location(source, match[2].str(), pass) + ":" + match[3].str();
+    if (!where && match[1] == "ERROR") {
+      where = place;
+      message += match[4].str();
+    } else {
+      rest +=
+          "\n" + place + ": " + (match[1] == "ERROR" ? "error: " : "warning: ") + match[4].str();
+    }
+  }
+  if (!where) {
+    return make_error(Error::Kind::compile, context,
+                      std::string(heading) + "\n" + std::string(log));
+  }
+  return make_error(Error::Kind::compile, *where + ": " + context, message + rest);
 }
 
 }  // namespace penumbra

@@ -19,8 +19,8 @@ Status CompileStage::process(ShaderJob& job) const {
 
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
-    return make_error(Error::Kind::compile, job.describe(),
-                      std::string("glslang failed:\n") + shader.getInfoLog());
+    return glslang_error(*shaderlib_, job.describe(), "glslang failed: ", shader.getInfoLog(),
+                         job.source_path);
   }
   glslang::TProgram program;
   program.addShader(&shader);

@@ -2,17 +2,17 @@
 
 #include "glsl/glslang_setup.hpp"
 #include "glsl/variant_header.hpp"
-#include "penumbra/shaderlib/files.hpp"
 #include "stages/stages.hpp"
 
 namespace penumbra {
 
 Status PreprocessStage::process(ShaderJob& job) const {
-  auto source = shaderlib::file(job.source_path);
+  auto source = shaderlib_->read(job.source_path);
   if (!source) {
-    return make_error(Error::Kind::internal, job.describe(),
-                      "shaderlib has no file '" + job.source_path + "'");
+    return make_error(Error::Kind::bad_input, job.describe(),
+                      "shaderlib has no file " + shaderlib_->location(job.source_path));
   }
+  job.inputs = {job.source_path};
   ensure_glslang_initialized();
   glslang::TShader shader(glslang_stage(job.stage));
   const char* text = source->data();
@@ -21,12 +21,12 @@ Status PreprocessStage::process(ShaderJob& job) const {
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure_environment(shader, job.stage);
 
-  ShaderlibIncluder includer(variant_header(job.variant, job.target));
+  ShaderlibIncluder includer(*shaderlib_, variant_header(job.variant, job.target), job.inputs);
   std::string output;
   if (!shader.preprocess(GetDefaultResources(), 450, ENoProfile, false, false, EShMsgDefault,
                          &output, includer)) {
-    return make_error(Error::Kind::compile, job.describe(),
-                      std::string("preprocessing failed:\n") + shader.getInfoLog());
+    return glslang_error(*shaderlib_, job.describe(), "preprocessing failed: ", shader.getInfoLog(),
+                         job.source_path);
   }
   job.preprocessed = std::move(output);
   return {};

@@ -2,24 +2,38 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 
 #include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/shaderlib_source.hpp"
 #include "penumbra/compiler/stage.hpp"
 
 namespace penumbra {
 
-// Resolves includes and defines (variant.glsl) with glslang's preprocessor.
+// Resolves includes and defines (variant.glsl) with glslang's preprocessor,
+// reading shaderlib files from `shaderlib` and recording them in job.inputs.
 class PreprocessStage final : public Stage {
  public:
+  explicit PreprocessStage(std::shared_ptr<const ShaderlibSource> shaderlib)
+      : shaderlib_(std::move(shaderlib)) {}
   std::string_view name() const override { return "preprocess"; }
   Status process(ShaderJob& job) const override;
+
+ private:
+  std::shared_ptr<const ShaderlibSource> shaderlib_;
 };
 
-// Compiles the preprocessed GLSL to SPIR-V 1.0 with glslang, in process.
+// Compiles the preprocessed GLSL to SPIR-V 1.0 with glslang, in process. Its
+// errors are located in the shaderlib file and line they are about.
 class CompileStage final : public Stage {
  public:
+  explicit CompileStage(std::shared_ptr<const ShaderlibSource> shaderlib)
+      : shaderlib_(std::move(shaderlib)) {}
   std::string_view name() const override { return "compile"; }
   Status process(ShaderJob& job) const override;
+
+ private:
+  std::shared_ptr<const ShaderlibSource> shaderlib_;
 };
 
 // Checks the SPIR-V with spirv-val's rules for Vulkan 1.0.

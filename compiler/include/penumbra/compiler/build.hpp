@@ -5,10 +5,14 @@
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/compiler/shaderlib_source.hpp"
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/target_reflection.hpp"
@@ -32,12 +36,17 @@ struct BuildOptions {
   // After a shader fails, compile the rest anyway and report every failure
   // (penumbra build --keep-going); OUT is still written only when all succeed.
   bool keep_going = false;
+  // Where shaderlib files are read from (penumbra build --shaderlib DIR).
+  std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib();
 };
 
 struct BuildSummary {
   std::size_t variants = 0;  // variants written
   std::size_t files = 0;     // shader files written (text or SPIR-V)
   std::size_t bytecode = 0;  // Direct3D bytecode files written beside the HLSL
+  // The shaderlib files the built shaders read, as the source's locations
+  // (ShaderlibSource::location), sorted and unique: a build's dependencies.
+  std::vector<std::string> inputs;
 };
 
 // Compiles everything into a staging directory and swaps it into `out_dir`
@@ -64,6 +73,8 @@ struct CompiledPass {
 };
 
 // Compiles one pass of one variant for one target without writing files.
-Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass);
+Result<CompiledPass> compile_pass(
+    const Variant& variant, Target target, PassKind pass,
+    std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
 
 }  // namespace penumbra

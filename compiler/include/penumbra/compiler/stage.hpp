@@ -41,6 +41,7 @@ struct ShaderJob {
 
   // Products, in pipeline order.
   std::string preprocessed;              // preprocess: GLSL with includes and defines resolved
+  std::vector<std::string> inputs;       // preprocess: the shaderlib files read, source first
   std::vector<std::uint32_t> spirv;      // compile (then optimize): SPIR-V 1.0
   std::string text;                      // cross-compile: target source (empty for spirv)
   ShaderInterface interface;             // reflect: of `spirv`
