@@ -7,7 +7,9 @@
 #include "hlsl_compiler.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/compiler/shaderlib_source.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/support/atomic_file.hpp"
 #include "select_variants.hpp"
 
 namespace penumbra::cli {
@@ -24,6 +26,33 @@ bool has_hlsl(const std::vector<Variant>& variants) {
   });
 }
 
+// A path in a Makefile rule, as Ninja and Make read depfiles.
+std::string depfile_escape(const std::string& path) {
+  std::string out;
+  for (char c : path) {
+    if (c == ' ' || c == '#') out += '\\';
+    if (c == '$') out += '$';
+    out += c;
+  }
+  return out;
+}
+
+// "OUT/index.json: MANIFEST DEP...": the files the build read. Shaderlib files
+// only when they are real files (--shaderlib DIR); the embedded copy is part
+// of the penumbra binary, which a build system already depends on.
+std::string depfile_text(const std::string& out, const std::string& manifest,
+                         const ShaderlibSource& shaderlib, const BuildSummary& summary) {
+  namespace fs = std::filesystem;
+  std::string text = depfile_escape((fs::path(out) / "index.json").string()) + ":";
+  text += " " + depfile_escape(fs::absolute(manifest).lexically_normal().string());
+  if (shaderlib.on_disk()) {
+    for (const std::string& input : summary.inputs) {
+      text += " \\\n  " + depfile_escape(fs::absolute(input).lexically_normal().string());
+    }
+  }
+  return text + "\n";
+}
+
 }  // namespace
 
 void add_build_command(CLI::App& app, int& exit_code) {
@@ -34,6 +63,8 @@ void add_build_command(CLI::App& app, int& exit_code) {
     std::vector<std::string> variants;
     std::vector<std::string> targets;
     std::string hlsl_compiler;
+    std::string shaderlib;
+    std::string depfile;
     int hlsl_timeout = 60;
     bool keep_going = false;
     bool quiet = false;
@@ -52,6 +83,13 @@ void add_build_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("-k,--keep-going", args->keep_going,
                 "After a shader fails, compile the others and report every failure "
                 "(OUT is still written only when all succeed)");
+  cmd->add_option("--shaderlib", args->shaderlib,
+                  "Read the shader library's files from DIR (with common/, techniques/ and "
+                  "passes/, like the installed share/penumbra/shaderlib) instead of the copy "
+                  "built into penumbra");
+  cmd->add_option("--depfile", args->depfile,
+                  "After a successful build, write a Makefile-style depfile for Ninja or "
+                  "CMake (OUT/index.json: the manifest and the --shaderlib files read)");
   cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
   cmd->add_option("--hlsl-timeout", args->hlsl_timeout,
                   "Seconds one HLSL file may take to compile to bytecode")
@@ -76,14 +114,35 @@ void add_build_command(CLI::App& app, int& exit_code) {
       exit_code = report(compiler.error());
       return;
     }
+    std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib();
+    if (!args->shaderlib.empty()) {
+      auto dir = shaderlib_directory(args->shaderlib);
+      if (!dir) {
+        Error error = dir.error();
+        error.where = "--shaderlib " + error.where;
+        exit_code = report(error);
+        return;
+      }
+      shaderlib = std::move(*dir);
+    }
     const BuildOptions options{
         .jobs = args->jobs,
         .hlsl = {.compiler = *compiler, .timeout = std::chrono::seconds(args->hlsl_timeout)},
-        .keep_going = args->keep_going};
+        .keep_going = args->keep_going,
+        .shaderlib = shaderlib};
     auto summary = build_library(*variants, args->out, options, stderr_diagnostics(args->verbose));
     if (!summary) {
       exit_code = report(summary.error());
       return;
+    }
+    if (!args->depfile.empty()) {
+      const std::string text = depfile_text(args->out, args->manifest, *shaderlib, *summary);
+      if (Status written = write_file_atomic(args->depfile, text); !written) {
+        Error error = written.error();
+        error.where = "--depfile " + args->depfile;
+        exit_code = report(error);
+        return;
+      }
     }
     if (!args->quiet) {
       std::cout << "built " << summary->variants << " variants (" << summary->files

@@ -7,12 +7,13 @@
 namespace penumbra::cli {
 
 int report(const Error& error) {
-  // A place in a file ("x.json:3:14" or "x.json:3:14: /sets/0/kernel")
-  // leads the line, as in a compiler's messages, so editors can jump to it.
-  static const std::regex kPlace(R"(^(.+:[0-9]+:[0-9]+)(: (.*))?$)");
+  // A place in a file ("x.json:3:14", "x.json:3:14: /sets/0/kernel" or,
+  // without a column, "query.frag:12: variant ...") leads the line, as in a
+  // compiler's messages, so editors can jump to it.
+  static const std::regex kPlace(R"(^(.+:[0-9]+(:[0-9]+)?)(: (.*))?$)");
   std::smatch match;
   if (std::regex_match(error.where, match, kPlace)) {
-    std::cerr << match[1] << ": error: " << (match[3].length() ? match[3].str() + ": " : "")
+    std::cerr << match[1] << ": error: " << (match[4].length() ? match[4].str() + ": " : "")
               << error.message << "\n";
   } else {
     std::cerr << "penumbra: error: " << error.to_string() << "\n";
