@@ -77,6 +77,27 @@ if(GENERATOR STREQUAL "Ninja" AND NOT run_output MATCHES "no work to do")
   message(FATAL_ERROR "install test: rebuilding the untouched embedded consumer ran:\n${run_output}")
 endif()
 
+# Its shaders come from the installed shaderlib folder, and the build step's
+# depfile lists the files its variant (pcss) includes: touching one of them
+# regenerates the library, touching a technique it does not use runs nothing.
+set(installed_shaderlib ${prefix}/share/penumbra/shaderlib)
+if(GENERATOR STREQUAL "Ninja")
+  file(TOUCH ${installed_shaderlib}/techniques/hard.glsl)
+  run(${CMAKE_COMMAND} --build ${embedded} --verbose)
+  if(NOT run_output MATCHES "no work to do")
+    message(FATAL_ERROR "install test: touching techniques/hard.glsl, which the embedded "
+                        "consumer does not use, ran:\n${run_output}")
+  endif()
+  file(TOUCH ${installed_shaderlib}/techniques/pcss.glsl)
+  run(${CMAKE_COMMAND} --build ${embedded} --verbose)
+  if(NOT run_output MATCHES "--shaderlib")
+    message(FATAL_ERROR "install test: touching techniques/pcss.glsl, which the embedded "
+                        "consumer's variant includes, did not regenerate its shaders:\n"
+                        "${run_output}")
+  endif()
+  run(${embedded}/embedded)
+endif()
+
 # The runtime component: missing without Vulkan, found with it when built.
 run(${CMAKE_COMMAND} -S ${TEST_DIR}/runtime_probe -B ${WORK_DIR}/probe_without_vulkan
     ${common_args} -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DEXPECT_RUNTIME=OFF)
