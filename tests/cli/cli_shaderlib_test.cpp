@@ -22,7 +22,8 @@ using ::testing::Not;
 // pcss (with its filter and disks), pcf_poisson and hard, for text targets.
 constexpr const char* kManifest =
     R"({"schema": 1, "targets": ["spirv", "glsl450", "hlsl_dx10", "essl300"],)"
-    R"( "sets": [{"technique": ["hard", "pcf_poisson"]},)"
+    R"( "sets": [{"technique": "hard"},)"
+    R"( {"technique": "pcf_poisson", "pcf_samples": 16, "disk": "whitepaper16"},)"
     R"( {"technique": "pcss", "blocker_samples": 16, "pcf_samples": 16,)"
     R"(  "disk": "whitepaper16"}]})";
 
