@@ -332,8 +332,8 @@ TEST(TargetRules, ComparisonSamplingIsRejectedForDx9WithVariantTargetAndConstruc
   job.pass = PassKind::query;
   job.stage = ShaderStage::fragment;
   job.source_path = "passes/query.frag";
-  ASSERT_TRUE(PreprocessStage().process(job).ok());
-  ASSERT_TRUE(CompileStage().process(job).ok());
+  ASSERT_TRUE(PreprocessStage(embedded_shaderlib()).process(job).ok());
+  ASSERT_TRUE(CompileStage(embedded_shaderlib()).process(job).ok());
   job.target = Target::hlsl_dx9;
   Status status = CrossCompileStage().process(job);
   ASSERT_FALSE(status.ok());

@@ -18,7 +18,7 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
   ASSERT_EQ(variants->size(), 33u);
-  const Pipeline pipeline(std::nullopt);
+  const Pipeline pipeline(embedded_shaderlib(), std::nullopt);
   std::set<std::pair<Target, const PassStageSource*>> shared;  // each compiled once per target
   for (const Variant& variant : *variants) {
     for (Target target : variant.targets) {
