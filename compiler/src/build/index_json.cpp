@@ -13,7 +13,8 @@
 namespace penumbra {
 namespace {
 
-// A top-level table of index.json (`pass_files`, `reflections`, `disks`):
+// A top-level table of index.json (`pass_files`, `reflections`,
+// `texture_contents`, `disks`):
 // each distinct record once, in the order variants first use it; variants
 // refer to a record by its position. Most records are shared: the depth and
 // min-max passes of every variant, the query pass's reflection of variants
@@ -35,8 +36,25 @@ class SharedTable {
 struct SharedTables {
   SharedTable pass_files;
   SharedTable reflections;
+  SharedTable texture_contents;
   SharedTable disks;
 };
+
+// A reflection record as index.json stores it: each constant texture's
+// `contents` (hlsl_dx9's disks, hundreds of floats) a position in
+// `texture_contents`, so that records differing only in their disks stay
+// small.
+nlohmann::json reflection_record(const PassReflection& reflection, SharedTables& tables) {
+  nlohmann::json record = reflection;
+  for (const char* stage : {"vert", "frag"}) {
+    if (!record[stage].contains("textures")) continue;
+    for (nlohmann::json& texture : record[stage]["textures"]) {
+      if (!texture.contains("contents")) continue;
+      texture["contents"] = tables.texture_contents.add(std::move(texture["contents"]));
+    }
+  }
+  return record;
+}
 
 // The job that produced `source` for `target` (shared or this variant's).
 const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant, Target target,
@@ -98,8 +116,8 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
       }
       if (!files.empty()) passes[pass][target_name] = tables.pass_files.add(std::move(files));
       if (vert && frag) {
-        reflection[pass][target_name] =
-            tables.reflections.add(join_stages(vert->reflection, frag->reflection));
+        reflection[pass][target_name] = tables.reflections.add(
+            reflection_record(join_stages(vert->reflection, frag->reflection), tables));
       }
     }
   }
@@ -134,6 +152,7 @@ nlohmann::json index_json(std::span<const Variant> variants, const std::vector<S
   out["disks"] = tables.disks.take();
   out["pass_files"] = tables.pass_files.take();
   out["reflections"] = tables.reflections.take();
+  out["texture_contents"] = tables.texture_contents.take();
   out["variants"] = list;
   return out;
 }

@@ -70,14 +70,31 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
           std::string("malformed pass files (docs/shader-interface.md): ") + e.what());
     }
   }
+  // Each record's constant textures refer to texture_contents by position (a
+  // malformed one is reported at the record that uses it).
+  const json& contents_table = j.at("texture_contents");
+  const std::vector<json> contents(contents_table.begin(), contents_table.end());
   const json& reflections = j.at("reflections");
   for (std::size_t i = 0; i < reflections.size(); ++i) {
+    const std::string at = "/reflections/" + std::to_string(i);
+    json record = reflections[i];
+    for (const char* stage : {"vert", "frag"}) {
+      if (!record.contains(stage) || !record[stage].contains("textures")) continue;
+      json& textures = record[stage]["textures"];
+      for (std::size_t t = 0; t < textures.size(); ++t) {
+        if (!textures[t].is_object() || !textures[t].contains("contents")) continue;
+        auto texels = resolve(file, textures[t]["contents"],
+                              at + "/" + stage + "/textures/" + std::to_string(t) + "/contents",
+                              contents, "texture_contents");
+        if (!texels) return texels.error();
+        textures[t]["contents"] = **texels;
+      }
+    }
     try {
-      out.reflections.push_back(reflections[i].get<PassReflection>());
+      out.reflections.push_back(record.get<PassReflection>());
     } catch (const json::exception& e) {
       return index_error(
-          file, "/reflections/" + std::to_string(i),
-          std::string("malformed reflection (docs/shader-interface.md): ") + e.what());
+          file, at, std::string("malformed reflection (docs/shader-interface.md): ") + e.what());
     }
   }
   const json& disks = j.at("disks");
