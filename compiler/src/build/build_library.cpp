@@ -132,7 +132,7 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
     return keep_going_error(failures, jobs.size(), out_dir);
   }
 
-  const std::string index = index_json(variants, jobs).dump(2) + "\n";
+  const std::string index = index_text(index_json(variants, jobs));
   PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index));
   PENUMBRA_TRY(staged->commit());
   const auto bytecode =

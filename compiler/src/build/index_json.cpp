@@ -1,5 +1,9 @@
 #include "build/index_json.hpp"
 
+#include <map>
+#include <string>
+#include <utility>
+
 #include "build/pass_plan.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
@@ -8,6 +12,49 @@
 
 namespace penumbra {
 namespace {
+
+// A top-level table of index.json (`pass_files`, `reflections`,
+// `texture_contents`, `disks`):
+// each distinct record once, in the order variants first use it; variants
+// refer to a record by its position. Most records are shared: the depth and
+// min-max passes of every variant, the query pass's reflection of variants
+// that differ only in baked constants, a disk that variants bake.
+class SharedTable {
+ public:
+  std::size_t add(nlohmann::json record) {
+    const auto [at, added] = positions_.try_emplace(record.dump(), records_.size());
+    if (added) records_.push_back(std::move(record));
+    return at->second;
+  }
+  nlohmann::json take() { return std::exchange(records_, nlohmann::json::array()); }
+
+ private:
+  nlohmann::json records_ = nlohmann::json::array();
+  std::map<std::string, std::size_t> positions_;  // a record's text -> its position
+};
+
+struct SharedTables {
+  SharedTable pass_files;
+  SharedTable reflections;
+  SharedTable texture_contents;
+  SharedTable disks;
+};
+
+// A reflection record as index.json stores it: each constant texture's
+// `contents` (hlsl_dx9's disks, hundreds of floats) a position in
+// `texture_contents`, so that records differing only in their disks stay
+// small.
+nlohmann::json reflection_record(const PassReflection& reflection, SharedTables& tables) {
+  nlohmann::json record = reflection;
+  for (const char* stage : {"vert", "frag"}) {
+    if (!record[stage].contains("textures")) continue;
+    for (nlohmann::json& texture : record[stage]["textures"]) {
+      if (!texture.contains("contents")) continue;
+      texture["contents"] = tables.texture_contents.add(std::move(texture["contents"]));
+    }
+  }
+  return record;
+}
 
 // The job that produced `source` for `target` (shared or this variant's).
 const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant, Target target,
@@ -21,22 +68,17 @@ const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& var
   return nullptr;
 }
 
-nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>& jobs) {
+nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>& jobs,
+                            SharedTables& tables) {
   nlohmann::json out = {{"name", variant.name},
                         {"technique", to_string(variant.technique)},
                         {"keys", variant_keys_json(variant.keys)}};
   nlohmann::json disks = nlohmann::json::object();
-  nlohmann::json disk_info = nlohmann::json::object();
   if (variant.blocker_disk) {
-    disks["blocker"] = disk_points_json(*variant.blocker_disk);
-    disk_info["blocker"] = disk_info_json(*variant.blocker_disk);
+    disks["blocker"] = tables.disks.add(disk_to_json(*variant.blocker_disk));
   }
-  if (variant.pcf_disk) {
-    disks["pcf"] = disk_points_json(*variant.pcf_disk);
-    disk_info["pcf"] = disk_info_json(*variant.pcf_disk);
-  }
+  if (variant.pcf_disk) disks["pcf"] = tables.disks.add(disk_to_json(*variant.pcf_disk));
   out["disks"] = disks;
-  out["disk_info"] = disk_info;
   if (!variant.blur_weights.empty()) {
     // Exact like the disks: each float widens to double, written shortest.
     nlohmann::json weights = nlohmann::json::array();
@@ -54,15 +96,16 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
       const std::string pass(to_string(kind));
       const ShaderJob* vert = nullptr;
       const ShaderJob* frag = nullptr;
+      nlohmann::json files = nlohmann::json::object();
       for (const PassStageSource& source : pass_plan()) {
         if (source.pass != kind) continue;
         const ShaderJob* job = find_job(jobs, variant, target, source);
         if (!job) continue;
         (source.stage == ShaderStage::vertex ? vert : frag) = job;
         const std::string stage(stage_key(source.stage));
-        passes[pass][target_name][stage] = job->output_path;
+        files[stage] = job->output_path;
         if (job->bytecode) {
-          nlohmann::json& bytecode = passes[pass][target_name]["bytecode"][stage];
+          nlohmann::json& bytecode = files["bytecode"][stage];
           bytecode = {{"path", job->bytecode->path},
                       {"profile", job->bytecode->profile},
                       {"size", job->bytecode->size}};
@@ -71,8 +114,10 @@ nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>
           }
         }
       }
+      if (!files.empty()) passes[pass][target_name] = tables.pass_files.add(std::move(files));
       if (vert && frag) {
-        reflection[pass][target_name] = join_stages(vert->reflection, frag->reflection);
+        reflection[pass][target_name] = tables.reflections.add(
+            reflection_record(join_stages(vert->reflection, frag->reflection), tables));
       }
     }
   }
@@ -101,10 +146,36 @@ nlohmann::json index_json(std::span<const Variant> variants, const std::vector<S
                           {"near_plane", 9.5},
                           {"bias", 0.0},
                           {"filter_radius_texels", 2.0}}}};
+  SharedTables tables;
   nlohmann::json list = nlohmann::json::array();
-  for (const Variant& variant : variants) list.push_back(variant_json(variant, jobs));
+  for (const Variant& variant : variants) list.push_back(variant_json(variant, jobs, tables));
+  out["disks"] = tables.disks.take();
+  out["pass_files"] = tables.pass_files.take();
+  out["reflections"] = tables.reflections.take();
+  out["texture_contents"] = tables.texture_contents.take();
   out["variants"] = list;
   return out;
+}
+
+std::string index_text(const nlohmann::json& index) {
+  std::string out = "{";
+  const char* separator = "\n";
+  for (const auto& [key, value] : index.items()) {
+    out += separator + std::string("  ") + nlohmann::json(key).dump() + ": ";
+    separator = ",\n";
+    if (!value.is_array() || value.empty()) {
+      out += value.dump();
+      continue;
+    }
+    out += "[";
+    const char* record_separator = "\n";
+    for (const nlohmann::json& record : value) {
+      out += record_separator + std::string("    ") + record.dump();
+      record_separator = ",\n";
+    }
+    out += "\n  ]";
+  }
+  return out + "\n}\n";
 }
 
 }  // namespace penumbra

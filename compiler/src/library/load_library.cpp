@@ -1,6 +1,9 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
 #include <type_traits>
+#include <vector>
 
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
@@ -16,14 +19,98 @@ Error index_error(const std::filesystem::path& file, const std::string& path,
   return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
 }
 
-// passes.<pass>.<target>.bytecode.<stage> (docs/shader-interface.md).
+// pass_files[i].bytecode.<stage> (docs/shader-interface.md).
 BytecodeFile bytecode_file(const json& j) {
   return BytecodeFile{j.at("path").get<std::string>(), j.at("profile").get<std::string>(),
                       j.at("size").get<std::uint64_t>(), j.value("instruction_slots", 0)};
 }
 
+// A record of pass_files: the two stages' files and their bytecode.
+PassFiles pass_files_from_json(const json& j) {
+  PassFiles read;
+  read.vert = j.at("vert").get<std::string>();
+  read.frag = j.at("frag").get<std::string>();
+  const json bytecode = j.value("bytecode", json::object());
+  if (bytecode.contains("vert")) read.vert_bytecode = bytecode_file(bytecode["vert"]);
+  if (bytecode.contains("frag")) read.frag_bytecode = bytecode_file(bytecode["frag"]);
+  return read;
+}
+
+// index.json's shared tables, read once; variants refer to their records by
+// position.
+struct SharedTables {
+  std::vector<PassFiles> pass_files;
+  std::vector<PassReflection> reflections;
+  std::vector<Disk> disks;
+};
+
+// The record `ref` (at JSON path `path`) points at in `table` (`/name`).
+template <typename Record>
+Result<const Record*> resolve(const std::filesystem::path& file, const json& ref,
+                              const std::string& path, const std::vector<Record>& table,
+                              std::string_view name) {
+  if (!ref.is_number_unsigned() || ref.get<std::size_t>() >= table.size()) {
+    const std::string allowed = table.empty() ? "/" + std::string(name) + " is empty"
+                                              : "allowed 0.." + std::to_string(table.size() - 1) +
+                                                    ", positions in /" + std::string(name);
+    return index_error(file, path, "reference " + ref.dump() + " is out of range; " + allowed);
+  }
+  return &table[ref.get<std::size_t>()];
+}
+
+Result<SharedTables> read_tables(const std::filesystem::path& file, const json& j) {
+  SharedTables out;
+  const json& pass_files = j.at("pass_files");
+  for (std::size_t i = 0; i < pass_files.size(); ++i) {
+    try {
+      out.pass_files.push_back(pass_files_from_json(pass_files[i]));
+    } catch (const json::exception& e) {
+      return index_error(
+          file, "/pass_files/" + std::to_string(i),
+          std::string("malformed pass files (docs/shader-interface.md): ") + e.what());
+    }
+  }
+  // Each record's constant textures refer to texture_contents by position (a
+  // malformed one is reported at the record that uses it).
+  const json& contents_table = j.at("texture_contents");
+  const std::vector<json> contents(contents_table.begin(), contents_table.end());
+  const json& reflections = j.at("reflections");
+  for (std::size_t i = 0; i < reflections.size(); ++i) {
+    const std::string at = "/reflections/" + std::to_string(i);
+    json record = reflections[i];
+    for (const char* stage : {"vert", "frag"}) {
+      if (!record.contains(stage) || !record[stage].contains("textures")) continue;
+      json& textures = record[stage]["textures"];
+      for (std::size_t t = 0; t < textures.size(); ++t) {
+        if (!textures[t].is_object() || !textures[t].contains("contents")) continue;
+        auto texels = resolve(file, textures[t]["contents"],
+                              at + "/" + stage + "/textures/" + std::to_string(t) + "/contents",
+                              contents, "texture_contents");
+        if (!texels) return texels.error();
+        textures[t]["contents"] = **texels;
+      }
+    }
+    try {
+      out.reflections.push_back(record.get<PassReflection>());
+    } catch (const json::exception& e) {
+      return index_error(
+          file, at, std::string("malformed reflection (docs/shader-interface.md): ") + e.what());
+    }
+  }
+  const json& disks = j.at("disks");
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    try {
+      out.disks.push_back(disk_from_json(disks[i].at("points"), disks[i]));
+    } catch (const json::exception& e) {
+      return index_error(file, "/disks/" + std::to_string(i),
+                         std::string("malformed disk (docs/disks.md): ") + e.what());
+    }
+  }
+  return out;
+}
+
 Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,
-                                    const std::string& path) {
+                                    const std::string& path, const SharedTables& tables) {
   LibraryVariant out;
   Variant& v = out.variant;
   v.name = j.at("name").get<std::string>();
@@ -39,13 +126,16 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     const std::string member(name);
     if (keys.contains(member)) key = keys[member].get<Value>();
   });
-  const json& disks = j.at("disks");
-  const json info = j.value("disk_info", json::object());
-  if (disks.contains("blocker")) {
-    v.blocker_disk = disk_from_json(disks["blocker"], info.value("blocker", json::object()));
-  }
-  if (disks.contains("pcf")) {
-    v.pcf_disk = disk_from_json(disks["pcf"], info.value("pcf", json::object()));
+  for (auto& [role, ref] : j.at("disks").items()) {
+    auto disk = resolve(file, ref, path + "/disks/" + role, tables.disks, "disks");
+    if (!disk) return disk.error();
+    if (role == "blocker") {
+      v.blocker_disk = **disk;
+    } else if (role == "pcf") {
+      v.pcf_disk = **disk;
+    } else {
+      return index_error(file, path + "/disks/" + role, "unknown disk; allowed: blocker, pcf");
+    }
   }
   if (j.contains("blur_weights")) {
     for (const json& w : j["blur_weights"]) v.blur_weights.push_back(w.get<float>());
@@ -71,20 +161,18 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     for (auto& [target_name, files] : by_target.items()) {
       auto target = parse_target(target_name);
       if (!target) continue;
-      PassFiles& read = out.passes[pass][*target];
-      read.vert = files.at("vert");
-      read.frag = files.at("frag");
-      const json bytecode = files.value("bytecode", json::object());
-      if (bytecode.contains("vert")) read.vert_bytecode = bytecode_file(bytecode["vert"]);
-      if (bytecode.contains("frag")) read.frag_bytecode = bytecode_file(bytecode["frag"]);
+      auto read = resolve(file, files, path + "/passes/" + pass_name + "/" + target_name,
+                          tables.pass_files, "pass_files");
+      if (!read) return read.error();
+      out.passes[pass][*target] = **read;
       const std::string at = "/reflection/" + pass_name + "/" + target_name;
-      try {
-        out.reflection[pass][*target] = j.at(json::json_pointer(at)).get<PassReflection>();
-      } catch (const json::exception& e) {
-        return index_error(
-            file, path + at,
-            std::string("malformed reflection (docs/shader-interface.md): ") + e.what());
+      const json::json_pointer pointer(at);
+      if (!j.contains(pointer)) {
+        return index_error(file, path + at, "missing; every pass and target in /passes has one");
       }
+      auto reflection = resolve(file, j.at(pointer), path + at, tables.reflections, "reflections");
+      if (!reflection) return reflection.error();
+      out.reflection[pass][*target] = **reflection;
     }
   }
   return out;
@@ -113,12 +201,15 @@ Result<Library> load_library(const std::filesystem::path& root) {
     library.generator = j.at("generator").get<std::string>();
     if (j.value("schema", 0) != kIndexSchema) {
       return index_error(file, "/schema",
-                         "unsupported index schema; this penumbra reads " +
-                             std::to_string(kIndexSchema) + " (rebuild the library)");
+                         "index schema " + j.value("schema", json()).dump() +
+                             " is not supported; allowed value " + std::to_string(kIndexSchema) +
+                             " (rebuild the library with this penumbra)");
     }
+    const auto tables = read_tables(file, j);
+    if (!tables) return tables.error();
     const json& variants = j.at("variants");
     for (std::size_t i = 0; i < variants.size(); ++i) {
-      auto v = read_variant(file, variants[i], "/variants/" + std::to_string(i));
+      auto v = read_variant(file, variants[i], "/variants/" + std::to_string(i), *tables);
       if (!v) return v.error();
       library.variants.push_back(std::move(*v));
     }

@@ -36,12 +36,13 @@ double normalized_min_distance(std::span<const Point2> points);
 // {"name", "method", "seed", "count", "normalized_min_distance", "points"};
 // points are [x, y] pairs that read back into float with the same bits.
 nlohmann::json disk_to_json(const Disk& disk);
-// The two halves of that object, as index.json keeps them apart: the bare
-// array of points, and everything else.
+// The two halves of that object: the bare array of points, and everything
+// else.
 nlohmann::json disk_points_json(const Disk& disk);
 nlohmann::json disk_info_json(const Disk& disk);
-// The disk back from those halves; a member missing from `info` stays at its
-// default. Throws nlohmann::json::exception on a malformed point.
+// The disk back from those halves (index.json's `disks` table passes a record
+// and its `points`); a member missing from `info` stays at its default. Throws
+// nlohmann::json::exception on a malformed point.
 Disk disk_from_json(const nlohmann::json& points, const nlohmann::json& info);
 
 // "best_candidate, sample_elimination", for messages and help text.

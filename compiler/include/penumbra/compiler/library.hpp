@@ -30,8 +30,10 @@ struct LibraryVariant {
   std::map<PassKind, std::map<Target, PassReflection>> reflection;
 };
 
-// index.json's `schema`: 2 since the reflection describes each target's text.
-inline constexpr int kIndexSchema = 2;
+// index.json's `schema`: 3 since identical reflection records and disks are
+// stored once, in the top-level `reflections` and `disks` tables, and each
+// variant refers to them by position (2 repeated them in every variant).
+inline constexpr int kIndexSchema = 3;
 
 struct Library {
   std::filesystem::path root;
@@ -41,7 +43,10 @@ struct Library {
   const LibraryVariant* find(std::string_view name) const;
 };
 
-// Reads OUT/index.json; errors name the file and the JSON path.
+// Reads OUT/index.json and resolves each variant's references into the shared
+// tables, so every LibraryVariant holds its own disks and reflection records;
+// errors (a schema other than kIndexSchema, a reference out of range) name the
+// file and the JSON path.
 Result<Library> load_library(const std::filesystem::path& root);
 
 // Reads a .spv file into words.

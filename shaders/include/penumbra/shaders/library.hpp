@@ -30,8 +30,8 @@ struct Program {
   PassKind pass = PassKind::query;
   StageCode vertex;
   StageCode fragment;
-  // index.json's `reflection.<pass>.<target>` as JSON text: what an engine
-  // binds by (docs/shader-interface.md).
+  // The reflection record index.json's `reflection.<pass>.<target>` points
+  // at, as JSON text: what an engine binds by (docs/shader-interface.md).
   std::string_view reflection;
 };
 
