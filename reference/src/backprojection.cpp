@@ -23,12 +23,11 @@ int texel_floor(double coord, int size) {
   return int(std::clamp(std::floor(coord * size), -1.0, double(size)));
 }
 
-// Overlap of [lo, hi] with [-half, half].
-double overlap(double lo, double hi, double half) {
+}  // namespace
+
+double detail::overlap(double lo, double hi, double half) {
   return std::max(0.0, std::min(hi, half) - std::max(lo, -half));
 }
-
-}  // namespace
 
 TexelRect backprojection_window(const ShadowMapView& map, const LightParams& light, const Query& q,
                                 double min_depth) {
@@ -62,7 +61,7 @@ double backprojected_area(const ShadowMapView& map, const LightParams& light, co
       const double g = z * q.z / (q.z - z);
       const double a0 = (double(i) / map.width() - 0.5) * to_slope - a_r;
       const double a1 = (double(i + 1) / map.width() - 0.5) * to_slope - a_r;
-      area += overlap(a0 * g, a1 * g, L) * overlap(b0 * g, b1 * g, L);
+      area += detail::overlap(a0 * g, a1 * g, L) * detail::overlap(b0 * g, b1 * g, L);
     }
   }
   return area;

@@ -40,9 +40,7 @@ class Projector {
   }
   // Its area inside the light [-L, L]^2.
   double light_area(const PlaneRect& r) const {
-    const double w = std::max(0.0, std::min(r.x1, half_) - std::max(r.x0, -half_));
-    const double h = std::max(0.0, std::min(r.y1, half_) - std::max(r.y0, -half_));
-    return w * h;
+    return overlap(r.x0, r.x1, half_) * overlap(r.y0, r.y1, half_);
   }
   // Whether it reaches the light, and whether float32 might say otherwise.
   bool touches(const PlaneRect& r, bool& close) const {

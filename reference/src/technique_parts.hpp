@@ -39,6 +39,10 @@ Sample minmax_pcf(const ShadowMapView& map, const MinMaxMip& mip, const LightPar
 Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                       const Query& q, const VariantKeys& keys, std::optional<int> capped_steps);
 
+// The length of [lo, hi] inside [-half, half]: one axis of a projected
+// patch inside the light.
+double overlap(double lo, double hi, double half);
+
 // backprojection's shader stopped after `steps` steps of its walk over
 // `window` (brute_force: texels in row order): the visibility of the area
 // it reached, ambiguous where one of the shader's float32 decisions that

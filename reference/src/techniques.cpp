@@ -8,6 +8,7 @@
 
 #include <optional>
 
+#include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/sampling.hpp"
 #include "technique_parts.hpp"
 #include "technique_table.hpp"
@@ -82,6 +83,10 @@ Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMi
 }
 
 }  // namespace
+
+ShaderLimits shader_limits(Target target) {
+  return {traits(target).walk_step_limit};
+}
 
 bool reference_reads_mip(Technique technique) {
   return detail::reference_for(technique).reads_mip;

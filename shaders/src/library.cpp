@@ -26,9 +26,10 @@ Library::Library(std::span<const std::string_view> blob,
         reinterpret_cast<const std::uint8_t*>(blob_.data()) + r.offset, r.size);
   };
   // SPIR-V is copied into word arrays: the blob's chars carry no alignment.
-  auto words = [&](BlobRange r) {
+  auto words = [&](BlobRange r) -> std::span<const std::uint32_t> {
     std::vector<std::uint32_t>& out = words_.emplace_back(r.size / 4);
     std::memcpy(out.data(), blob_.data() + r.offset, out.size() * 4);
+    return out;
   };
   std::size_t spirv_stages = 0;
   for (const EmbeddedProgram& e : programs) spirv_stages += e.target == Target::spirv ? 2 : 0;
@@ -43,8 +44,7 @@ Library::Library(std::span<const std::string_view> blob,
          {std::tuple{&p.vertex, e.vertex, e.vertex_bytecode, e.vertex_profile},
           std::tuple{&p.fragment, e.fragment, e.fragment_bytecode, e.fragment_profile}}) {
       if (e.target == Target::spirv) {
-        words(code);
-        stage->spirv = words_.back();
+        stage->spirv = words(code);
       } else {
         stage->text = text(code);
       }

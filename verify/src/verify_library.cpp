@@ -4,7 +4,6 @@
 #include "backend.hpp"
 #include "chain_check.hpp"
 #include "minmax_check.hpp"
-#include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -41,9 +40,9 @@ TargetRun failed_run(Target target, std::string backend, const Error& error) {
 Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
                              const FloatImage& texel_reads, const Variant& variant, Target target,
                              const SceneFixture& fixture) {
-  const reference::ShaderLimits limits{traits(target).walk_step_limit};
-  auto expected = reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
-                                            fixture.receivers, ctx.precision, limits);
+  auto expected =
+      reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
+                                fixture.receivers, ctx.precision, reference::shader_limits(target));
   if (!expected) return expected.error();
   auto comparison = reference::compare(visibility, expected->visibility, expected->ambiguous,
                                        reference::tolerance(variant.technique, ctx.precision));

@@ -120,9 +120,9 @@ inline float minmax_pcf_inv_area(int kernel) {
   return 1.0f / static_cast<float>(kernel * kernel);
 }
 
-// MINMAX_MAX_VISITS for minmax_pcf with kernel K: the most nodes the
-// depth-first walk of shaderlib/common/minmax_traversal.glsl can visit over
-// a K x K window, for any map and position (its loop bound).
+// For minmax_pcf with kernel K: the most nodes the depth-first walk of
+// shaderlib/common/minmax_traversal.glsl can visit over a K x K window, for
+// any map and position (minmax_max_steps() derives its loop bound).
 int minmax_max_visits(int kernel);
 
 // MINMAX_MAX_STEPS before a target's cap: the most steps of that walk. A

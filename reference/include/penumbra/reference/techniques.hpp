@@ -26,6 +26,9 @@ struct ShaderLimits {
   int walk_steps = 0;
 };
 
+// The limits of `target`'s shaders (its traits).
+ShaderLimits shader_limits(Target target);
+
 struct Sample {
   double visibility = 1.0;  // in [0, 1]
   bool ambiguous = false;   // a point sample lies so close to a texel boundary that a
