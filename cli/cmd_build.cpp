@@ -1,7 +1,12 @@
+#include <unistd.h>
+
 #include <algorithm>
+#include <charconv>
+#include <chrono>
 #include <iostream>
 #include <thread>
 
+#include "build_cache.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "hlsl_compiler.hpp"
@@ -10,6 +15,7 @@
 #include "penumbra/compiler/shaderlib_source.hpp"
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/support/atomic_file.hpp"
+#include "penumbra/support/content_hash.hpp"
 #include "select_variants.hpp"
 
 namespace penumbra::cli {
@@ -53,6 +59,41 @@ std::string depfile_text(const std::string& out, const std::string& manifest,
   return text + "\n";
 }
 
+// --group I/N: 1 <= I <= N <= 4096.
+Result<std::pair<int, int>> parse_group(const std::string& text) {
+  int i = 0;
+  int n = 0;
+  const char* end = text.data() + text.size();
+  auto [slash, ec1] = std::from_chars(text.data(), end, i);
+  if (ec1 == std::errc() && slash != end && *slash == '/') {
+    auto [rest, ec2] = std::from_chars(slash + 1, end, n);
+    if (ec2 == std::errc() && rest == end && n >= 1 && n <= 4096 && i >= 1 && i <= n) {
+      return std::pair{i, n};
+    }
+  }
+  return make_error(Error::Kind::bad_input, "--group " + text,
+                    "expected I/N with 1 <= I <= N <= 4096 (build the I-th of N groups)");
+}
+
+// Whether `name` is in group I of N: its name's hash, so that a variant stays
+// in its group however the rest of the manifest changes.
+bool in_group(const std::string& name, std::pair<int, int> group) {
+  const std::uint64_t hash = std::stoull(content_hash(name).substr(0, 15), nullptr, 16);
+  return static_cast<int>(hash % static_cast<std::uint64_t>(group.second)) == group.first - 1;
+}
+
+// "[1234/9000] shaders" on stderr, redrawn at most every 100 ms.
+std::function<void(std::size_t, std::size_t)> terminal_progress() {
+  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+  return [last](std::size_t done, std::size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (done < total && now - *last < std::chrono::milliseconds(100)) return;
+    *last = now;
+    std::cerr << "\r[" << done << "/" << total << "] shaders" << (done == total ? "\r\033[K" : "")
+              << std::flush;
+  };
+}
+
 }  // namespace
 
 void add_build_command(CLI::App& app, int& exit_code) {
@@ -65,6 +106,9 @@ void add_build_command(CLI::App& app, int& exit_code) {
     std::string hlsl_compiler;
     std::string shaderlib;
     std::string depfile;
+    std::string group;
+    std::string cache_dir;
+    bool no_cache = false;
     int hlsl_timeout = 60;
     bool keep_going = false;
     bool quiet = false;
@@ -80,6 +124,13 @@ void add_build_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--variant", args->variants,
                   "Build only this variant of the manifest (repeatable)");
   cmd->add_option("--target", args->targets, "Build only for this target (repeatable)");
+  cmd->add_option("--group", args->group,
+                  "Build only group I of N (I/N): the variants whose names hash to it, a "
+                  "hermetic part for `penumbra merge` (docs/scale-out.md)");
+  cmd->add_option("--cache-dir", args->cache_dir,
+                  "Shader cache directory (default: $PENUMBRA_CACHE_DIR, else "
+                  "~/.cache/penumbra; docs/cache.md)");
+  cmd->add_flag("--no-cache", args->no_cache, "Neither read nor write the shader cache");
   cmd->add_flag("-k,--keep-going", args->keep_going,
                 "After a shader fails, compile the others and report every failure "
                 "(OUT is still written only when all succeed)");
@@ -109,6 +160,14 @@ void add_build_command(CLI::App& app, int& exit_code) {
       exit_code = report(variants.error());
       return;
     }
+    if (!args->group.empty()) {
+      auto group = parse_group(args->group);
+      if (!group) {
+        exit_code = report(group.error());
+        return;
+      }
+      std::erase_if(*variants, [&](const Variant& v) { return !in_group(v.name, *group); });
+    }
     auto compiler = find_hlsl_compiler(args->hlsl_compiler);
     if (!compiler) {
       exit_code = report(compiler.error());
@@ -125,18 +184,36 @@ void add_build_command(CLI::App& app, int& exit_code) {
       }
       shaderlib = std::move(*dir);
     }
-    const BuildOptions options{
-        .jobs = args->jobs,
-        .hlsl = {.compiler = *compiler, .timeout = std::chrono::seconds(args->hlsl_timeout)},
-        .keep_going = args->keep_going,
-        .shaderlib = shaderlib};
-    auto summary = build_library(*variants, args->out, options, stderr_diagnostics(args->verbose));
-    if (!summary) {
-      exit_code = report(summary.error());
-      return;
+    const std::filesystem::path cache = cache_directory(args->cache_dir, args->no_cache);
+    const BuildStamp stamp = BuildStamp::of(
+        cache, {*variants, args->out,
+                args->shaderlib.empty() ? "" : std::filesystem::absolute(args->shaderlib).string(),
+                *compiler});
+    std::optional<std::vector<std::string>> current;
+    if (!cache.empty()) current = stamp.current();
+    BuildSummary summary;
+    if (current) {
+      summary.inputs = *current;
+    } else {
+      const BuildOptions options{
+          .jobs = args->jobs,
+          .hlsl = {.compiler = *compiler, .timeout = std::chrono::seconds(args->hlsl_timeout)},
+          .keep_going = args->keep_going,
+          .shaderlib = shaderlib,
+          .cache_dir = cache,
+          .progress = !args->quiet && isatty(STDERR_FILENO) ? terminal_progress() : nullptr};
+      auto built = build_library(*variants, args->out, options, stderr_diagnostics(args->verbose));
+      if (!built) {
+        exit_code = report(built.error());
+        return;
+      }
+      summary = std::move(*built);
+      if (!cache.empty()) {
+        stamp.record(shaderlib->on_disk() ? summary.inputs : std::vector<std::string>{});
+      }
     }
     if (!args->depfile.empty()) {
-      const std::string text = depfile_text(args->out, args->manifest, *shaderlib, *summary);
+      const std::string text = depfile_text(args->out, args->manifest, *shaderlib, summary);
       if (Status written = write_file_atomic(args->depfile, text); !written) {
         Error error = written.error();
         error.where = "--depfile " + args->depfile;
@@ -144,10 +221,12 @@ void add_build_command(CLI::App& app, int& exit_code) {
         return;
       }
     }
-    if (!args->quiet) {
-      std::cout << "built " << summary->variants << " variants (" << summary->files
-                << " shader files, " << summary->bytecode << " bytecode files) into " << args->out
-                << "\n";
+    if (!args->quiet && current) {
+      std::cout << args->out << " is up to date\n";
+    } else if (!args->quiet) {
+      std::cout << "built " << summary.variants << " variants (" << summary.files
+                << " shader files, " << summary.bytecode << " bytecode files, " << summary.cached
+                << " shaders from the cache) into " << args->out << "\n";
     }
     if (compiler->empty() && has_hlsl(*variants)) {
       std::cerr << "penumbra: no Direct3D bytecode made: no HLSL compiler (give --hlsl-compiler "

@@ -1,30 +1,38 @@
 # penumbra_add_shader_library(<name> MANIFEST <file> [TARGETS <target>...]
 #                             [OUTPUT_DIR <dir>] [HLSL_COMPILER <path>]
-#                             [SHADERLIB_DIR <dir>])
+#                             [SHADERLIB_DIR <dir>] [GROUPS <n>])
 #
 # A static library <name> whose header <name>/shaders.hpp holds every variant
 # of MANIFEST for TARGETS (default: the manifest's own), with the reflection
 # and a lookup by technique and keys (docs/embedding.md). Generated at build
-# time, never at configure time: `penumbra build` into OUTPUT_DIR/library
-# (default: <current binary dir>/<name>), then `penumbra embed`. The Direct3D
-# bytecode needs vkd3d-compiler: HLSL_COMPILER, or what `penumbra build` finds
-# (PENUMBRA_HLSL_COMPILER, fetch-vkd3d's cache).
+# time, never at configure time, in GROUPS (default 16) hermetic steps:
+# `penumbra build --group I/N` writes each group's part under
+# OUTPUT_DIR/parts (default OUTPUT_DIR: <current binary dir>/<name>), then
+# `penumbra merge` joins them into OUTPUT_DIR/library, byte for byte what one
+# `penumbra build` writes, and `penumbra embed` writes the sources. A variant
+# belongs to a group by its name's hash, so an edited manifest set reruns the
+# steps of the groups whose variants changed; the others find their build
+# stamp current and leave their part untouched, and a step whose part comes
+# out the same leaves it untouched too, so Ninja reruns nothing after it.
+# Compiled shaders come from the shader cache when they were built before
+# (docs/cache.md). The Direct3D bytecode needs vkd3d-compiler: HLSL_COMPILER,
+# or what `penumbra build` finds (PENUMBRA_HLSL_COMPILER, fetch-vkd3d's cache).
 #
 # The shaders are compiled from SHADERLIB_DIR's files (`penumbra build
 # --shaderlib`), by default the installed package's Penumbra_SHADERLIB_DIR
-# when it exists. `penumbra build --depfile` lists the files of it that the
-# variants include, so editing one of them regenerates the library and
-# editing any other does not. Without a folder (in Penumbra's own tree, where
+# when it exists. Each step's depfile lists the files of it that its variants
+# include, so editing one of them reruns the steps that read it and editing
+# any other reruns nothing. Without a folder (in Penumbra's own tree, where
 # Penumbra_SHADERLIB_DIR is unset) the copy built into `penumbra` is used:
-# the command already depends on that executable, which is rebuilt when
+# the steps already depend on that executable, which is rebuilt when
 # shaderlib/ changes.
 function(penumbra_add_shader_library name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "MANIFEST;OUTPUT_DIR;HLSL_COMPILER;SHADERLIB_DIR"
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "MANIFEST;OUTPUT_DIR;HLSL_COMPILER;SHADERLIB_DIR;GROUPS"
                         "TARGETS")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "penumbra_add_shader_library(${name}): unknown arguments "
                         "'${ARG_UNPARSED_ARGUMENTS}' (allowed: MANIFEST, TARGETS, OUTPUT_DIR, "
-                        "HLSL_COMPILER, SHADERLIB_DIR)")
+                        "HLSL_COMPILER, SHADERLIB_DIR, GROUPS)")
   endif()
   if(NOT name MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
     message(FATAL_ERROR "penumbra_add_shader_library(${name}): the name becomes a C++ "
@@ -32,6 +40,13 @@ function(penumbra_add_shader_library name)
   endif()
   if(NOT ARG_MANIFEST)
     message(FATAL_ERROR "penumbra_add_shader_library(${name}): MANIFEST <file> is required")
+  endif()
+  if(NOT DEFINED ARG_GROUPS)
+    set(ARG_GROUPS 16)
+  endif()
+  if(NOT ARG_GROUPS MATCHES "^[1-9][0-9]*$" OR ARG_GROUPS GREATER 4096)
+    message(FATAL_ERROR "penumbra_add_shader_library(${name}): GROUPS ${ARG_GROUPS} is not "
+                        "allowed; allowed: an integer 1..4096")
   endif()
   cmake_path(ABSOLUTE_PATH ARG_MANIFEST BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
   if(NOT ARG_OUTPUT_DIR)
@@ -53,22 +68,35 @@ function(penumbra_add_shader_library name)
     cmake_path(ABSOLUTE_PATH ARG_SHADERLIB_DIR BASE_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
     list(APPEND build_args --shaderlib ${ARG_SHADERLIB_DIR})
   endif()
+
+  # One step per group: its part's index.json is the depfile's target.
+  set(parts)
+  set(part_indexes)
+  foreach(group RANGE 1 ${ARG_GROUPS})
+    set(part ${ARG_OUTPUT_DIR}/parts/${group})
+    add_custom_command(
+      OUTPUT ${part}/index.json
+      COMMAND Penumbra::penumbra build ${ARG_MANIFEST} -o ${part} -q --group ${group}/${ARG_GROUPS}
+              --depfile ${ARG_OUTPUT_DIR}/parts/${group}.d ${build_args}
+      DEPENDS ${ARG_MANIFEST} $<TARGET_FILE:Penumbra::penumbra>
+      DEPFILE ${ARG_OUTPUT_DIR}/parts/${group}.d
+      COMMENT "penumbra: ${name}, group ${group}/${ARG_GROUPS}"
+      VERBATIM)
+    list(APPEND parts ${part})
+    list(APPEND part_indexes ${part}/index.json)
+  endforeach()
+
+  # The header is a byproduct: `penumbra embed` rewrites it only when it
+  # changes, and Ninja then rebuilds nothing that includes it.
   set(source ${ARG_OUTPUT_DIR}/${name}_shaders.cpp)
-  set(index ${ARG_OUTPUT_DIR}/library/index.json)
-  set(depfile ${ARG_OUTPUT_DIR}/${name}.d)
-  # index.json comes first: it is the depfile's target. The header is a
-  # byproduct: `penumbra embed` rewrites it only when it changes, and Ninja
-  # then rebuilds nothing that includes it.
   add_custom_command(
-    OUTPUT ${index} ${source}
+    OUTPUT ${ARG_OUTPUT_DIR}/library/index.json ${source}
     BYPRODUCTS ${ARG_OUTPUT_DIR}/include/${name}/shaders.hpp
-    COMMAND Penumbra::penumbra build ${ARG_MANIFEST} -o ${ARG_OUTPUT_DIR}/library -q
-            --depfile ${depfile} ${build_args}
+    COMMAND Penumbra::penumbra merge ${parts} -o ${ARG_OUTPUT_DIR}/library -q
     COMMAND Penumbra::penumbra embed ${ARG_OUTPUT_DIR}/library --name ${name}
             -o ${ARG_OUTPUT_DIR}
-    DEPENDS ${ARG_MANIFEST} $<TARGET_FILE:Penumbra::penumbra>
-    DEPFILE ${depfile}
-    COMMENT "penumbra: shader library ${name} from ${ARG_MANIFEST}"
+    DEPENDS ${part_indexes} $<TARGET_FILE:Penumbra::penumbra>
+    COMMENT "penumbra: shader library ${name} (${ARG_GROUPS} groups)"
     VERBATIM)
   add_library(${name} STATIC ${source})
   target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${ARG_OUTPUT_DIR}/include>)

@@ -51,4 +51,11 @@ std::string ShaderJob::describe() const {
   return out;
 }
 
+void ShaderJob::release_code() {
+  std::string().swap(preprocessed);
+  std::vector<std::uint32_t>().swap(spirv);
+  std::string().swap(text);
+  interface = {};
+}
+
 }  // namespace penumbra

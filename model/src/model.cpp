@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/model/target_traits.hpp"
@@ -114,6 +115,15 @@ std::string variant_name(Technique technique, const VariantKeys& keys) {
   if (keys.blur_radius) name += "_r" + std::to_string(*keys.blur_radius);
   if (keys.depth_aware.value_or(false)) name += "_depth_aware";
   return name;
+}
+
+bool variant_less(const Variant& a, const Variant& b) {
+  const auto key = [](const Variant& v) {
+    const VariantKeys& k = v.keys;
+    return std::tie(v.technique, k.kernel, k.blocker_samples, k.pcf_samples, k.disk, k.traversal,
+                    k.max_nodes, k.blur_radius, k.depth_aware);
+  };
+  return key(a) < key(b);
 }
 
 }  // namespace penumbra

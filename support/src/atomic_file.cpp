@@ -2,12 +2,16 @@
 // directory being atomic, so temporaries always live beside their target.
 #include "penumbra/support/atomic_file.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <random>
 #include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
+
+#include "penumbra/support/file.hpp"
 
 namespace penumbra {
 namespace fs = std::filesystem;
@@ -99,6 +103,51 @@ StagedDirectory::~StagedDirectory() {
   if (committed_ || staging_.empty()) return;
   std::error_code ignored;
   fs::remove_all(staging_, ignored);
+}
+
+namespace {
+
+// The regular files under `root`, relative, sorted.
+std::vector<fs::path> tree_files(const fs::path& root, std::error_code& ec) {
+  std::vector<fs::path> files;
+  for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::end(it);
+       it.increment(ec)) {
+    if (it->is_regular_file()) files.push_back(it->path().lexically_relative(root));
+  }
+  std::ranges::sort(files);
+  return files;
+}
+
+bool same_bytes(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::file_size(a, ec) != fs::file_size(b, ec) || ec) return false;
+  const Result<std::string> left = read_file(a);
+  const Result<std::string> right = read_file(b);
+  return left && right && *left == *right;
+}
+
+// Whether two directories hold the same files with the same bytes.
+bool same_tree(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (!fs::is_directory(b, ec)) return false;
+  const std::vector<fs::path> left = tree_files(a, ec);
+  const std::vector<fs::path> right = tree_files(b, ec);
+  if (ec || left != right) return false;
+  return std::ranges::all_of(left, [&](const fs::path& f) { return same_bytes(a / f, b / f); });
+}
+
+}  // namespace
+
+Result<bool> StagedDirectory::commit_if_changed() {
+  if (committed_) return make_error(Error::Kind::internal, final_.string(), "already committed");
+  if (!same_tree(staging_, final_)) {
+    PENUMBRA_TRY(commit());
+    return true;
+  }
+  std::error_code ignored;
+  fs::remove_all(staging_, ignored);
+  committed_ = true;
+  return false;
 }
 
 Status StagedDirectory::commit() {

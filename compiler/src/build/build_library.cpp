@@ -1,3 +1,6 @@
+#include <glslang/build_info.h>
+#include <spirv-tools/libspirv.h>
+
 #include <algorithm>
 #include <atomic>
 #include <mutex>
@@ -5,10 +8,13 @@
 #include <thread>
 
 #include "build/index_json.hpp"
+#include "build/output_dir.hpp"
 #include "build/pass_plan.hpp"
 #include "build/pipeline.hpp"
 #include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/disk.hpp"
 #include "penumbra/support/atomic_file.hpp"
+#include "penumbra/support/content_hash.hpp"
 #include "reflect/reflect_target.hpp"
 
 namespace penumbra {
@@ -40,20 +46,29 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
 }
 
 // Runs all jobs on `threads` workers; unless `keep_going`, stops early after
-// a failure. The errors of the failed jobs, in plan order.
-std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline, int threads,
-                            bool keep_going) {
+// a failure. Each finished job keeps only what index.json needs, so memory
+// does not grow with the shaders' size. The errors of the failed jobs, in
+// plan order.
+std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline,
+                            const BuildOptions& options, int threads) {
   std::vector<std::optional<Error>> errors(jobs.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  std::size_t finished = 0;
   auto worker = [&] {
-    for (std::size_t i = next++; i < jobs.size() && (keep_going || !failed); i = next++) {
+    for (std::size_t i = next++; i < jobs.size() && (options.keep_going || !failed); i = next++) {
       try {
         if (Status status = pipeline.run(jobs[i]); !status) errors[i] = status.error();
       } catch (const std::exception& e) {  // a library below us threw: report, never terminate
         errors[i] = make_error(Error::Kind::internal, jobs[i].describe(), e.what());
       }
+      jobs[i].release_code();
       if (errors[i]) failed = true;
+      if (options.progress) {
+        const std::scoped_lock lock(progress_mutex);
+        options.progress(++finished, jobs.size());
+      }
     }
   };
   {
@@ -76,38 +91,38 @@ Error keep_going_error(const std::vector<Error>& failures, std::size_t jobs,
                         " shaders failed (each reported above); not written, left as it was");
 }
 
-// OUT is replaced wholesale, so it must be absent, empty, or a library that
-// an earlier build wrote (it has index.json): never a user's file or folder.
-Status check_replaceable(const std::filesystem::path& out) {
-  std::error_code ec;
-  const auto status = std::filesystem::symlink_status(out, ec);
-  if (ec || !std::filesystem::exists(status)) return {};
-  if (!std::filesystem::is_directory(status)) {
-    return make_error(Error::Kind::bad_input, out.string(),
-                      "exists and is not a directory; refusing to replace it with a library");
-  }
-  const bool empty = std::filesystem::is_empty(out, ec);
-  if (!ec && !empty && !std::filesystem::exists(out / "index.json", ec)) {
-    return make_error(Error::Kind::bad_input, out.string(),
-                      "is a non-empty directory without index.json (not a penumbra library); "
-                      "refusing to replace it");
-  }
-  return {};
-}
-
 }  // namespace
 
 std::string_view penumbra_version() {
   return PENUMBRA_VERSION;
 }
 
+std::string toolchain_id() {
+  static const std::string id = [] {
+    std::string out = "penumbra " + std::string(penumbra_version());
+    if (const std::string build = executable_build_id(); !build.empty()) out += "; build " + build;
+    out += "; glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH);
+    out += "; " + std::string(spvSoftwareVersionDetailsString());
+    return out;
+  }();
+  return id;
+}
+
+std::string variant_identity(const Variant& variant) {
+  nlohmann::json out = {{"name", variant.name},
+                        {"technique", to_string(variant.technique)},
+                        {"keys", variant_keys_json(variant.keys)}};
+  if (variant.blocker_disk) out["blocker_disk"] = disk_to_json(*variant.blocker_disk);
+  if (variant.pcf_disk) out["pcf_disk"] = disk_to_json(*variant.pcf_disk);
+  out["blur_weights"] = variant.blur_weights;
+  return out.dump();
+}
+
 Result<BuildSummary> build_library(std::span<const Variant> variants,
                                    const std::filesystem::path& out_dir,
                                    const BuildOptions& options,
                                    const DiagnosticConsumer& diagnostics) {
-  if (variants.empty()) {
-    return make_error(Error::Kind::bad_input, out_dir.string(), "no variants to build");
-  }
   PENUMBRA_TRY(check_replaceable(out_dir));
   const auto shaderlib = options.shaderlib ? options.shaderlib : embedded_shaderlib();
   auto staged = StagedDirectory::create(out_dir);
@@ -121,8 +136,8 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                "compiling " + std::to_string(jobs.size()) + " shaders for " +
                    std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
                    " threads"});
-  std::vector<Error> failures = run_jobs(jobs, Pipeline(shaderlib, staged->staging(), options.hlsl),
-                                         threads, options.keep_going);
+  const Pipeline pipeline(shaderlib, staged->staging(), options.hlsl, options.cache_dir);
+  std::vector<Error> failures = run_jobs(jobs, pipeline, options, threads);
   if (!failures.empty() && !options.keep_going) return failures.front();
   for (const ShaderJob& job : jobs) {
     for (const Diagnostic& d : job.diagnostics) diagnostics(d);
@@ -132,18 +147,24 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
     return keep_going_error(failures, jobs.size(), out_dir);
   }
 
-  const std::string index = index_text(index_json(variants, jobs));
-  PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index));
-  PENUMBRA_TRY(staged->commit());
+  const JobTable table(jobs);
+  IndexWriter index;
+  for (const Variant& variant : variants) index.add(resolve_variant(variant, table));
+  PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index.finish()));
+  // Unchanged output keeps its times: a build system then reruns nothing
+  // that depends on it.
+  PENUMBRA_TRY(staged->commit_if_changed());
   const auto bytecode =
       std::ranges::count_if(jobs, [](const ShaderJob& job) { return job.bytecode.has_value(); });
   std::set<std::string> inputs;
   for (const ShaderJob& job : jobs) {
     for (const std::string& path : job.inputs) inputs.insert(shaderlib->location(path));
   }
+  const auto cached = std::ranges::count_if(jobs, &ShaderJob::from_cache);
   return BuildSummary{variants.size(),
                       jobs.size(),
                       static_cast<std::size_t>(bytecode),
+                      static_cast<std::size_t>(cached),
                       {inputs.begin(), inputs.end()}};
 }
 

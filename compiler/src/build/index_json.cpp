@@ -1,6 +1,5 @@
 #include "build/index_json.hpp"
 
-#include <map>
 #include <string>
 #include <utility>
 
@@ -14,16 +13,15 @@ namespace penumbra {
 namespace {
 
 // A top-level table of index.json (`pass_files`, `reflections`,
-// `texture_contents`, `disks`):
-// each distinct record once, in the order variants first use it; variants
-// refer to a record by its position. Most records are shared: the depth and
-// min-max passes of every variant, the query pass's reflection of variants
-// that differ only in baked constants, a disk that variants bake.
+// `texture_contents`, `disks`): each distinct record once; variants refer to
+// a record by its position. Most records are shared: the depth and min-max
+// passes of every variant, the query pass's reflection of variants that
+// differ only in baked constants, a disk that variants bake.
 class SharedTable {
  public:
-  std::size_t add(nlohmann::json record) {
+  std::size_t add(const nlohmann::json& record) {
     const auto [at, added] = positions_.try_emplace(record.dump(), records_.size());
-    if (added) records_.push_back(std::move(record));
+    if (added) records_.push_back(record);
     return at->second;
   }
   nlohmann::json take() { return std::exchange(records_, nlohmann::json::array()); }
@@ -33,101 +31,34 @@ class SharedTable {
   std::map<std::string, std::size_t> positions_;  // a record's text -> its position
 };
 
-struct SharedTables {
+constexpr const char* kStages[] = {"vert", "frag"};
+
+nlohmann::json files_json(const ShaderJob* vert, const ShaderJob* frag) {
+  nlohmann::json files = nlohmann::json::object();
+  for (const ShaderJob* job : {vert, frag}) {
+    if (!job) continue;
+    const std::string stage(stage_key(job->stage));
+    files[stage] = job->output_path;
+    if (!job->bytecode) continue;
+    nlohmann::json& bytecode = files["bytecode"][stage];
+    bytecode = {{"path", job->bytecode->path},
+                {"profile", job->bytecode->profile},
+                {"size", job->bytecode->size}};
+    if (job->bytecode->instruction_slots > 0) {
+      bytecode["instruction_slots"] = job->bytecode->instruction_slots;
+    }
+  }
+  return files;
+}
+
+}  // namespace
+
+struct IndexWriter::Tables {
   SharedTable pass_files;
   SharedTable reflections;
   SharedTable texture_contents;
   SharedTable disks;
 };
-
-// A reflection record as index.json stores it: each constant texture's
-// `contents` (hlsl_dx9's disks, hundreds of floats) a position in
-// `texture_contents`, so that records differing only in their disks stay
-// small.
-nlohmann::json reflection_record(const PassReflection& reflection, SharedTables& tables) {
-  nlohmann::json record = reflection;
-  for (const char* stage : {"vert", "frag"}) {
-    if (!record[stage].contains("textures")) continue;
-    for (nlohmann::json& texture : record[stage]["textures"]) {
-      if (!texture.contains("contents")) continue;
-      texture["contents"] = tables.texture_contents.add(std::move(texture["contents"]));
-    }
-  }
-  return record;
-}
-
-// The job that produced `source` for `target` (shared or this variant's).
-const ShaderJob* find_job(const std::vector<ShaderJob>& jobs, const Variant& variant, Target target,
-                          const PassStageSource& source) {
-  for (const ShaderJob& job : jobs) {
-    const bool owner = source.per_variant ? job.variant == &variant : job.variant == nullptr;
-    if (owner && job.target == target && job.pass == source.pass && job.stage == source.stage) {
-      return &job;
-    }
-  }
-  return nullptr;
-}
-
-nlohmann::json variant_json(const Variant& variant, const std::vector<ShaderJob>& jobs,
-                            SharedTables& tables) {
-  nlohmann::json out = {{"name", variant.name},
-                        {"technique", to_string(variant.technique)},
-                        {"keys", variant_keys_json(variant.keys)}};
-  nlohmann::json disks = nlohmann::json::object();
-  if (variant.blocker_disk) {
-    disks["blocker"] = tables.disks.add(disk_to_json(*variant.blocker_disk));
-  }
-  if (variant.pcf_disk) disks["pcf"] = tables.disks.add(disk_to_json(*variant.pcf_disk));
-  out["disks"] = disks;
-  if (!variant.blur_weights.empty()) {
-    // Exact like the disks: each float widens to double, written shortest.
-    nlohmann::json weights = nlohmann::json::array();
-    for (float w : variant.blur_weights) weights.push_back(static_cast<double>(w));
-    out["blur_weights"] = weights;
-  }
-
-  nlohmann::json targets = nlohmann::json::array();
-  nlohmann::json passes = nlohmann::json::object();
-  nlohmann::json reflection = nlohmann::json::object();
-  for (Target target : variant.targets) {
-    targets.push_back(to_string(target));
-    const std::string target_name(to_string(target));
-    for (PassKind kind : describe(variant.technique).passes) {
-      const std::string pass(to_string(kind));
-      const ShaderJob* vert = nullptr;
-      const ShaderJob* frag = nullptr;
-      nlohmann::json files = nlohmann::json::object();
-      for (const PassStageSource& source : pass_plan()) {
-        if (source.pass != kind) continue;
-        const ShaderJob* job = find_job(jobs, variant, target, source);
-        if (!job) continue;
-        (source.stage == ShaderStage::vertex ? vert : frag) = job;
-        const std::string stage(stage_key(source.stage));
-        files[stage] = job->output_path;
-        if (job->bytecode) {
-          nlohmann::json& bytecode = files["bytecode"][stage];
-          bytecode = {{"path", job->bytecode->path},
-                      {"profile", job->bytecode->profile},
-                      {"size", job->bytecode->size}};
-          if (job->bytecode->instruction_slots > 0) {
-            bytecode["instruction_slots"] = job->bytecode->instruction_slots;
-          }
-        }
-      }
-      if (!files.empty()) passes[pass][target_name] = tables.pass_files.add(std::move(files));
-      if (vert && frag) {
-        reflection[pass][target_name] = tables.reflections.add(
-            reflection_record(join_stages(vert->reflection, frag->reflection), tables));
-      }
-    }
-  }
-  out["targets"] = targets;
-  out["passes"] = passes;
-  out["reflection"] = reflection;
-  return out;
-}
-
-}  // namespace
 
 nlohmann::json variant_keys_json(const VariantKeys& keys) {
   nlohmann::json out = nlohmann::json::object();
@@ -137,27 +68,132 @@ nlohmann::json variant_keys_json(const VariantKeys& keys) {
   return out;
 }
 
-nlohmann::json index_json(std::span<const Variant> variants, const std::vector<ShaderJob>& jobs) {
-  nlohmann::json out = {{"generator", "penumbra " + std::string(penumbra_version())},
-                        {"schema", kIndexSchema},
-                        {"defaults",
-                         {{"light_world_size", 0.5},
-                          {"light_frustum_width", 3.75},
-                          {"near_plane", 9.5},
-                          {"bias", 0.0},
-                          {"filter_radius_texels", 2.0}}}};
-  SharedTables tables;
-  nlohmann::json list = nlohmann::json::array();
-  for (const Variant& variant : variants) list.push_back(variant_json(variant, jobs, tables));
-  out["disks"] = tables.disks.take();
-  out["pass_files"] = tables.pass_files.take();
-  out["reflections"] = tables.reflections.take();
-  out["texture_contents"] = tables.texture_contents.take();
-  out["variants"] = list;
+JobTable::JobTable(const std::vector<ShaderJob>& jobs) {
+  for (const ShaderJob& job : jobs) jobs_[{job.variant, job.target, job.pass, job.stage}] = &job;
+}
+
+const ShaderJob* JobTable::find(const Variant& variant, Target target, PassKind pass,
+                                ShaderStage stage) const {
+  for (const PassStageSource& source : pass_plan()) {
+    if (source.pass != pass || source.stage != stage) continue;
+    const auto found = jobs_.find({source.per_variant ? &variant : nullptr, target, pass, stage});
+    return found == jobs_.end() ? nullptr : found->second;
+  }
+  return nullptr;
+}
+
+ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs) {
+  nlohmann::json out = {{"name", variant.name},
+                        {"technique", to_string(variant.technique)},
+                        {"keys", variant_keys_json(variant.keys)}};
+  nlohmann::json disks = nlohmann::json::object();
+  if (variant.blocker_disk) disks["blocker"] = disk_to_json(*variant.blocker_disk);
+  if (variant.pcf_disk) disks["pcf"] = disk_to_json(*variant.pcf_disk);
+  out["disks"] = disks;
+  if (!variant.blur_weights.empty()) {
+    // Exact like the disks: each float widens to double, written shortest.
+    nlohmann::json weights = nlohmann::json::array();
+    for (float w : variant.blur_weights) weights.push_back(static_cast<double>(w));
+    out["blur_weights"] = weights;
+  }
+  nlohmann::json targets = nlohmann::json::array();
+  nlohmann::json passes = nlohmann::json::object();
+  nlohmann::json reflection = nlohmann::json::object();
+  for (Target target : variant.targets) {
+    const std::string target_name(to_string(target));
+    targets.push_back(target_name);
+    for (PassKind kind : describe(variant.technique).passes) {
+      const std::string pass(to_string(kind));
+      const ShaderJob* vert = jobs.find(variant, target, kind, ShaderStage::vertex);
+      const ShaderJob* frag = jobs.find(variant, target, kind, ShaderStage::fragment);
+      if (vert || frag) passes[pass][target_name] = files_json(vert, frag);
+      if (vert && frag) {
+        reflection[pass][target_name] = join_stages(vert->reflection, frag->reflection);
+      }
+    }
+  }
+  out["targets"] = targets;
+  out["passes"] = passes;
+  out["reflection"] = reflection;
   return out;
 }
 
-std::string index_text(const nlohmann::json& index) {
+ResolvedVariant resolve_variant(const nlohmann::json& index, std::size_t i) {
+  nlohmann::json out = index.at("variants").at(i);
+  for (auto& [role, position] : out["disks"].items()) {
+    position = index.at("disks").at(position.get<std::size_t>());
+  }
+  for (auto& [pass, by_target] : out["passes"].items()) {
+    for (auto& [target, position] : by_target.items()) {
+      position = index.at("pass_files").at(position.get<std::size_t>());
+    }
+  }
+  for (auto& [pass, by_target] : out["reflection"].items()) {
+    for (auto& [target, position] : by_target.items()) {
+      nlohmann::json record = index.at("reflections").at(position.get<std::size_t>());
+      for (const char* stage : kStages) {
+        if (!record[stage].contains("textures")) continue;
+        for (nlohmann::json& texture : record[stage]["textures"]) {
+          if (!texture.contains("contents")) continue;
+          texture["contents"] =
+              index.at("texture_contents").at(texture["contents"].get<std::size_t>());
+        }
+      }
+      position = std::move(record);
+    }
+  }
+  return out;
+}
+
+IndexWriter::IndexWriter() : tables_(std::make_unique<Tables>()) {}
+IndexWriter::~IndexWriter() = default;
+
+void IndexWriter::add(const ResolvedVariant& variant) {
+  nlohmann::json out = variant;
+  for (auto& [role, disk] : out["disks"].items()) disk = tables_->disks.add(disk);
+  // Shared records are numbered in the order of the variant's targets, then
+  // of its technique's passes (not the alphabetical order of JSON members).
+  std::span<const PassKind> passes;
+  if (const auto technique = parse_technique(out["technique"].get<std::string>())) {
+    passes = describe(*technique).passes;
+  }
+  for (const nlohmann::json& target_json : out["targets"]) {
+    const std::string target = target_json.get<std::string>();
+    for (PassKind kind : passes) {
+      const std::string pass(to_string(kind));
+      if (out["passes"].contains(pass) && out["passes"][pass].contains(target)) {
+        nlohmann::json& files = out["passes"][pass][target];
+        files = tables_->pass_files.add(files);
+      }
+      if (!out["reflection"].contains(pass) || !out["reflection"][pass].contains(target)) continue;
+      nlohmann::json& record = out["reflection"][pass][target];
+      for (const char* stage : kStages) {
+        if (!record[stage].contains("textures")) continue;
+        for (nlohmann::json& texture : record[stage]["textures"]) {
+          if (!texture.contains("contents")) continue;
+          texture["contents"] = tables_->texture_contents.add(texture["contents"]);
+        }
+      }
+      record = tables_->reflections.add(record);
+    }
+  }
+  variants_.push_back(std::move(out));
+}
+
+std::string IndexWriter::finish() {
+  const nlohmann::json index = {{"generator", "penumbra " + std::string(penumbra_version())},
+                                {"schema", kIndexSchema},
+                                {"defaults",
+                                 {{"light_world_size", 0.5},
+                                  {"light_frustum_width", 3.75},
+                                  {"near_plane", 9.5},
+                                  {"bias", 0.0},
+                                  {"filter_radius_texels", 2.0}}},
+                                {"disks", tables_->disks.take()},
+                                {"pass_files", tables_->pass_files.take()},
+                                {"reflections", tables_->reflections.take()},
+                                {"texture_contents", tables_->texture_contents.take()},
+                                {"variants", std::exchange(variants_, nlohmann::json::array())}};
   std::string out = "{";
   const char* separator = "\n";
   for (const auto& [key, value] : index.items()) {

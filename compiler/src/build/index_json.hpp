@@ -1,6 +1,9 @@
-// OUT/index.json (docs/shader-interface.md) from the jobs of a finished build.
+// OUT/index.json (docs/shader-interface.md): written from one resolved
+// record per variant, by a build (from its jobs) or by a merge (from parts'
+// index.json), through the same IndexWriter, so both give the same bytes.
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
@@ -12,15 +15,48 @@ namespace penumbra {
 
 nlohmann::json variant_keys_json(const VariantKeys& keys);
 
-// `jobs` holds every finished job: shared ones (variant == null) and each
-// variant's own.
-nlohmann::json index_json(std::span<const Variant> variants, const std::vector<ShaderJob>& jobs);
+// A variant's record with nothing shared: `disks`, `passes` and `reflection`
+// hold their records themselves instead of positions in index.json's
+// top-level tables (constant textures keep their `contents`).
+using ResolvedVariant = nlohmann::json;
 
-// index.json's text: each top-level member on a line of its own, and each
-// record of a top-level array (a variant, a reflection record, a disk) on
-// one line (one variant a line: grep finds it). Indenting every nested
-// member, as dump(2) does, made over half of the file whitespace and each
-// variant hundreds of lines.
-std::string index_text(const nlohmann::json& index);
+// The finished jobs of a build, found by what they are.
+class JobTable {
+ public:
+  explicit JobTable(const std::vector<ShaderJob>& jobs);
+  // The job that made `stage` of `pass` for `target`: the variant's own, or
+  // the shared one when the pass is shared.
+  const ShaderJob* find(const Variant& variant, Target target, PassKind pass,
+                        ShaderStage stage) const;
+
+ private:
+  using Key = std::tuple<const Variant*, Target, PassKind, ShaderStage>;
+  std::map<Key, const ShaderJob*> jobs_;
+};
+
+ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs);
+
+// The resolved record of index.json's variant `i` (a parsed index of
+// kIndexSchema, as load_library checks it).
+ResolvedVariant resolve_variant(const nlohmann::json& index, std::size_t i);
+
+// Builds index.json from resolved variants, in library order: each
+// distinct shared record once, in the order variants first use it.
+class IndexWriter {
+ public:
+  IndexWriter();
+  ~IndexWriter();
+  void add(const ResolvedVariant& variant);
+  // index.json's text: each top-level member on a line of its own, and each
+  // record of a top-level array (a variant, a reflection record, a disk) on
+  // one line (one variant a line: grep finds it). Indenting every nested
+  // member, as dump(2) does, made over half of the file whitespace.
+  std::string finish();
+
+ private:
+  struct Tables;
+  std::unique_ptr<Tables> tables_;
+  nlohmann::json variants_ = nlohmann::json::array();
+};
 
 }  // namespace penumbra

@@ -74,6 +74,11 @@ std::string header(const std::string& name, std::size_t programs) {
          name + "\n";
 }
 
+Status write_if_changed(const std::filesystem::path& path, const std::string& text) {
+  if (auto existing = read_file(path); existing && *existing == text) return {};
+  return write_file_atomic(path, text);
+}
+
 }  // namespace
 
 Result<EmbedSummary> embed_library(const Library& library, const std::filesystem::path& out,
@@ -143,14 +148,12 @@ Result<EmbedSummary> embed_library(const Library& library, const std::filesystem
     return make_error(Error::Kind::io, out.string(),
                       "cannot create the folder: " + error.message());
   }
-  // The header changes only with the program count: left alone otherwise,
-  // so that what includes it is not rebuilt for a new blob.
-  const std::filesystem::path header_path = out / "include" / options.name / "shaders.hpp";
-  const std::string header_text = header(options.name, summary.programs);
-  if (auto existing = read_file(header_path); !existing || *existing != header_text) {
-    PENUMBRA_TRY(write_file_atomic(header_path, header_text));
-  }
-  PENUMBRA_TRY(write_file_atomic(out / (options.name + "_shaders.cpp"), source));
+  // Each file is left alone when unchanged, so that nothing is recompiled
+  // for it; the header changes only with the program count, so what
+  // includes it is not rebuilt for a new blob.
+  PENUMBRA_TRY(write_if_changed(out / "include" / options.name / "shaders.hpp",
+                                header(options.name, summary.programs)));
+  PENUMBRA_TRY(write_if_changed(out / (options.name + "_shaders.cpp"), source));
   return summary;
 }
 

@@ -157,16 +157,6 @@ void apply(const Exclusion& exclusion, Variant& variant) {
   }
 }
 
-// Technique order, then keys ascending; names are unique, so this is total.
-bool variant_less(const Variant& a, const Variant& b) {
-  const auto key = [](const Variant& v) {
-    const VariantKeys& k = v.keys;
-    return std::tie(v.technique, k.kernel, k.blocker_samples, k.pcf_samples, k.disk, k.traversal,
-                    k.max_nodes, k.blur_radius, k.depth_aware);
-  };
-  return key(a) < key(b);
-}
-
 }  // namespace
 
 // Variants are keyed by name, so a variant that several sets produce is built

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -23,6 +24,14 @@ namespace penumbra {
 // "0.1.0": the version written into index.json's generator field.
 std::string_view penumbra_version();
 
+// "penumbra 0.1.0; build <GNU build ID>; glslang 12.0.0; SPIRV-Tools ...":
+// the compilers linked into this executable, part of every cache key.
+std::string toolchain_id();
+
+// What decides a variant's shaders besides the shaderlib and its targets:
+// name, technique, keys, disks and blur weights, as text for cache keys.
+std::string variant_identity(const Variant& variant);
+
 // Direct3D bytecode from the HLSL targets' text, by vkd3d-compiler
 // 2.1 or newer (../shared/tools/fetch-vkd3d installs it).
 struct HlslCompilerOptions {
@@ -38,19 +47,26 @@ struct BuildOptions {
   bool keep_going = false;
   // Where shaderlib files are read from (penumbra build --shaderlib DIR).
   std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib();
+  // The content-addressed shader cache (docs/cache.md); empty: none.
+  std::filesystem::path cache_dir = {};
+  // Called after each shader with (finished, total), from the worker
+  // threads but never two at once; empty: no progress reports.
+  std::function<void(std::size_t, std::size_t)> progress = {};
 };
 
 struct BuildSummary {
   std::size_t variants = 0;  // variants written
   std::size_t files = 0;     // shader files written (text or SPIR-V)
   std::size_t bytecode = 0;  // Direct3D bytecode files written beside the HLSL
+  std::size_t cached = 0;    // shader files restored from the cache, not compiled
   // The shaderlib files the built shaders read, as the source's locations
   // (ShaderlibSource::location), sorted and unique: a build's dependencies.
   std::vector<std::string> inputs;
 };
 
 // Compiles everything into a staging directory and swaps it into `out_dir`
-// only when all of it succeeded: on error `out_dir` is left as it was.
+// only when all of it succeeded: on error `out_dir` is left as it was. No
+// variants make a library with none (an empty group of a split build).
 // Without keep_going the error is the first failing shader's; with it, every
 // failing shader is reported to `diagnostics` as an error and the returned
 // error counts them. `diagnostics` is called from the calling thread only.
@@ -58,6 +74,16 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                                    const std::filesystem::path& out_dir,
                                    const BuildOptions& options,
                                    const DiagnosticConsumer& diagnostics);
+
+// Joins libraries that builds of disjoint parts of one manifest wrote (penumbra
+// build --group I/N) into `out_dir`, byte for byte the library one build of
+// the whole would write: variants in library order (variant_less), shared
+// records numbered as that build numbers them, every file copied. Errors
+// (bad_input) name the part: not a library, a variant in two parts, parts
+// from different penumbra versions, or a shared file that parts disagree on.
+// `out_dir` is replaced only on success.
+Result<BuildSummary> merge_libraries(std::span<const std::filesystem::path> parts,
+                                     const std::filesystem::path& out_dir);
 
 // One compiled stage, in memory.
 struct CompiledStage {

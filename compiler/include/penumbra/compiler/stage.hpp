@@ -50,6 +50,11 @@ struct ShaderJob {
   std::optional<BytecodeFile> bytecode;  // bytecode: HLSL targets with an HLSL compiler
   // Warnings found by stages (e.g. over the instruction slots), reported by the build.
   std::vector<Diagnostic> diagnostics;
+  bool from_cache = false;  // restored from the shader cache: only preprocess ran
+
+  // Frees the code products (preprocessed text, SPIR-V, target text,
+  // interface) once written: a build keeps only what index.json needs.
+  void release_code();
 
   // "variant pcss_b16_p16_whitepaper16, target hlsl_dx9, query.frag" for messages.
   std::string describe() const;

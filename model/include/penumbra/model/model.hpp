@@ -152,6 +152,10 @@ struct Variant {
 // minmax_pcf_k16_brute_force, backprojection_n4096, screen_blur_r4_depth_aware.
 std::string variant_name(Technique technique, const VariantKeys& keys);
 
+// A library's order of variants: technique order, then keys ascending (a
+// key left out first). Names are unique, so the order is total.
+bool variant_less(const Variant& a, const Variant& b);
+
 // The steps `variant`'s walk may take (minmax_pcf: MINMAX_MAX_STEPS,
 // backprojection: BACKPROJECTION_MAX_STEPS; with the brute_force traversal
 // a step reads one texel): the walk's own bound, capped by `limit` when it

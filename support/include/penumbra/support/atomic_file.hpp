@@ -26,6 +26,11 @@ class StagedDirectory {
   const std::filesystem::path& staging() const { return staging_; }
   // Replaces final_dir with the staged tree.
   Status commit();
+  // Like commit(), unless final_dir already holds the same files with the
+  // same bytes: then the staged tree is dropped and final_dir keeps its
+  // times, so build systems that compare them (Ninja's restat) rebuild
+  // nothing downstream. Whether final_dir was replaced.
+  Result<bool> commit_if_changed();
 
  private:
   StagedDirectory(std::filesystem::path final_dir, std::filesystem::path staging);

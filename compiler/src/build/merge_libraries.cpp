@@ -1,0 +1,116 @@
+#include <algorithm>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "build/index_json.hpp"
+#include "build/output_dir.hpp"
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/support/atomic_file.hpp"
+#include "penumbra/support/content_hash.hpp"
+#include "penumbra/support/file.hpp"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PartVariant {
+  const Variant* variant;  // for the order
+  std::size_t part;
+  std::size_t index;  // in the part's index.json
+};
+
+// Every file a resolved variant's passes name: shaders and bytecode.
+std::vector<std::string> variant_files(const ResolvedVariant& variant) {
+  std::vector<std::string> files;
+  for (const auto& [pass, by_target] : variant.at("passes").items()) {
+    for (const auto& [target, record] : by_target.items()) {
+      for (const char* stage : {"vert", "frag"}) {
+        if (record.contains(stage)) files.push_back(record[stage].get<std::string>());
+        if (record.contains("bytecode") && record["bytecode"].contains(stage)) {
+          files.push_back(record["bytecode"][stage]["path"].get<std::string>());
+        }
+      }
+    }
+  }
+  return files;
+}
+
+// Copies `file` of `part` into `staging` once; the same path from another
+// part (a shared pass) must hold the same bytes. `copied`: path -> hash.
+Status copy_file_once(const fs::path& part, const std::string& file, const fs::path& staging,
+                      std::map<std::string, std::string>& copied) {
+  PENUMBRA_TRY_ASSIGN(const std::string bytes, read_file(part / file));
+  const auto [at, added] = copied.try_emplace(file, content_hash(bytes));
+  if (!added) {
+    if (at->second != content_hash(bytes)) {
+      return make_error(Error::Kind::bad_input, (part / file).string(),
+                        "differs from the same file of an earlier part; parts must come from "
+                        "one build setup (same penumbra, shaderlib and HLSL compiler)");
+    }
+    return {};
+  }
+  std::error_code ec;
+  fs::create_directories((staging / file).parent_path(), ec);
+  if (ec) return make_error(Error::Kind::io, (staging / file).parent_path().string(), ec.message());
+  return write_file_atomic(staging / file, bytes);
+}
+
+}  // namespace
+
+Result<BuildSummary> merge_libraries(std::span<const fs::path> parts, const fs::path& out_dir) {
+  std::vector<Library> libraries;
+  std::vector<nlohmann::json> indexes;
+  for (const fs::path& part : parts) {
+    PENUMBRA_TRY_ASSIGN(Library library, load_library(part));
+    if (!libraries.empty() && library.generator != libraries.front().generator) {
+      return make_error(Error::Kind::bad_input, (part / "index.json").string(),
+                        "generator '" + library.generator + "' differs from " +
+                            (parts.front() / "index.json").string() + "'s '" +
+                            libraries.front().generator + "'; merge parts of one build");
+    }
+    PENUMBRA_TRY_ASSIGN(const std::string text, read_file(part / "index.json"));
+    indexes.push_back(nlohmann::json::parse(text));
+    libraries.push_back(std::move(library));
+  }
+  std::vector<PartVariant> order;
+  std::map<std::string, std::size_t> owner;
+  for (std::size_t p = 0; p < libraries.size(); ++p) {
+    for (std::size_t i = 0; i < libraries[p].variants.size(); ++i) {
+      const Variant& variant = libraries[p].variants[i].variant;
+      if (const auto [at, added] = owner.try_emplace(variant.name, p); !added) {
+        return make_error(Error::Kind::bad_input, (parts[p] / "index.json").string(),
+                          "variant " + variant.name + " is also in " +
+                              (parts[at->second] / "index.json").string() +
+                              "; parts must hold disjoint variants");
+      }
+      order.push_back({&variant, p, i});
+    }
+  }
+  std::ranges::sort(order, [](const PartVariant& a, const PartVariant& b) {
+    return variant_less(*a.variant, *b.variant);
+  });
+
+  PENUMBRA_TRY(check_replaceable(out_dir));
+  PENUMBRA_TRY_ASSIGN(StagedDirectory staged, StagedDirectory::create(out_dir));
+  IndexWriter index;
+  std::map<std::string, std::string> copied;
+  BuildSummary summary;
+  for (const PartVariant& entry : order) {
+    const ResolvedVariant variant = resolve_variant(indexes[entry.part], entry.index);
+    for (const std::string& file : variant_files(variant)) {
+      PENUMBRA_TRY(copy_file_once(parts[entry.part], file, staged.staging(), copied));
+    }
+    index.add(variant);
+  }
+  PENUMBRA_TRY(write_file_atomic(staged.staging() / "index.json", index.finish()));
+  PENUMBRA_TRY(staged.commit_if_changed());
+  summary.variants = order.size();
+  for (const auto& [file, hash] : copied) {
+    (file.ends_with(".d3dbc") || file.ends_with(".dxbc") ? summary.bytecode : summary.files)++;
+  }
+  return summary;
+}
+
+}  // namespace penumbra
