@@ -8,6 +8,7 @@ PENUMBRA_PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   nlohmann-json3-dev libcli11-dev googletest libgtest-dev libxxhash-dev
+  libpng-dev
   chromium
 )
 

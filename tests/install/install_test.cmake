@@ -6,14 +6,7 @@
 # Inputs: BUILD_DIR SOURCE_DIR TEST_DIR WORK_DIR GENERATOR CXX_COMPILER CONFIG
 # EXPECT_RUNTIME SANITIZE.
 
-function(run)
-  execute_process(COMMAND ${ARGV} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT rc EQUAL 0)
-    string(REPLACE ";" " " command "${ARGV}")
-    message(FATAL_ERROR "install test: failed (${rc}): ${command}\n${out}")
-  endif()
-  set(run_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
 
 set(staged ${WORK_DIR}/staged)
 set(prefix ${WORK_DIR}/moved)

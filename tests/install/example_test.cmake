@@ -1,0 +1,35 @@
+# cmake -P: examples/engine-consumer as its README builds it. Installs this
+# build into a prefix, configures and builds the example against it (its
+# warnings are errors), runs it on the default Vulkan device (lavapipe) and
+# reads its PNG back with CHECKER (shadow_png_check.cpp).
+# Inputs: BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR CXX_COMPILER CONFIG SANITIZE
+# CHECKER.
+include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
+
+set(prefix ${WORK_DIR}/prefix)
+set(example ${WORK_DIR}/build)
+file(REMOVE_RECURSE ${WORK_DIR})
+
+set(config_args "")
+if(CONFIG)
+  set(config_args --config ${CONFIG})
+endif()
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} ${config_args})
+
+set(configure_args -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
+                   -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release
+                   -DCMAKE_COMPILE_WARNING_AS_ERROR=ON)
+if(SANITIZE)  # the installed libraries were built with ASan and UBSan
+  list(APPEND configure_args "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+endif()
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/engine-consumer -B ${example} ${configure_args})
+run(${CMAKE_COMMAND} --build ${example})
+
+run(${example}/engine_consumer ${WORK_DIR}/shadow.png)
+message(STATUS "${run_output}")
+if(NOT run_output MATCHES "pcss_b16_p16_whitepaper16 on .*: wrote .*shadow.png \\(512x512")
+  message(FATAL_ERROR "install test: the example printed '${run_output}'")
+endif()
+run(${CHECKER} ${WORK_DIR}/shadow.png)
+message(STATUS "${run_output}")
+message(STATUS "install test: the engine-consumer example passed")
