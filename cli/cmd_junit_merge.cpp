@@ -2,10 +2,10 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "junit.hpp"
 #include "output_file.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/support/file.hpp"
-#include "penumbra/support/junit.hpp"
 
 namespace penumbra::cli {
 

@@ -7,6 +7,7 @@
 #include "output_file.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
+#include "verify_junit.hpp"
 
 namespace penumbra::cli {
 namespace {

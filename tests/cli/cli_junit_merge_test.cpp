@@ -7,12 +7,14 @@
 #include <algorithm>
 
 #include "cli_harness.hpp"
+#include "junit.hpp"
 #include "penumbra/support/file.hpp"
-#include "penumbra/support/junit.hpp"
 
 namespace penumbra::testing {
 namespace {
 
+using cli::kJunitShardProperty;
+using cli::parse_junit_xml;
 using ::testing::HasSubstr;
 
 // A report as `penumbra verify --shard I/N --junit` writes it, with the

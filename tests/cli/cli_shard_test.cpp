@@ -7,15 +7,18 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <pugixml.hpp>
 
 #include "cli_harness.hpp"
+#include "junit.hpp"
 #include "penumbra/support/file.hpp"
-#include "penumbra/support/junit.hpp"
-#include "penumbra/support/xml.hpp"
 
 namespace penumbra::testing {
 namespace {
 
+using cli::JunitCase;
+using cli::JunitSuite;
+using cli::parse_junit_xml;
 using ::testing::HasSubstr;
 
 // Three targets (one with the GL path, one with the bytecode path) and a
@@ -103,39 +106,43 @@ TEST_F(ShardedVerify, ShardsAddUpToTheWholeRunAndMergeIntoIt) {
 
   // The report as a CI server reads it: counts that add up, every testcase
   // named and timed, the shard as a property.
-  auto root = parse_xml(text("whole.xml"), "whole.xml");
-  ASSERT_TRUE(root.ok()) << root.error().to_string();
-  ASSERT_EQ(root->name, "testsuites");
-  ASSERT_EQ(root->children.size(), 1u);
-  const XmlElement& suite = root->children[0];
-  ASSERT_EQ(suite.name, "testsuite");
+  const std::string whole_xml = text("whole.xml");
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(whole_xml.c_str()));
+  const pugi::xml_node root = doc.document_element();
+  ASSERT_STREQ(root.name(), "testsuites");
+  const pugi::xml_node suite = root.child("testsuite");
+  ASSERT_TRUE(suite);
+  EXPECT_FALSE(suite.next_sibling());
   std::size_t cases = 0;
   std::size_t skipped = 0;
   bool shard_property = false;
-  for (const XmlElement& child : suite.children) {
-    if (child.name == "properties") {
-      for (const XmlElement& property : child.children) {
-        shard_property = shard_property || (*property.attribute("name") == "penumbra.shard" &&
-                                            *property.attribute("value") == "1/1");
+  for (const pugi::xml_node child : suite.children()) {
+    if (std::string_view(child.name()) == "properties") {
+      for (const pugi::xml_node property : child.children()) {
+        shard_property =
+            shard_property ||
+            (std::string_view(property.attribute("name").value()) == "penumbra.shard" &&
+             std::string_view(property.attribute("value").value()) == "1/1");
       }
       continue;
     }
-    ASSERT_EQ(child.name, "testcase");
+    ASSERT_STREQ(child.name(), "testcase");
     ++cases;
-    ASSERT_NE(child.attribute("classname"), nullptr);
-    ASSERT_NE(child.attribute("name"), nullptr);
-    ASSERT_NE(child.attribute("time"), nullptr);
-    for (const XmlElement& outcome : child.children) {
-      EXPECT_EQ(outcome.name, "skipped") << *child.attribute("name");
+    ASSERT_TRUE(child.attribute("classname"));
+    ASSERT_TRUE(child.attribute("name"));
+    ASSERT_TRUE(child.attribute("time"));
+    for (const pugi::xml_node outcome : child.children()) {
+      EXPECT_STREQ(outcome.name(), "skipped") << child.attribute("name").value();
       ++skipped;
     }
   }
   EXPECT_EQ(cases, whole.size());
   EXPECT_TRUE(shard_property);
-  for (const XmlElement* counted : {static_cast<const XmlElement*>(&*root), &suite}) {
-    EXPECT_EQ(*counted->attribute("tests"), std::to_string(cases));
-    EXPECT_EQ(*counted->attribute("failures"), "0");
-    EXPECT_EQ(*counted->attribute("skipped"), std::to_string(skipped));
+  for (const pugi::xml_node counted : {root, suite}) {
+    EXPECT_EQ(counted.attribute("tests").value(), std::to_string(cases));
+    EXPECT_STREQ(counted.attribute("failures").value(), "0");
+    EXPECT_EQ(counted.attribute("skipped").value(), std::to_string(skipped));
   }
 }
 

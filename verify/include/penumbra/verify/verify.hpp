@@ -10,7 +10,6 @@
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
-#include "penumbra/support/junit.hpp"
 #include "penumbra/support/shard.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
@@ -126,11 +125,5 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                                     const DiagnosticConsumer& diagnostics);
 
 nlohmann::json to_json(const VerifyReport& report, const Library& library);
-
-// The report as one JUnit suite, named after the shard and carrying
-// kJunitShardProperty: a testcase per check, classname the variant (or
-// depth_pass, minmax_mip) and name TARGET/BACKEND/SCENE (TARGET/SCENE; a run
-// that failed or did not execute before any scene: TARGET/BACKEND).
-JunitReport to_junit(const VerifyReport& report);
 
 }  // namespace penumbra

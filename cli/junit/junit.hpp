@@ -1,6 +1,7 @@
 // JUnit XML reports as CI test views read them (GitLab, Jenkins, GitHub
 // Actions reporters): <testsuites> of <testsuite>s of <testcase>s, and the
-// merge of the reports of a sharded run.
+// merge of the reports of a sharded run (`penumbra verify --junit`,
+// `penumbra junit-merge`).
 #pragma once
 
 #include <string>
@@ -11,7 +12,7 @@
 #include "penumbra/support/result.hpp"
 #include "penumbra/support/shard.hpp"
 
-namespace penumbra {
+namespace penumbra::cli {
 
 // The <property> naming the shard ("I/N") a report of penumbra's covers.
 inline constexpr std::string_view kJunitShardProperty = "penumbra.shard";
@@ -43,13 +44,16 @@ struct JunitReport {
   bool failed() const;  // a case failed, or none passed
 };
 
-// The XML document, with tests/failures/errors/skipped/time counted on
-// every suite and on the whole.
+// The UTF-8 XML document, with tests/failures/errors/skipped/time counted on
+// every suite and on the whole. Bytes that XML 1.0 cannot carry (control
+// characters other than tab, newline and carriage return, invalid UTF-8)
+// become U+FFFD.
 std::string to_junit_xml(const JunitReport& report);
 
 // Reads a document to_junit_xml() wrote (any <testsuites> of <testsuite>s
-// of <testcase>s; <error> reads as a failure). Errors (bad_input) name
-// `where`, with a line and column for XML that is not well-formed.
+// of <testcase>s, or one <testsuite>; <error> reads as a failure). Errors
+// (bad_input) name `where`, with a line and column for XML that is not
+// well-formed.
 Result<JunitReport> parse_junit_xml(std::string_view text, const std::string& where);
 
 // The reports of one sharded run, each with its file name, as one report:
@@ -60,4 +64,4 @@ Result<JunitReport> parse_junit_xml(std::string_view text, const std::string& wh
 Result<JunitReport> merge_junit_shards(
     const std::vector<std::pair<std::string, JunitReport>>& reports);
 
-}  // namespace penumbra
+}  // namespace penumbra::cli

@@ -1,11 +1,11 @@
 // One testcase per check, named so that the same check has the same name in
 // every shard and in the whole run: merging shards and comparing runs is
 // then a matter of names.
+#include "verify_junit.hpp"
+
 #include <sstream>
 
-#include "penumbra/verify/verify.hpp"
-
-namespace penumbra {
+namespace penumbra::cli {
 namespace {
 
 using Outcome = JunitCase::Outcome;
@@ -106,4 +106,4 @@ JunitReport to_junit(const VerifyReport& report) {
   return {"penumbra verify", {std::move(suite)}};
 }
 
-}  // namespace penumbra
+}  // namespace penumbra::cli

@@ -4,9 +4,9 @@
 #include <map>
 #include <optional>
 
-#include "penumbra/support/junit.hpp"
+#include "junit.hpp"
 
-namespace penumbra {
+namespace penumbra::cli {
 namespace {
 
 Error bad(const std::string& where, const std::string& message) {
@@ -83,4 +83,4 @@ Result<JunitReport> merge_junit_shards(
   return merged;
 }
 
-}  // namespace penumbra
+}  // namespace penumbra::cli

@@ -1,9 +1,9 @@
-#include "penumbra/support/junit.hpp"
+#include "junit.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace penumbra {
+namespace penumbra::cli {
 namespace {
 
 using ::testing::HasSubstr;
@@ -26,9 +26,9 @@ TEST(Junit, WritesCountsAndReadsBackEveryOutcome) {
   EXPECT_THAT(xml, HasSubstr("<testsuites name=\"penumbra verify\" tests=\"3\" failures=\"1\" "
                              "errors=\"0\" skipped=\"1\" time=\"1.500\">"));
   EXPECT_THAT(
-      xml, HasSubstr("<testcase classname=\"hard\" name=\"spirv/vulkan/steps\" time=\"0.250\"/>"));
-  EXPECT_THAT(xml, HasSubstr("<skipped message=\"no EGL\"/>"));
-  EXPECT_THAT(xml, HasSubstr("<property name=\"penumbra.shard\" value=\"1/1\"/>"));
+      xml, HasSubstr("<testcase classname=\"hard\" name=\"spirv/vulkan/steps\" time=\"0.250\" />"));
+  EXPECT_THAT(xml, HasSubstr("<skipped message=\"no EGL\" />"));
+  EXPECT_THAT(xml, HasSubstr("<property name=\"penumbra.shard\" value=\"1/1\" />"));
   auto back = parse_junit_xml(xml, "r.xml");
   ASSERT_TRUE(back.ok()) << back.error().to_string();
   ASSERT_EQ(back->suites.size(), 1u);
@@ -44,6 +44,66 @@ TEST(Junit, WritesCountsAndReadsBackEveryOutcome) {
   EXPECT_EQ(suite.cases[2].details, "line 1\nline 2");
   EXPECT_TRUE(back->failed());
   EXPECT_EQ(to_junit_xml(*back), xml);
+}
+
+TEST(Junit, EscapesWhatItWritesAndReadsItBack) {
+  const std::string awkward = "a < b && c > \"d\" 'e'\n\ttab";
+  const JunitReport report =
+      shard_report(1, 1, {{awkward, awkward, 0, Outcome::failed, awkward, awkward}});
+  const std::string xml = to_junit_xml(report);
+  EXPECT_THAT(xml, HasSubstr("message=\"a &lt; b &amp;&amp; c > &quot;d&quot; 'e'&#10;&#09;tab\""));
+  EXPECT_THAT(xml, HasSubstr(">a &lt; b &amp;&amp; c &gt; \"d\" 'e'\n\ttab</failure>"));
+  auto back = parse_junit_xml(xml, "r.xml");
+  ASSERT_TRUE(back.ok()) << back.error().to_string();
+  const JunitCase& c = back->suites.at(0).cases.at(0);
+  EXPECT_EQ(c.classname, awkward);
+  EXPECT_EQ(c.message, awkward);
+  EXPECT_EQ(c.details, awkward);
+}
+
+TEST(Junit, ReplacesWhatXmlCannotCarry) {
+  const std::string bad = std::string("bell\x07 nul") + '\0' + " cut\xC3 end \xF0\x9F\x98\x80";
+  const std::string xml =
+      to_junit_xml(shard_report(1, 1, {{"a", "b", 0, Outcome::failed, bad, bad}}));
+  auto back = parse_junit_xml(xml, "r.xml");
+  ASSERT_TRUE(back.ok()) << back.error().to_string();
+  const std::string expected =
+      "bell\xEF\xBF\xBD nul\xEF\xBF\xBD cut\xEF\xBF\xBD end \xF0\x9F\x98\x80";
+  EXPECT_EQ(back->suites.at(0).cases.at(0).message, expected);
+  EXPECT_EQ(back->suites.at(0).cases.at(0).details, expected);
+}
+
+TEST(Junit, ReadsCommentsCdataReferencesAndSingleQuotes) {
+  auto report = parse_junit_xml(
+      "\xEF\xBB\xBF<?xml version='1.0'?>\n<!-- c --><testsuite name='s &#x41;&#66;'>"
+      "<?pi?><!-- in --><testcase name='t'><failure message='m'>x<![CDATA[<raw>&]]>y</failure>"
+      "</testcase></testsuite>\n",
+      "r.xml");
+  ASSERT_TRUE(report.ok()) << report.error().to_string();
+  ASSERT_EQ(report->suites.size(), 1u);
+  EXPECT_EQ(report->suites[0].name, "s AB");
+  ASSERT_EQ(report->suites[0].cases.size(), 1u);
+  EXPECT_EQ(report->suites[0].cases[0].outcome, Outcome::failed);
+  EXPECT_EQ(report->suites[0].cases[0].details, "x<raw>&y");
+}
+
+TEST(Junit, RejectsWhatIsNotWellFormedWithItsPlace) {
+  for (const char* text : {"", "<testsuites>", "<testsuites></testsuite>", "<a x=1/>",
+                           "<testsuites/><testsuites/>", "\n  <1/>"}) {
+    auto report = parse_junit_xml(text, "doc.xml");
+    ASSERT_FALSE(report.ok()) << text;
+    EXPECT_EQ(report.error().kind, Error::Kind::bad_input);
+    EXPECT_THAT(report.error().message, ::testing::StartsWith("not well-formed XML: ")) << text;
+    EXPECT_THAT(report.error().message, HasSubstr("; allowed: a JUnit XML report")) << text;
+    EXPECT_THAT(report.error().where, ::testing::StartsWith("doc.xml:")) << text;
+  }
+  // At the second root's name.
+  EXPECT_EQ(parse_junit_xml("<testsuites/>\n<b/>", "doc.xml").error().to_string(),
+            "doc.xml:2:2: not well-formed XML: content after the root element; allowed: a JUnit "
+            "XML report");
+  std::string deep;
+  for (int i = 0; i < 100000; ++i) deep += "<a>";
+  EXPECT_FALSE(parse_junit_xml(deep, "deep.xml").ok());
 }
 
 TEST(Junit, NothingPassedIsAFailure) {
@@ -109,4 +169,4 @@ TEST(Junit, MergeRejectsShardsThatDoNotAddUp) {
 }
 
 }  // namespace
-}  // namespace penumbra
+}  // namespace penumbra::cli
