@@ -4,8 +4,10 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "hlsl_compiler.hpp"
+#include "output_file.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
+#include "verify_junit.hpp"
 
 namespace penumbra::cli {
 namespace {
@@ -16,6 +18,8 @@ struct VerifyArgs {
   std::vector<std::string> variants;
   std::vector<std::string> targets;
   std::string hlsl_compiler;
+  std::string shard;  // "I/N"; empty: the whole library
+  std::string junit;  // JUnit report to write; empty: none
   bool no_gl = false;
   bool validation = false;
   bool verbose = false;
@@ -80,6 +84,7 @@ void print_summary(const VerifyReport& report) {
     std::cout << "note: " << why.first << " " << backend << " runs not executed: " << why.second
               << "\n";
   }
+  if (report.shard.count > 1) std::cout << "shard " << to_string(report.shard) << ": ";
   std::cout << report.runs - report.failed << " passed, " << report.failed << " failed\n";
 }
 
@@ -94,10 +99,28 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--variant", args->variants, "Only these variants (repeatable)");
   cmd->add_option("--target", args->targets, "Only these targets (repeatable)");
   cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
+  cmd->add_option("--shard", args->shard,
+                  "Only the I-th of N disjoint slices of the checks, I from 1 (docs/scale-out.md)");
+  cmd->add_option("--junit", args->junit, "Also write a JUnit XML report to this file");
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {
+    Shard shard;
+    if (!args->shard.empty()) {
+      auto parsed = parse_shard(args->shard, "--shard");
+      if (!parsed) {
+        exit_code = report(parsed.error());
+        return;
+      }
+      shard = *parsed;
+    }
+    if (!args->junit.empty()) {
+      if (Status s = check_output_file(args->junit, "--junit"); !s) {
+        exit_code = report(s.error());
+        return;
+      }
+    }
     auto compiler = find_hlsl_compiler(args->hlsl_compiler);
     if (!compiler) {
       exit_code = report(compiler.error());
@@ -117,7 +140,8 @@ void add_verify_command(CLI::App& app, int& exit_code) {
     VerifyOptions options{.variants = args->variants,
                           .targets = {},
                           .gl = !args->no_gl,
-                          .bytecode = {.compiler = *compiler}};
+                          .bytecode = {.compiler = *compiler},
+                          .shard = shard};
     for (const std::string& name : args->targets) {
       auto target = parse_target(name);
       if (!target) {
@@ -137,8 +161,15 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(s.error());
       return;
     }
+    if (!args->junit.empty()) {
+      if (Status s = write_file_atomic(args->junit, to_junit_xml(to_junit(*result))); !s) {
+        exit_code = report(s.error());
+        return;
+      }
+    }
     print_summary(*result);
-    std::cout << "results: " << path.string() << "\n";
+    std::cout << "results: " << path.string() << (args->junit.empty() ? "" : ", " + args->junit)
+              << "\n";
     exit_code = result->pass() ? kExitOk : kExitCheckFailed;
   });
 }

@@ -11,6 +11,7 @@ void add_list_command(CLI::App& app, int& exit_code);
 void add_disk_command(CLI::App& app, int& exit_code);
 void add_embed_command(CLI::App& app, int& exit_code);
 void add_merge_command(CLI::App& app, int& exit_code);
+void add_junit_merge_command(CLI::App& app, int& exit_code);
 #ifdef PENUMBRA_HAS_VERIFY
 void add_eval_command(CLI::App& app, int& exit_code);
 void add_verify_command(CLI::App& app, int& exit_code);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   penumbra::cli::add_disk_command(app, exit_code);
   penumbra::cli::add_embed_command(app, exit_code);
   penumbra::cli::add_merge_command(app, exit_code);
+  penumbra::cli::add_junit_merge_command(app, exit_code);
 #ifdef PENUMBRA_HAS_VERIFY
   penumbra::cli::add_eval_command(app, exit_code);
   penumbra::cli::add_verify_command(app, exit_code);

@@ -7,7 +7,7 @@ PENUMBRA_PACKAGES=(
   glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev spirv-headers
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  nlohmann-json3-dev libcli11-dev googletest libgtest-dev libxxhash-dev
+  nlohmann-json3-dev libcli11-dev libpugixml-dev googletest libgtest-dev libxxhash-dev
   libpng-dev
   chromium
 )

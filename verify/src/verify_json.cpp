@@ -85,6 +85,7 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
                         {"gl_device", report.gl_device},
                         {"tolerances", tolerances},
                         {"max_ambiguous_fraction", reference::kMaxAmbiguousFraction},
+                        {"shard", to_string(report.shard)},
                         {"pass", report.pass()},
                         {"runs", report.runs},
                         {"failed", report.failed}};

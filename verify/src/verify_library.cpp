@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <chrono>
 #include <map>
 
 #include "backend.hpp"
@@ -23,6 +24,12 @@ struct Context {
   // Targets whose depth pass could not run: every run on them fails with this.
   std::map<Target, Error> broken_targets;
 };
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 // A run that could not compile or execute its shaders is a failed check of
 // that variant and target, not a reason to stop verifying the others.
@@ -98,6 +105,7 @@ Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& e
   run.executed = true;
   run.pass = true;
   for (const SceneFixture& fixture : scenes.scenes) {
+    const auto start = Clock::now();
     auto gpu = passes->run(fixture);
     if (!gpu) return gpu.error();
     auto scene =
@@ -105,6 +113,7 @@ Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& e
             ? check_screen_blur_scene(ctx, *gpu, *gpu->chain, entry.variant, target, fixture)
             : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, target, fixture);
     if (!scene) return scene.error();
+    scene->seconds = seconds_since(start);
     run.pass = run.pass && scene->pass();
     run.scenes.push_back(std::move(*scene));
   }
@@ -119,9 +128,11 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
   if (!depth) return depth.error();
   TargetScenes scenes;
   for (const reference::Scene& scene : reference::builtin_scenes()) {
+    const auto start = Clock::now();
     auto fixture = prepare_scene(ctx.engine, depth->program, target, scene);
     if (!fixture) return fixture.error();
     report.depth_checks.push_back(fixture->depth_check);
+    report.depth_checks.back().seconds = seconds_since(start);
     scenes.scenes.push_back(std::move(*fixture));
   }
   ctx.scenes.emplace(target, std::move(scenes));
@@ -138,6 +149,7 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
   auto reduce = load_executable(ctx.library, entry, PassKind::minmax_reduce, target);
   if (!reduce) return reduce.error();
   for (SceneFixture& fixture : ctx.scenes.at(target).scenes) {
+    const auto start = Clock::now();
     auto built =
         ctx.engine.build_minmax(*fixture.map, init->program, reduce->program, fixture.params);
     auto levels = built ? ctx.engine.read_minmax(*fixture.map)
@@ -147,10 +159,12 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
       failed.scene = fixture.scene.name;
       failed.target = target;
       failed.error = levels.error().to_string();
+      failed.seconds = seconds_since(start);
       report.minmax_checks.push_back(std::move(failed));
       return levels.error();
     }
     report.minmax_checks.push_back(check_minmax(fixture, target, *levels));
+    report.minmax_checks.back().seconds = seconds_since(start);
   }
   return {};
 }
@@ -161,6 +175,39 @@ bool wanted(const std::vector<std::string>& names, const std::string& name) {
 
 bool wanted(const std::vector<Target>& targets, Target target) {
   return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
+}
+
+// (i + j) mod N spreads both ways: a variant's targets over the shards, and
+// a target's variants (one technique's costly reference is not all in one
+// shard; nor is one target's bytecode or GL path).
+bool in_shard(const Shard& shard, std::size_t variant_index, Target target) {
+  const auto j = static_cast<std::size_t>(
+      std::find(kAllTargets.begin(), kAllTargets.end(), target) - kAllTargets.begin());
+  return (variant_index + j) % static_cast<std::size_t>(shard.count) ==
+         static_cast<std::size_t>(shard.index - 1);
+}
+
+// For each target, the position of the variant the whole run prepares it
+// with: the first wanted one that has the target and, for the min-max mip,
+// uses it. Every shard prepares with the same variant, so it runs what the
+// whole run runs.
+struct Preparers {
+  std::map<Target, std::size_t> depth;
+  std::map<Target, std::size_t> minmax;
+};
+
+Preparers preparers(const Library& library, const VerifyOptions& options) {
+  Preparers first;
+  for (std::size_t i = 0; i < library.variants.size(); ++i) {
+    const Variant& variant = library.variants[i].variant;
+    if (!wanted(options.variants, variant.name)) continue;
+    for (Target target : variant.targets) {
+      if (!wanted(options.targets, target)) continue;
+      first.depth.emplace(target, i);
+      if (uses_minmax_mip(variant.technique)) first.minmax.emplace(target, i);
+    }
+  }
+  return first;
 }
 
 void count(VerifyReport& report, const TargetRun& run) {
@@ -185,7 +232,7 @@ bool VerifyReport::pass() const {
                                     [](const DepthCheck& c) { return c.pass; });
   const bool minmax_ok = std::all_of(minmax_checks.begin(), minmax_checks.end(),
                                      [](const MinmaxCheck& c) { return c.pass; });
-  return depth_ok && minmax_ok && failed == 0 && runs > 0;
+  return depth_ok && minmax_ok && failed == 0 && (runs > 0 || shard.count > 1);
 }
 
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,
@@ -200,7 +247,14 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                         "no such variant in " + library.root.string());
     }
   }
+  if (options.shard.count < 1 || options.shard.index < 1 ||
+      options.shard.index > options.shard.count) {
+    return make_error(Error::Kind::bad_input, "shard " + to_string(options.shard),
+                      "I must be in 1..N");
+  }
+  const auto start = Clock::now();
   VerifyReport report;
+  report.shard = options.shard;
   report.device = engine.device_info();
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
@@ -213,16 +267,24 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   ctx.backends.push_back(gl_backend(options.gl, lavapipe ? "llvmpipe" : ""));
   report.gl_device = ctx.backends.back()->device();
 
-  for (const LibraryVariant& entry : library.variants) {
+  const Preparers prepare_with = preparers(library, options);
+  for (std::size_t i = 0; i < library.variants.size(); ++i) {
+    const LibraryVariant& entry = library.variants[i];
     if (!wanted(options.variants, entry.variant.name)) continue;
     VariantRun variant_run;
     variant_run.name = entry.variant.name;
     variant_run.technique = entry.variant.technique;
+    bool other_shards = false;  // some of its pairs are in other shards
     for (Target target : entry.variant.targets) {
       if (!wanted(options.targets, target)) continue;
+      if (!in_shard(options.shard, i, target)) {
+        other_shards = true;
+        continue;
+      }
       if (!ctx.scenes.contains(target) && !ctx.broken_targets.contains(target)) {
         // A depth pass that cannot run fails every run of its target, not verify.
-        if (Status s = prepare_target(ctx, entry, target, report); !s) {
+        const LibraryVariant& preparer = library.variants[prepare_with.depth.at(target)];
+        if (Status s = prepare_target(ctx, preparer, target, report); !s) {
           ctx.broken_targets.emplace(target, s.error());
         }
       }
@@ -235,19 +297,31 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
       }
       TargetScenes& scenes = ctx.scenes.at(target);
       if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
-        scenes.minmax = prepare_minmax(ctx, entry, target, report);
+        const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(target)];
+        scenes.minmax = prepare_minmax(ctx, preparer, target, report);
       }
       for (const std::unique_ptr<Backend>& backend : ctx.backends) {
         if (!backend->executes(target)) continue;
+        const auto run_start = Clock::now();
         auto run = run_on(ctx, *backend, entry, target);
         variant_run.runs.push_back(run ? std::move(*run)
                                        : failed_run(target, backend->name(), run.error()));
+        variant_run.runs.back().seconds = seconds_since(run_start);
         count(report, variant_run.runs.back());
       }
     }
+    if (other_shards && variant_run.runs.empty()) continue;
     diagnostics({Severity::note, entry.variant.name, "verified"});
     report.variants.push_back(std::move(variant_run));
   }
+  // The per-target checks of the pairs another shard runs are that shard's.
+  std::erase_if(report.depth_checks, [&](const DepthCheck& c) {
+    return !in_shard(options.shard, prepare_with.depth.at(c.target), c.target);
+  });
+  std::erase_if(report.minmax_checks, [&](const MinmaxCheck& c) {
+    return !in_shard(options.shard, prepare_with.minmax.at(c.target), c.target);
+  });
+  report.seconds = seconds_since(start);
   return report;
 }
 

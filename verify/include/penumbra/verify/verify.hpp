@@ -10,6 +10,7 @@
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
+#include "penumbra/support/shard.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 
@@ -22,6 +23,9 @@ struct VerifyOptions {
   // vkd3d-compiler for the Direct3D bytecode path; with none (empty
   // compiler), that path's runs are reported not executed.
   BytecodeTranslator bytecode = {};
+  // Only this shard's (variant, target) pairs: the library's i-th variant
+  // (from 0) with kAllTargets' j-th target is in shard ((i + j) mod N) + 1.
+  Shard shard = {};
 };
 
 // A GPU image against the CPU's next step of screen_blur's chain run on the
@@ -47,6 +51,7 @@ struct SceneRun {
   // factor (reference::kCompositeTolerance).
   std::optional<ChainCheck> blur;
   std::optional<ChainCheck> composite;
+  double seconds = 0.0;  // running and checking this scene
 
   bool pass() const;  // every check above passed
 };
@@ -62,6 +67,7 @@ struct TargetRun {
   std::string error;         // why it failed before any comparison (front end, device)
   bool pass = false;         // executed and every scene passed
   std::vector<SceneRun> scenes;
+  double seconds = 0.0;  // loading the passes and every scene
 };
 
 struct VariantRun {
@@ -78,6 +84,7 @@ struct DepthCheck {
   std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
   double max_abs_error = 0.0;
   bool pass = false;
+  double seconds = 0.0;  // rendering and checking the map
 };
 
 // A target's min-max mip, built by its own minmax_init and minmax_reduce
@@ -92,9 +99,15 @@ struct MinmaxCheck {
   std::size_t mismatched = 0;
   std::string error;  // why the mip could not be built or read
   bool pass = false;
+  double seconds = 0.0;  // building, reading and checking the mip
 };
 
+// The checks of VerifyOptions::shard. A target's depth and min-max mip
+// checks belong to the shard of the (variant, target) whose passes the whole
+// run would prepare them with; other shards prepare them too but leave them
+// out, so that the shards' checks add up to the whole run's.
 struct VerifyReport {
+  Shard shard;
   DeviceInfo device;
   std::string gl_device;  // empty when the GL path did not run
   std::vector<DepthCheck> depth_checks;
@@ -102,6 +115,8 @@ struct VerifyReport {
   std::vector<VariantRun> variants;
   std::size_t runs = 0;    // executed (variant, target, backend, scene) runs
   std::size_t failed = 0;  // of those, failed
+  double seconds = 0.0;    // the whole verification
+  // Every check passed, and some run executed (a shard of many may have none).
   bool pass() const;
 };
 
