@@ -57,9 +57,12 @@ endif()
 # The shaders component alone: penumbra_add_shader_library() generates at
 # build time with the installed executable, without glslang, Vulkan or GL
 # (finding any of them disabled fails the configure); a second build of the
-# untouched project runs nothing.
+# untouched project runs nothing. It is built from a copy, whose manifest
+# the test edits.
 set(embedded ${WORK_DIR}/embedded_consumer)
-run(${CMAKE_COMMAND} -S ${TEST_DIR}/embedded_consumer -B ${embedded} ${common_args}
+set(embedded_src ${WORK_DIR}/embedded_src)
+file(COPY ${TEST_DIR}/embedded_consumer/ DESTINATION ${embedded_src})
+run(${CMAKE_COMMAND} -S ${embedded_src} -B ${embedded} ${common_args}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_DISABLE_FIND_PACKAGE_glslang=ON
     -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DCMAKE_DISABLE_FIND_PACKAGE_OpenGL=ON)
 run(${CMAKE_COMMAND} --build ${embedded})
@@ -88,7 +91,63 @@ if(GENERATOR STREQUAL "Ninja")
                         "consumer's variant includes, did not regenerate its shaders:\n"
                         "${run_output}")
   endif()
+  # Touched, not changed: the group step found its stamp current, so nothing
+  # after it ran.
+  if(run_output MATCHES "penumbra merge")
+    message(FATAL_ERROR "install test: touching techniques/pcss.glsl without changing it "
+                        "merged the library again:\n${run_output}")
+  endif()
+  # Edited without changing a shader (dead code the optimizer removes): the
+  # step recompiles, its part comes out the same, and nothing after it runs.
+  file(APPEND ${installed_shaderlib}/techniques/pcss.glsl
+       "\nfloat penumbra_install_test_unused(float x) { return x + 1.0; }\n")
+  run(${CMAKE_COMMAND} --build ${embedded} --verbose)
+  if(NOT run_output MATCHES "--shaderlib" OR run_output MATCHES "penumbra merge")
+    message(FATAL_ERROR "install test: a dead-code edit of techniques/pcss.glsl should rerun "
+                        "its group step and nothing after it:\n${run_output}")
+  endif()
+  # Changed: the library and the program are rebuilt.
+  file(READ ${installed_shaderlib}/techniques/pcss.glsl pcss)
+  string(REPLACE "return 1.0;  // no occluder" "return 0.999;  // no occluder" pcss "${pcss}")
+  file(WRITE ${installed_shaderlib}/techniques/pcss.glsl "${pcss}")
+  run(${CMAKE_COMMAND} --build ${embedded} --verbose)
+  if(NOT run_output MATCHES "penumbra merge" OR NOT run_output MATCHES "-o embedded ")
+    message(FATAL_ERROR "install test: editing techniques/pcss.glsl did not rebuild the "
+                        "embedded consumer's shaders:\n${run_output}")
+  endif()
   run(${embedded}/embedded)
+
+  # Editing one manifest set (a second variant) reruns every group step, but
+  # only the new variant's group writes its part: the others stay untouched.
+  file(GLOB parts ${embedded}/engine_shadows/parts/*/index.json)
+  set(before "")
+  foreach(part IN LISTS parts)
+    file(TIMESTAMP ${part} stamp "%s")
+    list(APPEND before "${part}=${stamp}")
+  endforeach()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 1.1)  # timestamps are in seconds
+  file(READ ${embedded_src}/manifest.json manifest)
+  string(REPLACE "\"sets\": [" "\"sets\": [\n    { \"technique\": \"pcf_grid\", \"kernel\": 5 },"
+                 manifest "${manifest}")
+  file(WRITE ${embedded_src}/manifest.json "${manifest}")
+  run(${CMAKE_COMMAND} --build ${embedded})
+  set(rewritten 0)
+  foreach(entry IN LISTS before)
+    string(REGEX MATCH "^(.*)=([0-9]+)$" _ "${entry}")
+    file(TIMESTAMP ${CMAKE_MATCH_1} stamp "%s")
+    if(NOT stamp STREQUAL CMAKE_MATCH_2)
+      math(EXPR rewritten "${rewritten} + 1")
+    endif()
+  endforeach()
+  if(NOT rewritten EQUAL 1)
+    message(FATAL_ERROR "install test: adding one variant rewrote ${rewritten} of the "
+                        "embedded consumer's group parts; expected only its own group's")
+  endif()
+  run(${embedded}/embedded)
+  if(NOT run_output MATCHES "embedded: .*, 8 programs")
+    message(FATAL_ERROR "install test: after adding pcf_grid_k5 the embedded consumer printed "
+                        "'${run_output}'; expected 8 programs")
+  endif()
 endif()
 
 # The runtime component: missing without Vulkan, found with it when built.

@@ -11,6 +11,7 @@
 #include "build/output_dir.hpp"
 #include "build/pass_plan.hpp"
 #include "build/pipeline.hpp"
+#include "build/streamed_index.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/support/atomic_file.hpp"
@@ -46,11 +47,10 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
 }
 
 // Runs all jobs on `threads` workers; unless `keep_going`, stops early after
-// a failure. Each finished job keeps only what index.json needs, so memory
-// does not grow with the shaders' size. The errors of the failed jobs, in
-// plan order.
+// a failure. A finished job keeps only what index.json needs until `index`
+// has its variant's record. The errors of the failed jobs, in plan order.
 std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline,
-                            const BuildOptions& options, int threads) {
+                            StreamedIndex& index, const BuildOptions& options, int threads) {
   std::vector<std::optional<Error>> errors(jobs.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
@@ -64,7 +64,11 @@ std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeli
         errors[i] = make_error(Error::Kind::internal, jobs[i].describe(), e.what());
       }
       jobs[i].release_code();
-      if (errors[i]) failed = true;
+      if (errors[i]) {
+        failed = true;
+      } else {
+        index.finished(i);
+      }
       if (options.progress) {
         const std::scoped_lock lock(progress_mutex);
         options.progress(++finished, jobs.size());
@@ -137,7 +141,8 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                    std::to_string(variants.size()) + " variants on " + std::to_string(threads) +
                    " threads"});
   const Pipeline pipeline(shaderlib, staged->staging(), options.hlsl, options.cache_dir);
-  std::vector<Error> failures = run_jobs(jobs, pipeline, options, threads);
+  StreamedIndex index(variants, jobs);
+  std::vector<Error> failures = run_jobs(jobs, pipeline, index, options, threads);
   if (!failures.empty() && !options.keep_going) return failures.front();
   for (const ShaderJob& job : jobs) {
     for (const Diagnostic& d : job.diagnostics) diagnostics(d);
@@ -147,24 +152,16 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
     return keep_going_error(failures, jobs.size(), out_dir);
   }
 
-  const JobTable table(jobs);
-  IndexWriter index;
-  for (const Variant& variant : variants) index.add(resolve_variant(variant, table));
   PENUMBRA_TRY(write_file_atomic(staged->staging() / "index.json", index.finish()));
   // Unchanged output keeps its times: a build system then reruns nothing
   // that depends on it.
   PENUMBRA_TRY(staged->commit_if_changed());
-  const auto bytecode =
-      std::ranges::count_if(jobs, [](const ShaderJob& job) { return job.bytecode.has_value(); });
   std::set<std::string> inputs;
-  for (const ShaderJob& job : jobs) {
-    for (const std::string& path : job.inputs) inputs.insert(shaderlib->location(path));
-  }
-  const auto cached = std::ranges::count_if(jobs, &ShaderJob::from_cache);
+  for (const std::string& path : index.inputs()) inputs.insert(shaderlib->location(path));
   return BuildSummary{variants.size(),
                       jobs.size(),
-                      static_cast<std::size_t>(bytecode),
-                      static_cast<std::size_t>(cached),
+                      index.bytecode(),
+                      index.cached(),
                       {inputs.begin(), inputs.end()}};
 }
 

@@ -17,18 +17,19 @@ namespace {
 // a record by its position. Most records are shared: the depth and min-max
 // passes of every variant, the query pass's reflection of variants that
 // differ only in baked constants, a disk that variants bake.
+// Records are kept as text: a parsed record takes several times the memory.
 class SharedTable {
  public:
   std::size_t add(const nlohmann::json& record) {
     const auto [at, added] = positions_.try_emplace(record.dump(), records_.size());
-    if (added) records_.push_back(record);
+    if (added) records_.push_back(&at->first);
     return at->second;
   }
-  nlohmann::json take() { return std::exchange(records_, nlohmann::json::array()); }
+  const std::vector<const std::string*>& records() const { return records_; }
 
  private:
-  nlohmann::json records_ = nlohmann::json::array();
   std::map<std::string, std::size_t> positions_;  // a record's text -> its position
+  std::vector<const std::string*> records_;       // the texts, by position
 };
 
 constexpr const char* kStages[] = {"vert", "frag"};
@@ -177,40 +178,50 @@ void IndexWriter::add(const ResolvedVariant& variant) {
       record = tables_->reflections.add(record);
     }
   }
-  variants_.push_back(std::move(out));
+  variants_.push_back(out.dump());
 }
 
-std::string IndexWriter::finish() {
-  const nlohmann::json index = {{"generator", "penumbra " + std::string(penumbra_version())},
-                                {"schema", kIndexSchema},
-                                {"defaults",
-                                 {{"light_world_size", 0.5},
-                                  {"light_frustum_width", 3.75},
-                                  {"near_plane", 9.5},
-                                  {"bias", 0.0},
-                                  {"filter_radius_texels", 2.0}}},
-                                {"disks", tables_->disks.take()},
-                                {"pass_files", tables_->pass_files.take()},
-                                {"reflections", tables_->reflections.take()},
-                                {"texture_contents", tables_->texture_contents.take()},
-                                {"variants", std::exchange(variants_, nlohmann::json::array())}};
-  std::string out = "{";
-  const char* separator = "\n";
-  for (const auto& [key, value] : index.items()) {
-    out += separator + std::string("  ") + nlohmann::json(key).dump() + ": ";
-    separator = ",\n";
-    if (!value.is_array() || value.empty()) {
-      out += value.dump();
-      continue;
-    }
-    out += "[";
-    const char* record_separator = "\n";
-    for (const nlohmann::json& record : value) {
-      out += record_separator + std::string("    ") + record.dump();
-      record_separator = ",\n";
-    }
-    out += "\n  ]";
+namespace {
+
+// A top-level array member: one record a line.
+void append_array(std::string& out, std::string_view name,
+                  const std::vector<const std::string*>& records) {
+  out += ",\n  \"" + std::string(name) + "\": ";
+  if (records.empty()) {
+    out += "[]";
+    return;
   }
+  out += "[";
+  const char* separator = "\n";
+  for (const std::string* record : records) {
+    out += separator;
+    out += "    ";
+    out += *record;
+    separator = ",\n";
+  }
+  out += "\n  ]";
+}
+
+}  // namespace
+
+std::string IndexWriter::finish() {
+  const nlohmann::json defaults = {{"light_world_size", 0.5},
+                                   {"light_frustum_width", 3.75},
+                                   {"near_plane", 9.5},
+                                   {"bias", 0.0},
+                                   {"filter_radius_texels", 2.0}};
+  // Members in alphabetical order, as nlohmann::json writes an object.
+  std::string out = "{\n  \"defaults\": " + defaults.dump();
+  append_array(out, "disks", tables_->disks.records());
+  out +=
+      ",\n  \"generator\": " + nlohmann::json("penumbra " + std::string(penumbra_version())).dump();
+  append_array(out, "pass_files", tables_->pass_files.records());
+  append_array(out, "reflections", tables_->reflections.records());
+  out += ",\n  \"schema\": " + std::to_string(kIndexSchema);
+  append_array(out, "texture_contents", tables_->texture_contents.records());
+  std::vector<const std::string*> variants;
+  for (const std::string& variant : variants_) variants.push_back(&variant);
+  append_array(out, "variants", variants);
   return out + "\n}\n";
 }
 

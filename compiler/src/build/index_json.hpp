@@ -56,7 +56,7 @@ class IndexWriter {
  private:
   struct Tables;
   std::unique_ptr<Tables> tables_;
-  nlohmann::json variants_ = nlohmann::json::array();
+  std::vector<std::string> variants_;  // each record's text
 };
 
 }  // namespace penumbra
