@@ -5,17 +5,22 @@
 #   scripts/bench.sh bytecode [ARGS]  vkd3d-compiler's time and Shader Model 3
 #                                     slots per Direct3D file, slowest first
 #                                     (penumbra_bench_bytecode)
+#   scripts/bench.sh build [ARGS]     penumbra build's cold, warm and no-op times,
+#                                     memory and index size, against a chain of
+#                                     separate tools (penumbra_bench_build)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
 bench=minmax
-if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode) ]]; then
+if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build) ]]; then
   bench=$1
   shift
 fi
 install_missing_packages
-[[ $bench == bytecode ]] && install_hlsl_compiler
+if [[ $bench == bytecode || ($bench == build && " $* " == *" --bytecode "*) ]]; then
+  install_hlsl_compiler
+fi
 configure_and_build build "penumbra_bench_$bench"
 "build/bench/penumbra_bench_$bench" "$@"

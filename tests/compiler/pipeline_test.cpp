@@ -324,6 +324,28 @@ TEST(TargetText, SourceNamesSurvive) {
   }
 }
 
+TEST(PreprocessShader, IsThePipelinesFirstStageAlone) {
+  const Variant variant = make_variant(Technique::pcss);
+  auto text = preprocess_shader(variant, Target::hlsl_dx9, PassKind::query, ShaderStage::fragment);
+  ASSERT_TRUE(text.ok()) << text.error().to_string();
+  EXPECT_THAT(*text, HasSubstr("#version 450"));
+  EXPECT_THAT(*text, HasSubstr("FindBlocker"));
+  EXPECT_THAT(*text, Not(HasSubstr("#include")));
+
+  ShaderJob job;
+  job.variant = &variant;
+  job.target = Target::hlsl_dx9;
+  job.stage = ShaderStage::fragment;
+  job.source_path = "passes/query.frag";
+  ASSERT_TRUE(PreprocessStage(embedded_shaderlib()).process(job).ok());
+  EXPECT_EQ(*text, job.preprocessed);
+
+  auto missing =
+      preprocess_shader(variant, Target::spirv, PassKind::minmax_init, ShaderStage::fragment);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.error().kind, Error::Kind::bad_input);
+}
+
 TEST(TargetRules, ComparisonSamplingIsRejectedForDx9WithVariantTargetAndConstruct) {
   // SPIR-V compiled for a comparison-sampler target, then emitted as DX9.
   const Variant variant = make_variant(Technique::pcf_grid);

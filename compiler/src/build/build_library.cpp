@@ -17,6 +17,7 @@
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/support/content_hash.hpp"
 #include "reflect/reflect_target.hpp"
+#include "stages/stages.hpp"
 
 namespace penumbra {
 namespace {
@@ -85,6 +86,14 @@ std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeli
     if (error) failures.push_back(std::move(*error));
   }
   return failures;
+}
+
+// A pass the variant's technique does not run is bad input.
+Status check_runs_pass(const Variant& variant, PassKind pass) {
+  if (runs_pass(pass, variant)) return {};
+  return make_error(Error::Kind::bad_input, "variant " + variant.name,
+                    "has no " + std::string(to_string(pass)) + " pass (technique " +
+                        std::string(to_string(variant.technique)) + " does not use it)");
 }
 
 // --keep-going's summary: how many shaders failed, of how many.
@@ -167,11 +176,7 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
 
 Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass,
                                   std::shared_ptr<const ShaderlibSource> shaderlib) {
-  if (!runs_pass(pass, variant)) {
-    return make_error(Error::Kind::bad_input, "variant " + variant.name,
-                      "has no " + std::string(to_string(pass)) + " pass (technique " +
-                          std::string(to_string(variant.technique)) + " does not use it)");
-  }
+  PENUMBRA_TRY(check_runs_pass(variant, pass));
   const Pipeline pipeline(shaderlib ? std::move(shaderlib) : embedded_shaderlib(), std::nullopt);
   CompiledPass out;
   PassReflection vert;
@@ -187,6 +192,23 @@ Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKin
   }
   out.reflection = join_stages(std::move(vert), frag);
   return out;
+}
+
+Result<std::string> preprocess_shader(const Variant& variant, Target target, PassKind pass,
+                                      ShaderStage stage,
+                                      std::shared_ptr<const ShaderlibSource> shaderlib) {
+  PENUMBRA_TRY(check_runs_pass(variant, pass));
+  const auto source = std::ranges::find_if(
+      pass_plan(), [&](const PassStageSource& s) { return s.pass == pass && s.stage == stage; });
+  // pass_plan() lists both stages of every pass.
+  ShaderJob job = make_job(*source, target, &variant);
+  const PreprocessStage preprocess(shaderlib ? std::move(shaderlib) : embedded_shaderlib());
+  if (Status status = preprocess.process(job); !status) {
+    Error error = status.error();
+    error.message = "preprocess: " + error.message;
+    return error;
+  }
+  return std::move(job.preprocessed);
 }
 
 }  // namespace penumbra

@@ -103,4 +103,11 @@ Result<CompiledPass> compile_pass(
     const Variant& variant, Target target, PassKind pass,
     std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
 
+// The GLSL that one stage of one pass compiles from: its shaderlib source
+// with every include and define resolved, as the build's preprocess stage
+// makes it, for compiling with other tools (penumbra_bench_build).
+Result<std::string> preprocess_shader(
+    const Variant& variant, Target target, PassKind pass, ShaderStage stage,
+    std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
+
 }  // namespace penumbra

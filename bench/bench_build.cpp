@@ -1,0 +1,648 @@
+// penumbra_bench_build: how fast the `penumbra` executable builds a library,
+// against the same shaders compiled by a chain of separate processes, one
+// per tool and shader (glslangValidator, spirv-opt, spirv-val, spirv-cross),
+// as a build without penumbra would run them. For each manifest it prints,
+// side by side: cold builds at -j1 and -jN (no cache; no Direct3D bytecode
+// unless --bytecode), the chain at the same parallelism, a build into a new
+// OUT from a warm cache, a rebuild that does nothing, each build's peak RSS,
+// index.json's bytes per variant and, with --groups, a split build joined by
+// `penumbra merge` and compared with the single build byte for byte.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "penumbra/compiler/build.hpp"
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/target_traits.hpp"
+
+extern char** environ;
+
+namespace penumbra {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct Options {
+  std::vector<std::filesystem::path> manifests;
+  int jobs = 1;           // N: build threads, chain workers and group processes at once
+  int chain_sample = 1;   // the chain runs on every K-th shader; its time is scaled up
+  int groups = 0;         // split build: G `penumbra build --group I/G`; 0: none
+  bool bytecode = false;  // also a cold build with vkd3d-compiler, timed apart
+  bool skip_j1 = false;   // no -j1 build or chain (manifests too large to build twice)
+  std::filesystem::path hlsl_compiler = {};  // with --bytecode
+};
+
+// Deletes the benchmark's folder however it ends.
+struct TempDir {
+  std::filesystem::path root;
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(root, ignored);
+  }
+};
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// One finished child process.
+struct ChildRun {
+  int exit_code = -1;  // -1: ended by a signal
+  double seconds = 0.0;
+  long peak_rss_kb = 0;  // the child's own ru_maxrss
+  std::string output;    // stdout and stderr
+};
+
+// Runs argv[0] (a path) with `env`, its output into `log`, read back after.
+// wait4 blocks until it exits and gives its peak RSS; no polling, so the
+// benchmark adds no latency of its own to each process.
+Result<ChildRun> run_child(const std::vector<std::string>& argv, char* const* env,
+                           const std::filesystem::path& log) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  std::vector<char*> args;
+  for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+  args.push_back(nullptr);
+  const auto start = Clock::now();
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, args.data(), env);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) {
+    return make_error(Error::Kind::io, argv[0],
+                      std::string("cannot run: ") + std::strerror(spawned));
+  }
+  int status = 0;
+  rusage usage{};
+  while (::wait4(pid, &status, 0, &usage) < 0) {
+    if (errno != EINTR) {
+      return make_error(Error::Kind::io, argv[0], std::string("wait4: ") + std::strerror(errno));
+    }
+  }
+  ChildRun run;
+  run.seconds = seconds_since(start);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.peak_rss_kb = usage.ru_maxrss;
+  run.output = read_text(log);
+  return run;
+}
+
+// An environment for child processes: this one's, with `overrides`.
+class Environment {
+ public:
+  explicit Environment(const std::map<std::string, std::string>& overrides) {
+    for (char** entry = environ; *entry; ++entry) {
+      const std::string text = *entry;
+      if (!overrides.contains(text.substr(0, text.find('=')))) strings_.push_back(text);
+    }
+    for (const auto& [name, value] : overrides) strings_.push_back(name + "=" + value);
+    for (std::string& text : strings_) pointers_.push_back(text.data());
+    pointers_.push_back(nullptr);
+  }
+  char* const* get() const { return pointers_.data(); }
+
+ private:
+  std::vector<std::string> strings_;
+  std::vector<char*> pointers_;
+};
+
+// A program on PATH, as a path (posix_spawn does not search).
+std::filesystem::path find_program(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');) {
+    const std::filesystem::path candidate = std::filesystem::path(dir) / name;
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return {};
+}
+
+// `penumbra build`'s summary line: "built V variants (F shader files, B
+// bytecode files, C shaders from the cache) into OUT".
+struct BuildCounts {
+  std::size_t variants = 0;
+  std::size_t files = 0;
+  std::size_t bytecode = 0;
+  std::size_t cached = 0;
+  bool up_to_date = false;  // "OUT is up to date": nothing built
+};
+
+BuildCounts parse_summary(const std::string& output) {
+  BuildCounts counts;
+  counts.up_to_date = output.find(" is up to date\n") != std::string::npos;
+  const std::size_t line = output.rfind("built ");
+  if (line != std::string::npos) {
+    std::sscanf(output.c_str() + line,
+                "built %zu variants (%zu shader files, %zu bytecode files, %zu shaders from",
+                &counts.variants, &counts.files, &counts.bytecode, &counts.cached);
+  }
+  return counts;
+}
+
+// One run of `penumbra`, or of several at once (a split build).
+struct Measured {
+  double seconds = 0.0;
+  long peak_rss_kb = 0;
+  BuildCounts counts;
+};
+
+class Bench {
+ public:
+  explicit Bench(std::filesystem::path root)
+      : root_(std::move(root)),
+        // No HLSL compiler is found unless given: PENUMBRA_HLSL_COMPILER is
+        // empty and the default install (~/.cache/penumbra/vkd3d) is not
+        // under this HOME. Every build names its cache, or --no-cache.
+        env_({{"PENUMBRA_HLSL_COMPILER", ""},
+              {"XDG_CACHE_HOME", ""},
+              {"HOME", (root_ / "home").string()}}) {
+    std::filesystem::create_directories(root_ / "home");
+  }
+
+  const std::filesystem::path& root() const { return root_; }
+
+  // `penumbra ARGS`, which must succeed; `log` names its output file.
+  Result<Measured> penumbra(std::vector<std::string> args, const std::string& log) const {
+    args.insert(args.begin(), PENUMBRA_EXECUTABLE);
+    auto run = run_child(args, env_.get(), root_ / (log + ".log"));
+    if (!run) return run.error();
+    if (run->exit_code != 0) {
+      return make_error(Error::Kind::compile, "penumbra " + args[1],
+                        "exited with " + std::to_string(run->exit_code) + ":\n" + run->output);
+    }
+    return Measured{run->seconds, run->peak_rss_kb, parse_summary(run->output)};
+  }
+
+  // `penumbra build MANIFEST -o OUT -j JOBS EXTRA...`.
+  Result<Measured> build(const std::filesystem::path& manifest, const std::filesystem::path& out,
+                         int jobs, std::vector<std::string> extra) const {
+    std::vector<std::string> args = {"build", manifest.string(),   "-o", out.string(),
+                                     "-j",    std::to_string(jobs)};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return penumbra(std::move(args), out.filename().string());
+  }
+
+ private:
+  std::filesystem::path root_;
+  Environment env_;
+};
+
+// One shader of the library, as the chain compiles it.
+struct ChainShader {
+  std::filesystem::path source;  // preprocessed GLSL, written before any timing
+  ShaderStage stage = ShaderStage::fragment;
+  Target target = Target::spirv;
+};
+
+// The shader files a library lists, each once (every variant lists the
+// shared ones), in index order: how many, and every `sample`-th of them
+// with its preprocessed source written under `dir`.
+struct ChainPlan {
+  std::size_t total = 0;
+  std::vector<ChainShader> sampled;
+};
+
+Result<ChainPlan> plan_chain(const std::filesystem::path& manifest, const Library& library,
+                             int sample, const std::filesystem::path& dir) {
+  auto variants = load_variants(manifest);
+  if (!variants) return variants.error();
+  std::map<std::string, const Variant*> by_name;
+  for (const Variant& variant : *variants) by_name[variant.name] = &variant;
+  std::filesystem::create_directories(dir);
+  ChainPlan plan;
+  std::set<std::string> seen;
+  for (const LibraryVariant& built : library.variants) {
+    const Variant& variant = *by_name.at(built.variant.name);
+    for (const auto& [pass, by_target] : built.passes) {
+      for (const auto& [target, files] : by_target) {
+        for (const auto& [stage, file] : {std::pair{ShaderStage::vertex, files.vert},
+                                          std::pair{ShaderStage::fragment, files.frag}}) {
+          if (!seen.insert(file).second) continue;
+          if (plan.total++ % static_cast<std::size_t>(sample) != 0) continue;
+          auto text = preprocess_shader(variant, target, pass, stage);
+          if (!text) return text.error();
+          const std::filesystem::path source =
+              dir / (std::to_string(plan.sampled.size()) + "." + std::string(stage_key(stage)));
+          std::ofstream(source, std::ios::binary) << *text;
+          plan.sampled.push_back({source, stage, target});
+        }
+      }
+    }
+  }
+  return plan;
+}
+
+// The separate tools, found on PATH.
+struct ChainTools {
+  std::filesystem::path glslang, opt, val, cross;
+};
+
+// The processes for one shader, as our pipeline's stages: SPIR-V 1.0 for
+// Vulkan 1.0, spirv-opt's dead-code passes of stages/optimize.cpp,
+// validation, then the target's text with SPIRV-Cross's options of
+// stages/cross_compile.cpp (none for spirv).
+std::vector<std::vector<std::string>> chain_commands(const ChainTools& tools,
+                                                     const ChainShader& shader,
+                                                     const std::filesystem::path& scratch) {
+  const std::string compiled = (scratch / "compiled.spv").string();
+  const std::string optimized = (scratch / "optimized.spv").string();
+  std::vector<std::vector<std::string>> commands = {
+      {tools.glslang.string(), "-V", "--target-env", "vulkan1.0", "-S",
+       std::string(stage_key(shader.stage)), shader.source.string(), "-o", compiled},
+      {tools.opt.string(), "--target-env=vulkan1.0", "--fold-spec-const-op-composite",
+       "--eliminate-dead-branches", "--eliminate-dead-functions",
+       "--eliminate-dead-code-aggressive", "--eliminate-dead-const", "--cfg-cleanup", compiled,
+       "-o", optimized},
+      {tools.val.string(), "--target-env", "vulkan1.0", optimized}};
+  if (shader.target == Target::spirv) return commands;
+  std::vector<std::string> cross = {tools.cross.string(), optimized, "--output",
+                                    (scratch / "text").string()};
+  const bool vertex = shader.stage == ShaderStage::vertex;
+  const TargetTraits target = traits(shader.target);
+  if (target.is_hlsl) {
+    cross.insert(cross.end(),
+                 {"--hlsl", "--shader-model", std::to_string(target.shader_model * 10)});
+    if (vertex) cross.emplace_back("--flip-vert-y");
+  } else {
+    if (shader.target == Target::glsl450) cross.insert(cross.end(), {"--version", "450"});
+    if (shader.target == Target::glsl330) {
+      cross.insert(cross.end(), {"--version", "330", "--no-420pack-extension"});
+    }
+    if (shader.target == Target::essl300) cross.insert(cross.end(), {"--version", "300", "--es"});
+    if (vertex) cross.emplace_back("--fixup-clipspace");
+  }
+  commands.push_back(std::move(cross));
+  return commands;
+}
+
+// Runs the chain for every shader on `workers` threads: the wall time.
+Result<double> run_chain(const ChainTools& tools, const std::vector<ChainShader>& shaders,
+                         int workers, const std::filesystem::path& dir) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::mutex error_mutex;
+  std::optional<Error> error;
+  char* const* env = environ;
+  auto worker = [&](int id) {
+    const std::filesystem::path scratch = dir / ("worker" + std::to_string(id));
+    std::filesystem::create_directories(scratch);
+    for (std::size_t i = next++; i < shaders.size() && !failed; i = next++) {
+      for (const auto& command : chain_commands(tools, shaders[i], scratch)) {
+        auto run = run_child(command, env, scratch / "log");
+        if (run && run->exit_code == 0) continue;
+        const std::scoped_lock lock(error_mutex);
+        failed = true;
+        if (!error) {
+          error = run ? make_error(Error::Kind::compile, shaders[i].source.string(),
+                                   command[0] + " failed:\n" + run->output)
+                      : run.error();
+        }
+        return;
+      }
+    }
+  };
+  const auto start = Clock::now();
+  {
+    std::vector<std::jthread> pool;
+    for (int w = 1; w < workers; ++w) pool.emplace_back(worker, w);
+    worker(0);
+  }
+  if (error) return *error;
+  return seconds_since(start);
+}
+
+// Every regular file under `dir`, relative to it, sorted.
+std::vector<std::filesystem::path> files_under(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file()) files.push_back(entry.path().lexically_relative(dir));
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The first difference between two folders' files, or none.
+std::optional<std::string> first_difference(const std::filesystem::path& a,
+                                            const std::filesystem::path& b) {
+  const auto files = files_under(a);
+  if (files != files_under(b)) return "the folders hold different files";
+  for (const auto& file : files) {
+    if (read_text(a / file) != read_text(b / file)) return file.string() + " differs";
+  }
+  return std::nullopt;
+}
+
+// What du reports: the blocks the files under `dir` take.
+std::uintmax_t disk_usage(const std::filesystem::path& dir) {
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    struct stat st {};
+    if (::lstat(entry.path().c_str(), &st) == 0)
+      bytes += static_cast<std::uintmax_t>(st.st_blocks) * 512;
+  }
+  return bytes;
+}
+
+// The split build: G `penumbra build --group I/G -j1` processes, N at a time,
+// then `penumbra merge`.
+struct SplitBuild {
+  Measured groups;  // wall time of all groups; the largest peak RSS of one
+  Measured merge;
+  std::optional<std::string> difference;  // from the single build; none: identical
+};
+
+Result<SplitBuild> split_build(const Bench& bench, const Options& options,
+                               const std::filesystem::path& manifest,
+                               const std::filesystem::path& single) {
+  const std::filesystem::path parts = bench.root() / "parts";
+  std::filesystem::create_directories(parts);
+  std::atomic<int> next{1};
+  std::mutex mutex;
+  std::optional<Error> error;
+  SplitBuild split;
+  auto worker = [&] {
+    for (int group = next++; group <= options.groups; group = next++) {
+      const std::string spec = std::to_string(group) + "/" + std::to_string(options.groups);
+      auto part = bench.build(manifest, parts / std::to_string(group), 1,
+                              {"--group", spec, "--no-cache", "-q"});
+      const std::scoped_lock lock(mutex);
+      if (!part) {
+        if (!error) error = part.error();
+        return;
+      }
+      split.groups.peak_rss_kb = std::max(split.groups.peak_rss_kb, part->peak_rss_kb);
+    }
+  };
+  const auto start = Clock::now();
+  {
+    std::vector<std::jthread> pool;
+    for (int w = 1; w < std::min(options.jobs, options.groups); ++w) pool.emplace_back(worker);
+    worker();
+  }
+  if (error) return *error;
+  split.groups.seconds = seconds_since(start);
+  std::vector<std::string> args = {"merge"};
+  for (int group = 1; group <= options.groups; ++group) {
+    args.push_back((parts / std::to_string(group)).string());
+  }
+  const std::filesystem::path merged = bench.root() / "merged";
+  args.insert(args.end(), {"-o", merged.string()});
+  PENUMBRA_TRY_ASSIGN(split.merge, bench.penumbra(std::move(args), "merge"));
+  split.difference = first_difference(single, merged);
+  std::filesystem::remove_all(parts);
+  std::filesystem::remove_all(merged);
+  return split;
+}
+
+double mib(long kb) {
+  return static_cast<double>(kb) / 1024.0;
+}
+
+void print_row(const std::string& what, double seconds, std::size_t shaders, long rss_kb,
+               const std::string& note = "") {
+  const std::string rate =
+      shaders > 0 ? std::to_string(static_cast<long>(static_cast<double>(shaders) / seconds)) : "-";
+  char rss[32] = "-";
+  if (rss_kb > 0) std::snprintf(rss, sizeof rss, "%.0f", mib(rss_kb));
+  std::printf("| %s | %.3f | %s | %s | %s |\n", what.c_str(), seconds, rate.c_str(), rss,
+              note.c_str());
+}
+
+Status bench_manifest(const Options& options, const ChainTools& tools,
+                      const std::filesystem::path& manifest) {
+  TempDir temp{std::filesystem::temp_directory_path() /
+               ("penumbra-bench-build-" + std::to_string(::getpid()))};
+  const Bench bench(temp.root);
+  const std::string j = "-j" + std::to_string(options.jobs);
+  const std::vector<std::string> no_cache = {"--no-cache"};
+
+  std::optional<Measured> cold1;
+  if (!options.skip_j1) {
+    PENUMBRA_TRY_ASSIGN(cold1, bench.build(manifest, temp.root / "cold-j1", 1, no_cache));
+    std::filesystem::remove_all(temp.root / "cold-j1");
+  }
+  const std::filesystem::path single = temp.root / "cold";
+  Measured cold;
+  PENUMBRA_TRY_ASSIGN(cold, bench.build(manifest, single, options.jobs, no_cache));
+  const std::size_t shaders = cold.counts.files;
+
+  std::optional<Measured> with_bytecode;
+  if (options.bytecode) {
+    PENUMBRA_TRY_ASSIGN(with_bytecode, bench.build(manifest, temp.root / "bytecode", options.jobs,
+                                                   {"--no-cache", "--hlsl-compiler",
+                                                    options.hlsl_compiler.string()}));
+    std::filesystem::remove_all(temp.root / "bytecode");
+  }
+
+  // The cache: filled by one cold build, then read by a build into a new
+  // OUT, then a rebuild of that OUT that finds its stamp and does nothing.
+  const std::filesystem::path cache = temp.root / "cache";
+  const std::vector<std::string> cached = {"--cache-dir", cache.string()};
+  Measured fill;
+  Measured warm;
+  Measured noop;
+  PENUMBRA_TRY_ASSIGN(fill, bench.build(manifest, temp.root / "fill", options.jobs, cached));
+  const std::uintmax_t cache_bytes = disk_usage(cache);
+  PENUMBRA_TRY_ASSIGN(warm, bench.build(manifest, temp.root / "warm", options.jobs, cached));
+  PENUMBRA_TRY_ASSIGN(noop, bench.build(manifest, temp.root / "warm", options.jobs, cached));
+  std::filesystem::remove_all(temp.root / "fill");
+  std::filesystem::remove_all(temp.root / "warm");
+
+  auto library = load_library(single);
+  if (!library) return library.error();
+  ChainPlan plan;
+  PENUMBRA_TRY_ASSIGN(
+      plan, plan_chain(manifest, *library, options.chain_sample, temp.root / "chain-sources"));
+  if (plan.total != shaders) {
+    return make_error(Error::Kind::internal, (single / "index.json").string(),
+                      "lists " + std::to_string(plan.total) + " shader files; penumbra built " +
+                          std::to_string(shaders));
+  }
+  // The chain's time for every shader, from the sampled ones.
+  const double scale = static_cast<double>(plan.total) / static_cast<double>(plan.sampled.size());
+  std::optional<double> chain1;
+  if (!options.skip_j1) {
+    double seconds = 0.0;
+    PENUMBRA_TRY_ASSIGN(seconds, run_chain(tools, plan.sampled, 1, temp.root / "chain"));
+    chain1 = seconds * scale;
+  }
+  double chain_n = 0.0;
+  PENUMBRA_TRY_ASSIGN(chain_n, run_chain(tools, plan.sampled, options.jobs, temp.root / "chain"));
+  chain_n *= scale;
+
+  std::optional<SplitBuild> split;
+  if (options.groups > 0) {
+    PENUMBRA_TRY_ASSIGN(split, split_build(bench, options, manifest, single));
+  }
+  const auto index_bytes = std::filesystem::file_size(single / "index.json");
+  const std::size_t variants = cold.counts.variants;
+
+  std::printf("\n%s: %zu variants, %zu shaders; -j%d\n\n",
+              std::filesystem::relative(manifest).string().c_str(), variants, shaders,
+              options.jobs);
+  std::printf("| run | wall s | shaders/s | peak RSS MiB | |\n|---|---|---|---|---|\n");
+  if (cold1) print_row("cold -j1, no cache", cold1->seconds, shaders, cold1->peak_rss_kb);
+  print_row("cold " + j + ", no cache", cold.seconds, shaders, cold.peak_rss_kb);
+  if (with_bytecode) {
+    print_row("cold " + j + ", no cache, with bytecode", with_bytecode->seconds, shaders,
+              with_bytecode->peak_rss_kb,
+              std::to_string(with_bytecode->counts.bytecode) + " bytecode files");
+  }
+  print_row("cold " + j + ", filling an empty cache", fill.seconds, shaders, fill.peak_rss_kb);
+  print_row("warm cache, new OUT, " + j, warm.seconds, shaders, warm.peak_rss_kb,
+            std::to_string(warm.counts.cached) + " of " + std::to_string(shaders) +
+                " shaders from the cache");
+  print_row("no-op rebuild of that OUT", noop.seconds, 0, noop.peak_rss_kb,
+            noop.counts.up_to_date ? "OUT is up to date" : "NOT up to date: it built again");
+  const std::string sampled = options.chain_sample > 1
+                                  ? ", sampled: " + std::to_string(plan.sampled.size()) + " of " +
+                                        std::to_string(plan.total) + " shaders, scaled"
+                                  : "";
+  if (chain1) print_row("chain -j1" + sampled, *chain1, shaders, 0);
+  print_row("chain " + j + sampled, chain_n, shaders, 0);
+  if (split) {
+    const std::string groups = std::to_string(options.groups) + " groups, " +
+                               std::to_string(std::min(options.jobs, options.groups)) +
+                               " at a time, -j1 each";
+    print_row(groups, split->groups.seconds, shaders, split->groups.peak_rss_kb);
+    print_row("penumbra merge", split->merge.seconds, 0, split->merge.peak_rss_kb);
+  }
+
+  std::printf("\n");
+  if (cold1) {
+    std::printf("speed-up -j%d/-j1: %.2fx\n", options.jobs, cold1->seconds / cold.seconds);
+    std::printf("chain/penumbra at -j1: %.1fx\n", *chain1 / cold1->seconds);
+  }
+  std::printf("chain/penumbra at %s: %.1fx (goal: 10x or more)\n", j.c_str(),
+              chain_n / cold.seconds);
+  if (with_bytecode) {
+    std::printf("bytecode (vkd3d-compiler): +%.2f s at %s for %zu files\n",
+                with_bytecode->seconds - cold.seconds, j.c_str(), with_bytecode->counts.bytecode);
+  }
+  std::printf("no-op rebuild: %.3f s (goal for the default library: under 0.1 s)\n", noop.seconds);
+  std::printf("index.json: %ju bytes, %ju bytes/variant\n",
+              static_cast<std::uintmax_t>(index_bytes),
+              static_cast<std::uintmax_t>(index_bytes / std::max<std::size_t>(variants, 1)));
+  std::printf("cache after the cold build: %.1f MiB on disk\n",
+              static_cast<double>(cache_bytes) / (1024.0 * 1024.0));
+  if (split) {
+    std::printf("split build: %.2f s in all; merged library %s\n",
+                split->groups.seconds + split->merge.seconds,
+                split->difference ? ("DIFFERS from the single build: " + *split->difference).c_str()
+                                  : "equals the single build byte for byte");
+  }
+  return {};
+}
+
+// "AMD EPYC ..." from /proc/cpuinfo.
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("model name")) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+std::string load_average() {
+  std::string text = read_text("/proc/loadavg");
+  return text.substr(0, text.find(' ', text.find(' ', text.find(' ') + 1) + 1));
+}
+
+}  // namespace
+}  // namespace penumbra
+
+int main(int argc, char** argv) {
+  penumbra::Options options;
+  options.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  CLI::App app{
+      "penumbra build's cold, warm and no-op times, memory and index size, against "
+      "a chain of separate tools"};
+  app.add_option("--manifest", options.manifests,
+                 "manifest to build, repeatable (default: permutations/default.json)")
+      ->check(CLI::ExistingFile);
+  app.add_option("-j,--jobs", options.jobs, "N: build threads, chain workers (default: cores)")
+      ->check(CLI::Range(1, 256));
+  app.add_option("--chain-sample", options.chain_sample,
+                 "time the chain on every K-th shader and scale it up")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--groups", options.groups,
+                 "also a split build: G `--group I/G` builds, N at a time, and penumbra merge")
+      ->check(CLI::Range(1, 4096));
+  app.add_flag("--bytecode", options.bytecode,
+               "also a cold build with vkd3d-compiler ($PENUMBRA_HLSL_COMPILER), timed apart");
+  app.add_flag("--skip-j1", options.skip_j1, "no -j1 build or chain, for large manifests");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::fprintf(stderr, "penumbra_bench_build: %s\n", e.what());
+    return 2;
+  }
+  if (options.manifests.empty()) {
+    options.manifests = {std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations/default.json"};
+  }
+  if (options.bytecode) {
+    const char* env = std::getenv("PENUMBRA_HLSL_COMPILER");
+    if (env && *env) options.hlsl_compiler = env;
+    if (options.hlsl_compiler.empty() || ::access(options.hlsl_compiler.c_str(), X_OK) != 0) {
+      std::fprintf(stderr,
+                   "penumbra_bench_build: --bytecode: PENUMBRA_HLSL_COMPILER names no "
+                   "vkd3d-compiler (scripts/bench.sh build --bytecode installs one)\n");
+      return 2;
+    }
+  }
+  const penumbra::ChainTools tools{
+      penumbra::find_program("glslangValidator"), penumbra::find_program("spirv-opt"),
+      penumbra::find_program("spirv-val"), penumbra::find_program("spirv-cross")};
+  for (const auto& [tool, package] : {std::pair{&tools.glslang, "glslangValidator (glslang-tools)"},
+                                      std::pair{&tools.opt, "spirv-opt (spirv-tools)"},
+                                      std::pair{&tools.val, "spirv-val (spirv-tools)"},
+                                      std::pair{&tools.cross, "spirv-cross (spirv-cross)"}}) {
+    if (tool->empty()) {
+      std::fprintf(stderr, "penumbra_bench_build: %s is not on PATH\n", package);
+      return 1;
+    }
+  }
+  std::printf("%u cores (%s), load average %s; penumbra: %s\n", std::thread::hardware_concurrency(),
+              penumbra::cpu_model().c_str(), penumbra::load_average().c_str(), PENUMBRA_EXECUTABLE);
+  for (const auto& manifest : options.manifests) {
+    const penumbra::Status status = penumbra::bench_manifest(options, tools, manifest);
+    if (!status) {
+      std::fprintf(stderr, "penumbra_bench_build: %s\n", status.error().to_string().c_str());
+      return 1;
+    }
+    std::printf("load average after: %s\n", penumbra::load_average().c_str());
+  }
+  return 0;
+}
