@@ -206,7 +206,7 @@ class Bench {
 
   // `penumbra build MANIFEST -o OUT -j JOBS EXTRA...`.
   Result<Measured> build(const std::filesystem::path& manifest, const std::filesystem::path& out,
-                         int jobs, std::vector<std::string> extra) const {
+                         int jobs, const std::vector<std::string>& extra) const {
     std::vector<std::string> args = {"build", manifest.string(),   "-o", out.string(),
                                      "-j",    std::to_string(jobs)};
     args.insert(args.end(), extra.begin(), extra.end());
