@@ -42,9 +42,10 @@ std::vector<std::string> variant_files(const ResolvedVariant& variant) {
 Status copy_file_once(const fs::path& part, const std::string& file, const fs::path& staging,
                       std::map<std::string, std::string>& copied) {
   PENUMBRA_TRY_ASSIGN(const std::string bytes, read_file(part / file));
-  const auto [at, added] = copied.try_emplace(file, content_hash(bytes));
+  const std::string hash = content_hash(bytes);
+  const auto [at, added] = copied.try_emplace(file, hash);
   if (!added) {
-    if (at->second != content_hash(bytes)) {
+    if (at->second != hash) {
       return make_error(Error::Kind::bad_input, (part / file).string(),
                         "differs from the same file of an earlier part; parts must come from "
                         "one build setup (same penumbra, shaderlib and HLSL compiler)");
