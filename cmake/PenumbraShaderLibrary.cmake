@@ -9,7 +9,9 @@
 # `penumbra build --group I/N` writes each group's part under
 # OUTPUT_DIR/parts (default OUTPUT_DIR: <current binary dir>/<name>), then
 # `penumbra merge` joins them into OUTPUT_DIR/library, byte for byte what one
-# `penumbra build` writes, and `penumbra embed` writes the sources. A variant
+# `penumbra build` writes. Each step also embeds its part (`penumbra embed
+# --part`) as a source of its own, so a large library compiles as GROUPS
+# objects, in parallel, and an edit recompiles the parts it changed. A variant
 # belongs to a group by its name's hash, so an edited manifest set reruns the
 # steps of the groups whose variants changed; the others find their build
 # stamp current and leave their part untouched, and a step whose part comes
@@ -69,36 +71,42 @@ function(penumbra_add_shader_library name)
     list(APPEND build_args --shaderlib ${ARG_SHADERLIB_DIR})
   endif()
 
-  # One step per group: its part's index.json is the depfile's target.
+  # One step per group: its part's index.json is the depfile's target, and
+  # its part of the embedded shaders is one object of its own.
   set(parts)
   set(part_indexes)
+  set(sources ${ARG_OUTPUT_DIR}/${name}_shaders.cpp)
   foreach(group RANGE 1 ${ARG_GROUPS})
     set(part ${ARG_OUTPUT_DIR}/parts/${group})
+    set(part_source ${ARG_OUTPUT_DIR}/${name}_shaders_${group}.cpp)
     add_custom_command(
       OUTPUT ${part}/index.json
+      BYPRODUCTS ${part_source}
       COMMAND Penumbra::penumbra build ${ARG_MANIFEST} -o ${part} -q --group ${group}/${ARG_GROUPS}
               --depfile ${ARG_OUTPUT_DIR}/parts/${group}.d ${build_args}
+      COMMAND Penumbra::penumbra embed ${part} --name ${name} --part ${group} -o ${ARG_OUTPUT_DIR}
+              -q
       DEPENDS ${ARG_MANIFEST} $<TARGET_FILE:Penumbra::penumbra>
       DEPFILE ${ARG_OUTPUT_DIR}/parts/${group}.d
       COMMENT "penumbra: ${name}, group ${group}/${ARG_GROUPS}"
       VERBATIM)
     list(APPEND parts ${part})
     list(APPEND part_indexes ${part}/index.json)
+    list(APPEND sources ${part_source})
   endforeach()
 
-  # The header is a byproduct: `penumbra embed` rewrites it only when it
-  # changes, and Ninja then rebuilds nothing that includes it.
-  set(source ${ARG_OUTPUT_DIR}/${name}_shaders.cpp)
+  # The header and the index of the parts depend on the name and GROUPS
+  # alone; `penumbra embed` rewrites them only when they change, so Ninja
+  # rebuilds nothing that includes the header when the shaders change.
   add_custom_command(
-    OUTPUT ${ARG_OUTPUT_DIR}/library/index.json ${source}
+    OUTPUT ${ARG_OUTPUT_DIR}/library/index.json ${ARG_OUTPUT_DIR}/${name}_shaders.cpp
     BYPRODUCTS ${ARG_OUTPUT_DIR}/include/${name}/shaders.hpp
     COMMAND Penumbra::penumbra merge ${parts} -o ${ARG_OUTPUT_DIR}/library -q
-    COMMAND Penumbra::penumbra embed ${ARG_OUTPUT_DIR}/library --name ${name}
-            -o ${ARG_OUTPUT_DIR}
+    COMMAND Penumbra::penumbra embed --name ${name} --parts ${ARG_GROUPS} -o ${ARG_OUTPUT_DIR} -q
     DEPENDS ${part_indexes} $<TARGET_FILE:Penumbra::penumbra>
     COMMENT "penumbra: shader library ${name} (${ARG_GROUPS} groups)"
     VERBATIM)
-  add_library(${name} STATIC ${source})
+  add_library(${name} STATIC ${sources})
   target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${ARG_OUTPUT_DIR}/include>)
   target_link_libraries(${name} PUBLIC Penumbra::shaders)
 endfunction()

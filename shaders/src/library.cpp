@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 #include <tuple>
 
 namespace penumbra::shaders {
@@ -15,27 +16,42 @@ auto order_key(const Program& p) {
   return order_key(p.variant, p.target, p.pass);
 }
 
+auto order_key(const EmbeddedProgram& e) {
+  return order_key(e.variant, e.target, e.pass);
+}
+
 }  // namespace
 
-Library::Library(std::span<const std::string_view> blob,
-                 std::span<const EmbeddedProgram> programs) {
-  for (std::string_view piece : blob) blob_.append(piece);
-  auto text = [&](BlobRange r) { return std::string_view(blob_).substr(r.offset, r.size); };
+// Built on first use: an engine that looks up a few programs of a large
+// library pays for the parts holding them, not for the whole blob.
+struct Library::Built {
+  std::once_flag once;
+  std::string blob;                               // the part's pieces joined
+  std::vector<std::vector<std::uint32_t>> words;  // SPIR-V, copied out aligned
+  std::vector<Program> programs;                  // in the part's table order
+
+  void build(const EmbeddedPart& part);
+};
+
+void Library::Built::build(const EmbeddedPart& part) {
+  for (std::string_view piece : part.blob) blob.append(piece);
+  auto text = [&](BlobRange r) { return std::string_view(blob).substr(r.offset, r.size); };
   auto bytes = [&](BlobRange r) {
     return std::span<const std::uint8_t>(
-        reinterpret_cast<const std::uint8_t*>(blob_.data()) + r.offset, r.size);
+        reinterpret_cast<const std::uint8_t*>(blob.data()) + r.offset, r.size);
   };
-  // SPIR-V is copied into word arrays: the blob's chars carry no alignment.
-  auto words = [&](BlobRange r) -> std::span<const std::uint32_t> {
-    std::vector<std::uint32_t>& out = words_.emplace_back(r.size / 4);
-    std::memcpy(out.data(), blob_.data() + r.offset, out.size() * 4);
+  // The blob's chars carry no alignment, and SPIR-V is read as words.
+  auto spirv = [&](BlobRange r) -> std::span<const std::uint32_t> {
+    std::vector<std::uint32_t>& out = words.emplace_back(r.size / 4);
+    std::memcpy(out.data(), blob.data() + r.offset, out.size() * 4);
     return out;
   };
   std::size_t spirv_stages = 0;
-  for (const EmbeddedProgram& e : programs) spirv_stages += e.target == Target::spirv ? 2 : 0;
-  words_.reserve(spirv_stages);  // spans into words_ stay valid
-  for (const EmbeddedProgram& e : programs) {
-    Program p;
+  for (const EmbeddedProgram& e : part.programs) spirv_stages += e.target == Target::spirv ? 2 : 0;
+  words.reserve(spirv_stages);  // spans into `words` stay valid
+  programs.reserve(part.programs.size());
+  for (const EmbeddedProgram& e : part.programs) {
+    Program& p = programs.emplace_back();
     p.variant = e.variant;
     p.target = e.target;
     p.pass = e.pass;
@@ -44,28 +60,59 @@ Library::Library(std::span<const std::string_view> blob,
          {std::tuple{&p.vertex, e.vertex, e.vertex_bytecode, e.vertex_profile},
           std::tuple{&p.fragment, e.fragment, e.fragment_bytecode, e.fragment_profile}}) {
       if (e.target == Target::spirv) {
-        stage->spirv = words(code);
+        stage->spirv = spirv(code);
       } else {
         stage->text = text(code);
       }
       stage->bytecode = bytes(bytecode);
       stage->profile = profile;
     }
-    programs_.push_back(p);
   }
-  std::ranges::sort(programs_, {}, [](const Program& p) { return order_key(p); });
+}
+
+Library::Library(std::span<const EmbeddedPart> parts)
+    : parts_(parts), built_(std::make_unique<Built[]>(parts.size())) {}
+
+Library::~Library() = default;
+
+const Library::Built& Library::built(std::size_t part) const {
+  Built& built = built_[part];
+  std::call_once(built.once, [&] { built.build(parts_[part]); });
+  return built;
 }
 
 const Program* Library::find(std::string_view variant, Target target, PassKind pass) const {
   const auto key = order_key(variant, target, pass);
-  const auto it =
-      std::ranges::lower_bound(programs_, key, {}, [](const Program& p) { return order_key(p); });
-  return it != programs_.end() && order_key(*it) == key ? &*it : nullptr;
+  for (std::size_t part = 0; part < parts_.size(); ++part) {
+    const std::span<const EmbeddedProgram> table = parts_[part].programs;
+    const auto it = std::ranges::lower_bound(table, key, {},
+                                             [](const EmbeddedProgram& e) { return order_key(e); });
+    if (it != table.end() && order_key(*it) == key) {
+      return &built(part).programs[static_cast<std::size_t>(it - table.begin())];
+    }
+  }
+  return nullptr;
 }
 
 const Program* Library::find(Technique technique, const VariantKeys& keys, Target target,
                              PassKind pass) const {
   return find(variant_name(technique, keys), target, pass);
+}
+
+std::size_t Library::size() const {
+  std::size_t size = 0;
+  for (const EmbeddedPart& part : parts_) size += part.programs.size();
+  return size;
+}
+
+std::vector<const Program*> Library::programs() const {
+  std::vector<const Program*> all;
+  all.reserve(size());
+  for (std::size_t part = 0; part < parts_.size(); ++part) {
+    for (const Program& p : built(part).programs) all.push_back(&p);
+  }
+  std::ranges::sort(all, {}, [](const Program* p) { return order_key(*p); });
+  return all;
 }
 
 }  // namespace penumbra::shaders

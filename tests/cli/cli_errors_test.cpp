@@ -144,5 +144,23 @@ TEST(CliUsage, DiskPrintsJson) {
   EXPECT_THAT(run.out, HasSubstr("\"normalized_min_distance\""));
 }
 
+// `embed` takes a library, or --parts alone; each misuse names what it needs
+// and writes nothing.
+TEST(CliUsage, EmbedWithoutALibraryOrWithBothFormsIsExit2) {
+  ScratchDir dir{"embed-usage"};
+  const std::string out = " -o '" + (dir.path() / "out").string() + "'";
+  const CliRun none = run_penumbra("embed --name shadows" + out);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.err, HasSubstr("library"));
+  EXPECT_THAT(none.err, HasSubstr("--parts"));
+  const CliRun both = run_penumbra("embed some/library --parts 4 --name shadows" + out);
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_THAT(both.err, HasSubstr("--parts"));
+  const CliRun range = run_penumbra("embed --parts 0 --name shadows" + out);
+  EXPECT_EQ(range.exit_code, 2);
+  EXPECT_THAT(range.err, HasSubstr("--parts"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out"));
+}
+
 }  // namespace
 }  // namespace penumbra::testing

@@ -1,14 +1,18 @@
-// The embedded shaders against the library they came from: every program
-// of index.json is found, by name and by technique and keys, with the
-// files' bytes, the SPIR-V words, the bytecode and the reflection.
+// The embedded shaders against the library they came from, embedded in
+// parts (penumbra_add_shader_library) and whole (`penumbra embed` alone):
+// every program of index.json is found, by name and by technique and keys,
+// with the files' bytes, the SPIR-V words, the bytecode and the reflection.
 #include "penumbra/compiler/embed.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "embed_test/shaders.hpp"
+#include "embed_whole/shaders.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/support/file.hpp"
 
@@ -52,15 +56,24 @@ void expect_stage(const shaders::StageCode& code, Target target, const std::stri
   EXPECT_EQ(code.profile, bytecode->profile);
 }
 
-TEST(Embedded, EveryProgramOfTheLibraryWithItsFilesAndReflection) {
+struct Embedding {
+  const char* name;
+  const shaders::Library& (*library)();
+};
+
+class Embedded : public ::testing::TestWithParam<Embedding> {
+ protected:
+  const shaders::Library& library() const { return GetParam().library(); }
+};
+
+TEST_P(Embedded, EveryProgramOfTheLibraryWithItsFilesAndReflection) {
   std::size_t programs = 0, with_bytecode = 0;
   for (const LibraryVariant& entry : built().variants) {
     for (const auto& [pass, by_target] : entry.passes) {
       for (const auto& [target, files] : by_target) {
         SCOPED_TRACE(entry.variant.name + " " + std::string(to_string(target)) + " " +
                      std::string(to_string(pass)));
-        const shaders::Program* program =
-            embed_test::library().find(entry.variant.name, target, pass);
+        const shaders::Program* program = library().find(entry.variant.name, target, pass);
         ASSERT_NE(program, nullptr);
         EXPECT_EQ(program->variant, entry.variant.name);
         expect_stage(program->vertex, target, files.vert, files.vert_bytecode);
@@ -72,37 +85,66 @@ TEST(Embedded, EveryProgramOfTheLibraryWithItsFilesAndReflection) {
       }
     }
   }
-  EXPECT_EQ(embed_test::library().programs().size(), programs);
+  EXPECT_EQ(library().size(), programs);
+  const std::vector<const shaders::Program*> all = library().programs();
+  EXPECT_EQ(all.size(), programs);
+  EXPECT_TRUE(std::ranges::is_sorted(all, {}, [](const shaders::Program* p) {
+    return std::make_tuple(p->variant, static_cast<int>(p->target), static_cast<int>(p->pass));
+  }));
   EXPECT_GT(programs, 80u);
   EXPECT_GT(with_bytecode, 20u);  // the Direct3D targets, built with vkd3d-compiler
 }
 
-TEST(Embedded, FoundByTechniqueAndKeys) {
-  const shaders::Program* pcss = embed_test::find(
+TEST_P(Embedded, FoundByTechniqueAndKeys) {
+  const shaders::Program* pcss = library().find(
       Technique::pcss, {.blocker_samples = 16, .pcf_samples = 16, .disk = "whitepaper16"},
       Target::hlsl_dx10);
   ASSERT_NE(pcss, nullptr);
   EXPECT_EQ(pcss->variant, "pcss_b16_p16_whitepaper16");
   EXPECT_EQ(pcss->fragment.profile, "ps_4_0");
   EXPECT_THAT(pcss->fragment.text, ::testing::HasSubstr("SampleCmpLevelZero"));
-  const shaders::Program* depth = embed_test::find(Technique::minmax_pcf, {.kernel = 8},
-                                                   Target::spirv, PassKind::minmax_reduce);
+  const shaders::Program* depth =
+      library().find(Technique::minmax_pcf, {.kernel = 8}, Target::spirv, PassKind::minmax_reduce);
   ASSERT_NE(depth, nullptr);
   ASSERT_FALSE(depth->fragment.spirv.empty());
   EXPECT_EQ(depth->fragment.spirv[0], 0x07230203u);  // SPIR-V's magic
   // Keys, targets and passes the library does not hold.
-  EXPECT_EQ(embed_test::find(Technique::pcss,
-                             {.blocker_samples = 32, .pcf_samples = 16, .disk = "whitepaper16"},
-                             Target::hlsl_dx10),
+  EXPECT_EQ(library().find(Technique::pcss,
+                           {.blocker_samples = 32, .pcf_samples = 16, .disk = "whitepaper16"},
+                           Target::hlsl_dx10),
             nullptr);
-  EXPECT_EQ(embed_test::find(Technique::hard, {}, Target::hlsl_dx9, PassKind::blur_h), nullptr);
+  EXPECT_EQ(library().find(Technique::hard, {}, Target::hlsl_dx9, PassKind::blur_h), nullptr);
 }
+
+// The header's find() is the library's.
+TEST(EmbeddedHeader, FindIsTheLibrarysFind) {
+  const VariantKeys keys{.blocker_samples = 16, .pcf_samples = 16, .disk = "whitepaper16"};
+  EXPECT_EQ(embed_test::find(Technique::pcss, keys, Target::spirv),
+            embed_test::library().find(Technique::pcss, keys, Target::spirv));
+  EXPECT_EQ(embed_whole::find(Technique::pcss, keys, Target::spirv),
+            embed_whole::library().find(Technique::pcss, keys, Target::spirv));
+}
+
+INSTANTIATE_TEST_SUITE_P(Embeddings, Embedded,
+                         ::testing::Values(Embedding{"parts", &embed_test::library},
+                                           Embedding{"whole", &embed_whole::library}),
+                         [](const auto& param) { return std::string(param.param.name); });
 
 TEST(EmbedLibrary, ANameThatIsNoIdentifierIsRefused) {
   const auto result = embed_library(built(), ::testing::TempDir(), {.name = "3d-shaders"});
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error().where, "--name");
   EXPECT_THAT(result.error().message, ::testing::HasSubstr("not a C++ identifier"));
+}
+
+TEST(EmbedLibrary, APartOutsideItsRangeIsRefused) {
+  const auto part = embed_library(built(), ::testing::TempDir(), {.name = "x", .part = 4097});
+  ASSERT_FALSE(part.ok());
+  EXPECT_EQ(part.error().where, "--part");
+  EXPECT_THAT(part.error().message, ::testing::HasSubstr("allowed: 1..4096"));
+  const Status index = embed_part_index(::testing::TempDir(), "x", 0);
+  ASSERT_FALSE(index.ok());
+  EXPECT_EQ(index.error().where, "--parts");
 }
 
 }  // namespace

@@ -106,14 +106,19 @@ if(GENERATOR STREQUAL "Ninja")
     message(FATAL_ERROR "install test: a dead-code edit of techniques/pcss.glsl should rerun "
                         "its group step and nothing after it:\n${run_output}")
   endif()
-  # Changed: the library and the program are rebuilt.
+  # Changed: the library, the part's object and the program are rebuilt,
+  # and no other part's object.
   file(READ ${installed_shaderlib}/techniques/pcss.glsl pcss)
   string(REPLACE "return 1.0;  // no occluder" "return 0.999;  // no occluder" pcss "${pcss}")
   file(WRITE ${installed_shaderlib}/techniques/pcss.glsl "${pcss}")
   run(${CMAKE_COMMAND} --build ${embedded} --verbose)
-  if(NOT run_output MATCHES "penumbra merge" OR NOT run_output MATCHES "-o embedded ")
-    message(FATAL_ERROR "install test: editing techniques/pcss.glsl did not rebuild the "
-                        "embedded consumer's shaders:\n${run_output}")
+  string(REGEX MATCHALL "-c [^ \n]*engine_shadows_shaders_[0-9]+\\.cpp" recompiled "${run_output}")
+  list(REMOVE_DUPLICATES recompiled)
+  list(LENGTH recompiled recompiled)
+  if(NOT run_output MATCHES "penumbra merge" OR NOT recompiled EQUAL 1)
+    message(FATAL_ERROR "install test: editing techniques/pcss.glsl should rebuild the library "
+                        "and recompile exactly one part of the embedded consumer's shaders "
+                        "(${recompiled} were):\n${run_output}")
   endif()
   run(${embedded}/embedded)
 
@@ -130,7 +135,14 @@ if(GENERATOR STREQUAL "Ninja")
   string(REPLACE "\"sets\": [" "\"sets\": [\n    { \"technique\": \"pcf_grid\", \"kernel\": 5 },"
                  manifest "${manifest}")
   file(WRITE ${embedded_src}/manifest.json "${manifest}")
-  run(${CMAKE_COMMAND} --build ${embedded})
+  run(${CMAKE_COMMAND} --build ${embedded} --verbose)
+  string(REGEX MATCHALL "-c [^ \n]*engine_shadows_shaders_[0-9]+\\.cpp" recompiled "${run_output}")
+  list(REMOVE_DUPLICATES recompiled)
+  list(LENGTH recompiled recompiled)
+  if(NOT recompiled EQUAL 1)
+    message(FATAL_ERROR "install test: adding one variant recompiled ${recompiled} parts of the "
+                        "embedded consumer's shaders; expected only its own group's")
+  endif()
   set(rewritten 0)
   foreach(entry IN LISTS before)
     string(REGEX MATCH "^(.*)=([0-9]+)$" _ "${entry}")

@@ -13,6 +13,9 @@ namespace penumbra {
 
 struct EmbedOptions {
   std::string name;  // C++ namespace and header folder: <name>/shaders.hpp
+  // 0: one source holding every program and <name>::library(). I > 0: part
+  // I of a library split over objects (`embed_part_index` joins them).
+  std::size_t part = 0;
 };
 
 struct EmbedSummary {
@@ -21,11 +24,19 @@ struct EmbedSummary {
   std::uint64_t source_bytes = 0;  // what the files take in the library
 };
 
-// Writes `out`/include/<name>/shaders.hpp, which declares <name>::library()
-// and <name>::find() (rewritten only when its text changes), and
-// `out`/<name>_shaders.cpp, which holds every file of `library` (identical
-// contents once) and the table. `name` must be a C++ identifier.
+// Without a part: writes `out`/include/<name>/shaders.hpp, which declares
+// <name>::library() and <name>::find(), and `out`/<name>_shaders.cpp, which
+// holds every file of `library` (identical contents once), the table and
+// library(). With part I: writes only `out`/<name>_shaders_I.cpp, the same
+// for `library`'s programs as <name>::parts::part_I. Each file is rewritten
+// only when its text changes. `name` must be a C++ identifier.
 Result<EmbedSummary> embed_library(const Library& library, const std::filesystem::path& out,
                                    const EmbedOptions& options);
+
+// Writes the header and `out`/<name>_shaders.cpp, whose library() joins the
+// parts 1..`parts` embed_library() wrote: one object each, so that a large
+// library compiles in pieces and in parallel.
+Status embed_part_index(const std::filesystem::path& out, const std::string& name,
+                        std::size_t parts);
 
 }  // namespace penumbra

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -55,12 +56,24 @@ struct EmbeddedProgram {
   BlobRange reflection;
 };
 
+// One object's share of the generated shaders (`penumbra embed --part`
+// writes one per group): the pieces of its blob, in order, each under every
+// compiler's string literal limit, and its programs, which index that blob,
+// ordered by variant name, target and pass.
+struct EmbeddedPart {
+  std::span<const std::string_view> blob;
+  std::span<const EmbeddedProgram> programs;
+};
+
+// The lookup over every part. Constructing it copies nothing: a part's
+// blob is joined (and its SPIR-V copied into aligned words) the first time
+// one of its programs is found, once, safely from any thread.
 class Library {
  public:
-  // `blob`: the pieces of the generated blob, in order (each piece stays
-  // under every compiler's string literal limit); `programs` index it.
-  Library(std::span<const std::string_view> blob, std::span<const EmbeddedProgram> programs);
-  // Programs point into the library's own copy of the blob.
+  // `parts` must outlive the library (the generated sources keep them static).
+  explicit Library(std::span<const EmbeddedPart> parts);
+  ~Library();
+  // Programs point into the library's own copies of the parts' blobs.
   Library(const Library&) = delete;
   Library& operator=(const Library&) = delete;
 
@@ -72,13 +85,19 @@ class Library {
   const Program* find(std::string_view variant, Target target,
                       PassKind pass = PassKind::query) const;
 
-  // Every program, ordered by variant name, target and pass.
-  std::span<const Program> programs() const { return programs_; }
+  // How many programs the library holds, without building any.
+  std::size_t size() const;
+  // Every program, ordered by variant name, target and pass; builds every
+  // part.
+  std::vector<const Program*> programs() const;
 
  private:
-  std::string blob_;                               // the pieces joined
-  std::vector<std::vector<std::uint32_t>> words_;  // SPIR-V, copied out aligned
-  std::vector<Program> programs_;
+  struct Built;  // one part's joined blob, words and programs
+
+  const Built& built(std::size_t part) const;
+
+  std::span<const EmbeddedPart> parts_;
+  std::unique_ptr<Built[]> built_;
 };
 
 }  // namespace penumbra::shaders

@@ -1,0 +1,53 @@
+// penumbra::shaders::Library over hand-written parts: lookups across parts,
+// the order of programs(), and SPIR-V read out of an unaligned blob.
+#include "penumbra/shaders/library.hpp"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::shaders {
+namespace {
+
+using namespace std::string_view_literals;
+
+// "x" pads the SPIR-V so that it starts at an odd offset.
+constexpr std::string_view kFirstBlob[] = {"vert-afrag-a"sv, "x\x03\x02\x23\x07"sv};
+constexpr EmbeddedProgram kFirst[] = {
+    {"a", Target::glsl450, PassKind::query, {0, 6}, {6, 6}, {}, {}, "", "", {}},
+    {"c", Target::spirv, PassKind::query, {13, 4}, {13, 4}, {}, {}, "", "", {}},
+};
+constexpr std::string_view kSecondBlob[] = {"{\"b\":1}"sv};
+constexpr EmbeddedProgram kSecond[] = {
+    {"b", Target::hlsl_dx10, PassKind::depth, {0, 0}, {0, 0}, {}, {0, 7}, "", "ps_4_0", {0, 7}},
+};
+constexpr EmbeddedPart kParts[] = {{kFirstBlob, kFirst}, {kSecondBlob, {}}, {kSecondBlob, kSecond}};
+
+TEST(ShadersLibrary, FindsEachProgramInItsPart) {
+  const Library library(kParts);
+  EXPECT_EQ(library.size(), 3u);
+  const Program* a = library.find("a", Target::glsl450);
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->vertex.text, "vert-a");
+  EXPECT_EQ(a->fragment.text, "frag-a");
+  const Program* b = library.find("b", Target::hlsl_dx10, PassKind::depth);
+  ASSERT_NE(b, nullptr);
+  EXPECT_EQ(b->fragment.profile, "ps_4_0");
+  EXPECT_EQ(b->fragment.bytecode.size(), 7u);
+  EXPECT_EQ(b->reflection, "{\"b\":1}");
+  const Program* c = library.find("c", Target::spirv);
+  ASSERT_NE(c, nullptr);
+  ASSERT_EQ(c->fragment.spirv.size(), 1u);
+  EXPECT_EQ(c->fragment.spirv[0], 0x07230203u);
+  EXPECT_EQ(library.find("b", Target::hlsl_dx10), nullptr);  // the query pass
+  EXPECT_EQ(library.find("d", Target::spirv), nullptr);
+  EXPECT_EQ(library.find("b", Target::hlsl_dx10, PassKind::depth), b);  // built once
+}
+
+TEST(ShadersLibrary, ListsProgramsInOrderAcrossParts) {
+  const Library library(kParts);
+  std::string order;
+  for (const Program* p : library.programs()) order += p->variant;
+  EXPECT_EQ(order, "abc");
+}
+
+}  // namespace
+}  // namespace penumbra::shaders
