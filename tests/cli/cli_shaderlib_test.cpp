@@ -123,31 +123,46 @@ TEST_F(Shaderlib, DepfileOfTheEmbeddedCopyListsTheManifestAlone) {
             (out / "index.json").string() + ": " + (dir.path() / "manifest.json").string() + "\n");
 }
 
-TEST_F(Shaderlib, CompileErrorPointsIntoTheFolderFile) {
-  const fs::path copy = dir.path() / "copy";
+// A copy of the shader library whose techniques/pcss.glsl has `line` in
+// place of its line 7 (a blank one).
+fs::path copy_with_line_7(const fs::path& dir, const std::string& line) {
+  const fs::path copy = dir / "copy";
   fs::copy(PENUMBRA_SOURCE_SHADERLIB, copy, fs::copy_options::recursive);
-  const fs::path out = dir.path() / "out";
-  const fs::path depfile = dir.path() / "lib.d";
-  ASSERT_EQ(build(kPcssOnly, out, "--shaderlib " + quoted(copy)).exit_code, 0);
-  const std::string index = read_text(out / "index.json");
-
-  // Line 7 of techniques/pcss.glsl (a blank line) becomes a syntax error.
   const fs::path pcss = copy / "techniques" / "pcss.glsl";
   std::istringstream lines(read_text(pcss));
   std::string text;
   int number = 0;
-  for (std::string line; std::getline(lines, line);) {
-    text += (++number == 7 ? std::string("float broken = ;") : line) + "\n";
+  for (std::string original; std::getline(lines, original);) {
+    text += (++number == 7 ? line : original) + "\n";
   }
   std::ofstream(pcss, std::ios::binary) << text;
+  return copy;
+}
 
+TEST_F(Shaderlib, CompileErrorPointsIntoTheFolderFile) {
+  const fs::path out = dir.path() / "out";
+  const fs::path depfile = dir.path() / "lib.d";
+  ASSERT_EQ(build(kPcssOnly, out, "").exit_code, 0);
+  const std::string index = read_text(out / "index.json");
+
+  // glslang names no token for a syntax error, only the grammar's: the
+  // column is the semicolon's.
+  const fs::path copy = copy_with_line_7(dir.path(), "float broken = ;");
   const CliRun run =
       build(kPcssOnly, out, "--shaderlib " + quoted(copy) + " --depfile " + quoted(depfile));
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_THAT(run.err, HasSubstr(pcss.string() + ":7: error: "));
+  EXPECT_THAT(run.err, HasSubstr((copy / "techniques" / "pcss.glsl").string() + ":7:16: error: "));
   EXPECT_THAT(run.err, HasSubstr("syntax error"));
   EXPECT_EQ(read_text(out / "index.json"), index);  // OUT untouched
   EXPECT_FALSE(fs::exists(depfile));
+}
+
+TEST_F(Shaderlib, CompileErrorColumnIsTheNamedToken) {
+  const fs::path copy = copy_with_line_7(dir.path(), "const float broken = 2.0 * missing_name;");
+  const CliRun run = build(kPcssOnly, dir.path() / "out", "--shaderlib " + quoted(copy));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr((copy / "techniques" / "pcss.glsl").string() + ":7:28: error: "));
+  EXPECT_THAT(run.err, HasSubstr("missing_name"));
 }
 
 }  // namespace

@@ -45,11 +45,12 @@ class ShaderlibIncluder : public glslang::TShader::Includer {
 };
 
 // A failed preprocess or parse as an Error located in the shaderlib file of
-// glslang's first error: `where` is "LOCATION:LINE: <context>" (LOCATION from
-// `source`), `message` is `heading` and glslang's message, then its other
-// messages GCC-style ("LOCATION:LINE: error: ..."); a source-string number
-// names `pass`, the shaderlib path of the job's source. Without a place in the
-// log, the whole log under `heading`, located at `context`.
+// glslang's first error: `where` is "LOCATION:LINE[:COL]: <context>"
+// (LOCATION from `source`; COL where the token glslang names is on the
+// line), `message` is `heading` and glslang's message, then its other
+// messages GCC-style ("LOCATION:LINE[:COL]: error: ..."); a source-string
+// number names `pass`, the shaderlib path of the job's source. Without a
+// place in the log, the whole log under `heading`, located at `context`.
 Error glslang_error(const ShaderlibSource& source, const std::string& context,
                     std::string_view heading, std::string_view log, std::string_view pass);
 
