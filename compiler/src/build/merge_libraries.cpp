@@ -61,25 +61,32 @@ Status copy_file_once(const fs::path& part, const std::string& file, const fs::p
 }  // namespace
 
 Result<BuildSummary> merge_libraries(std::span<const fs::path> parts, const fs::path& out_dir) {
-  std::vector<Library> libraries;
+  // Each part is loaded (which checks it) but only its variants and its
+  // index.json are kept: the loaded library's records would double what a
+  // merge of thousands of variants holds.
+  std::string generator;
+  std::vector<std::vector<Variant>> variants;
   std::vector<nlohmann::json> indexes;
   for (const fs::path& part : parts) {
     PENUMBRA_TRY_ASSIGN(Library library, load_library(part));
-    if (!libraries.empty() && library.generator != libraries.front().generator) {
+    if (!variants.empty() && library.generator != generator) {
       return make_error(Error::Kind::bad_input, (part / "index.json").string(),
                         "generator '" + library.generator + "' differs from " +
-                            (parts.front() / "index.json").string() + "'s '" +
-                            libraries.front().generator + "'; merge parts of one build");
+                            (parts.front() / "index.json").string() + "'s '" + generator +
+                            "'; merge parts of one build");
     }
+    generator = library.generator;
+    std::vector<Variant>& own = variants.emplace_back();
+    own.reserve(library.variants.size());
+    for (LibraryVariant& entry : library.variants) own.push_back(std::move(entry.variant));
     PENUMBRA_TRY_ASSIGN(const std::string text, read_file(part / "index.json"));
     indexes.push_back(nlohmann::json::parse(text));
-    libraries.push_back(std::move(library));
   }
   std::vector<PartVariant> order;
   std::map<std::string, std::size_t> owner;
-  for (std::size_t p = 0; p < libraries.size(); ++p) {
-    for (std::size_t i = 0; i < libraries[p].variants.size(); ++i) {
-      const Variant& variant = libraries[p].variants[i].variant;
+  for (std::size_t p = 0; p < variants.size(); ++p) {
+    for (std::size_t i = 0; i < variants[p].size(); ++i) {
+      const Variant& variant = variants[p][i];
       if (const auto [at, added] = owner.try_emplace(variant.name, p); !added) {
         return make_error(Error::Kind::bad_input, (parts[p] / "index.json").string(),
                           "variant " + variant.name + " is also in " +
