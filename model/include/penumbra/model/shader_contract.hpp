@@ -45,6 +45,7 @@ struct SamplerState {
   bool comparison = false;          // compare with LESS_EQUAL: lit when reference <= texel
   Filter filter = Filter::nearest;  // minification and magnification
   MipFilter mip_filter = MipFilter::none;
+  bool operator==(const SamplerState&) const = default;
 };
 
 // The textures a pass may read, in binding order.
