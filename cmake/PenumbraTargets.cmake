@@ -11,9 +11,14 @@ function(penumbra_target_defaults target)
   if(PENUMBRA_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
-  if(PENUMBRA_SANITIZE)
-    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+  if(PENUMBRA_SANITIZE OR PENUMBRA_FUZZ)
+    # UBSan findings abort, so that a test or a fuzzer fails on them.
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined
+                                             -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+  if(PENUMBRA_FUZZ)
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
   endif()
 endfunction()
 

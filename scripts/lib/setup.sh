@@ -10,6 +10,7 @@ PENUMBRA_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libpugixml-dev googletest libgtest-dev libxxhash-dev
   libpng-dev
   chromium
+  clang libclang-rt-14-dev  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
 )
 
 install_missing_packages() {
@@ -54,15 +55,16 @@ install_hlsl_compiler() {
   export PENUMBRA_HLSL_COMPILER="$wrapper"
 }
 
-# configure_and_build BUILD_DIR [TARGET]: configures (tests on, warnings as
-# errors, with the HLSL compiler of install_hlsl_compiler when there is one)
-# and builds TARGET, or everything.
+# configure_and_build BUILD_DIR [TARGET [CMAKE_ARG...]]: configures (tests
+# on, warnings as errors, with the HLSL compiler of install_hlsl_compiler
+# when there is one, then CMAKE_ARGs) and builds TARGET, or everything.
 configure_and_build() {
   local build_dir="$1"
   local target="${2:-all}"
+  shift $(($# < 2 ? $# : 2))
   local hlsl=()
   if [ -n "${PENUMBRA_HLSL_COMPILER:-}" ]; then hlsl=("-DPENUMBRA_HLSL_COMPILER=$PENUMBRA_HLSL_COMPILER"); fi
   cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON \
-    -DPENUMBRA_WERROR=ON "${hlsl[@]}"
+    -DPENUMBRA_WERROR=ON "${hlsl[@]}" "$@"
   cmake --build "$build_dir" --parallel "$(nproc)" --target "$target"
 }

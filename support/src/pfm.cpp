@@ -61,9 +61,12 @@ bool parse_number(std::string_view token, T& value) {
 }  // namespace
 
 Result<FloatImage> read_pfm(const std::filesystem::path& path) {
-  auto bytes = read_file(path);
-  if (!bytes) return bytes.error();
-  HeaderReader header(*bytes);
+  PENUMBRA_TRY_ASSIGN(const std::string bytes, read_file(path));
+  return parse_pfm(bytes, path);
+}
+
+Result<FloatImage> parse_pfm(std::string_view bytes, const std::filesystem::path& path) {
+  HeaderReader header(bytes);
 
   const std::string_view magic = header.next();
   if (magic != "Pf" && magic != "PF") {
@@ -100,7 +103,7 @@ Result<FloatImage> read_pfm(const std::filesystem::path& path) {
   }
   const std::uint64_t expected = pixels * texel_bytes;
   const std::uint64_t available =
-      header.data_offset() <= bytes->size() ? bytes->size() - header.data_offset() : 0;
+      header.data_offset() <= bytes.size() ? bytes.size() - header.data_offset() : 0;
   if (available < expected) {
     return bad_file(path, "truncated data: " + std::to_string(width) + "x" +
                               std::to_string(height) + "x" + std::to_string(channels) +
@@ -113,7 +116,7 @@ Result<FloatImage> read_pfm(const std::filesystem::path& path) {
   }
 
   FloatImage image(width, height, channels);
-  const char* data = bytes->data() + header.data_offset();
+  const char* data = bytes.data() + header.data_offset();
   const bool swap = little_endian != (std::endian::native == std::endian::little);
   for (std::size_t k = 0; k < image.data.size(); ++k) {
     std::uint32_t word = 0;

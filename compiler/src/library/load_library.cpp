@@ -194,10 +194,15 @@ Result<Library> load_library(const std::filesystem::path& root) {
     return make_error(Error::Kind::io, file.string(),
                       "cannot open the library index (run `penumbra build` first)");
   }
+  return parse_library(*text, root);
+}
+
+Result<Library> parse_library(std::string_view text, const std::filesystem::path& root) {
+  const std::filesystem::path file = root / "index.json";
   Library library;
   library.root = root;
   try {
-    const json j = json::parse(*text);
+    const json j = json::parse(text);
     library.generator = j.at("generator").get<std::string>();
     if (j.value("schema", 0) != kIndexSchema) {
       return index_error(file, "/schema",

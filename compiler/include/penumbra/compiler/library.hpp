@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
@@ -48,6 +49,8 @@ struct Library {
 // errors (a schema other than kIndexSchema, a reference out of range) name the
 // file and the JSON path.
 Result<Library> load_library(const std::filesystem::path& root);
+// The same for index.json's text, as if read from `root`/index.json.
+Result<Library> parse_library(std::string_view text, const std::filesystem::path& root);
 
 // Reads a .spv file into words.
 Result<std::vector<std::uint32_t>> read_spirv_file(const std::filesystem::path& path);
