@@ -1,11 +1,34 @@
 #!/usr/bin/env bash
 # Installs what is missing (packages, vkd3d-compiler), builds, and runs the
-# whole test suite (ctest).
+# whole test suite (ctest), then each fuzzer for a short smoke run
+# (scripts/fuzz.sh).
+#
+#   scripts/test.sh              in build/ (warnings as errors)
+#   scripts/test.sh --sanitize   in build-sanitize/, built with ASan + UBSan
+#                                (PENUMBRA_SANITIZE); any finding fails
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
+sanitize=0
+case "${1:-}" in
+  "") ;;
+  --sanitize) sanitize=1 ;;
+  *) echo "scripts/test.sh: unknown argument '$1' (allowed: --sanitize)" >&2; exit 2 ;;
+esac
+
 install_missing_packages
 install_hlsl_compiler
+if [ "$sanitize" -eq 1 ]; then
+  configure_and_build build-sanitize all -DPENUMBRA_SANITIZE=ON
+  # Leaks inside the graphics drivers (Mesa's lavapipe and EGL, LLVM) are
+  # theirs, not ours: tests/sanitize/lsan.supp names them.
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+  export LSAN_OPTIONS="suppressions=$PWD/tests/sanitize/lsan.supp:print_suppressions=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)"
+  exit 0
+fi
 configure_and_build build
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+bash scripts/fuzz.sh

@@ -11,6 +11,7 @@
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
+#include "validation_messages.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -37,7 +38,7 @@ Result<std::unique_ptr<TemporaryLibrary>> build_with_bytecode(const std::string&
 Result<std::vector<TargetRun>> bytecode_runs(const Library& library, const std::string& name) {
   auto compiler = recorded_hlsl_compiler();
   if (!compiler) return compiler.error();
-  auto engine = Engine::create(EngineOptions{}, ignore_diagnostics());
+  auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   if (!engine) return engine.error();
   auto report = verify_library(library, **engine,
                                {.variants = {name},
@@ -137,7 +138,7 @@ TEST(BytecodeExecutionCheck, NotExecutedWithoutTranslatorOrBytecode) {
     EXPECT_FALSE(run.executed) << to_string(run.target);
     EXPECT_NE(run.not_executed.find("--hlsl-compiler"), std::string::npos) << run.not_executed;
   }
-  auto engine = Engine::create(EngineOptions{}, ignore_diagnostics());
+  auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   ASSERT_TRUE(engine) << engine.error().to_string();
   auto report = verify_library((*built)->library(), **engine,
                                {.variants = {"hard"}, .targets = bytecode_targets(), .gl = false},

@@ -23,6 +23,7 @@
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
+#include "validation_messages.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -59,7 +60,7 @@ struct RenderedScene {
 class MinmaxPcfTest : public ::testing::TestWithParam<Target> {
  protected:
   static void SetUpTestSuite() {
-    auto engine = Engine::create(EngineOptions{}, ignore_diagnostics());
+    auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
     ASSERT_TRUE(engine) << engine.error().to_string();
     engine_ = engine->release();
   }

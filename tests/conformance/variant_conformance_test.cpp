@@ -10,6 +10,7 @@
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "penumbra/vulkan/engine.hpp"
+#include "validation_messages.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -19,7 +20,7 @@ class VariantConformance : public ::testing::TestWithParam<std::string> {};
 TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
   auto built = build_default_variant(GetParam());
   ASSERT_TRUE(built) << built.error().to_string();
-  auto engine = Engine::create(EngineOptions{}, ignore_diagnostics());
+  auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   ASSERT_TRUE(engine) << engine.error().to_string();
   auto report =
       verify_library((*built)->library(), **engine,

@@ -9,6 +9,7 @@
 
 #include "default_library.hpp"
 #include "penumbra/support/minmax_levels.hpp"
+#include "validation_messages.hpp"
 
 namespace penumbra::test {
 
@@ -123,7 +124,7 @@ PassProgram unknown_sampler_program() {
 }
 
 std::unique_ptr<Engine> make_engine(bool validation) {
-  auto engine = Engine::create({"", validation}, ignore_diagnostics());
+  auto engine = Engine::create({"", validation}, penumbra::testing::fail_on_validation_messages());
   if (!engine) {
     ADD_FAILURE() << engine.error().to_string();
     return nullptr;

@@ -56,8 +56,10 @@ PassProgram minmax_init_program(const std::string& frag_name = "minmax_init.frag
 PassProgram minmax_reduce_program();
 PassProgram minmax_probe_program();
 
-// An engine on the default device (lavapipe); fails the test if none.
-std::unique_ptr<Engine> make_engine(bool validation = false);
+// An engine on the default device (lavapipe); fails the test if none. The
+// validation layers are on unless asked otherwise, and a message of theirs
+// fails the test.
+std::unique_ptr<Engine> make_engine(bool validation = true);
 
 // Two triangles covering [u0, u1] x [v0, v1] of the map at light-view depth z.
 void add_caster_quad(std::vector<std::array<float, 3>>& triangles, const TestLight& light, float u0,
