@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "hlsl_compiler.hpp"
+#include "output_file.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/shaderlib_source.hpp"
@@ -82,6 +83,18 @@ bool in_group(const std::string& name, std::pair<int, int> group) {
   return static_cast<int>(hash % static_cast<std::uint64_t>(group.second)) == group.first - 1;
 }
 
+// OUT and --depfile, checked before the work: a build that cannot write
+// them must fail before it replaces anything.
+Status check_outputs(const std::string& out, const std::string& depfile) {
+  if (Status usable = check_output_directory(out); !usable) {
+    Error error = usable.error();
+    error.where = "-o " + error.where;
+    return error;
+  }
+  if (!depfile.empty()) PENUMBRA_TRY(check_output_file(depfile, "--depfile"));
+  return {};
+}
+
 // "[1234/9000] shaders" on stderr, redrawn at most every 100 ms.
 std::function<void(std::size_t, std::size_t)> terminal_progress() {
   auto last = std::make_shared<std::chrono::steady_clock::time_point>();
@@ -149,6 +162,10 @@ void add_build_command(CLI::App& app, int& exit_code) {
       cmd->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (no summary line)");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes")->excludes(quiet);
   cmd->callback([args, &exit_code] {
+    if (Status usable = check_outputs(args->out, args->depfile); !usable) {
+      exit_code = report(usable.error());
+      return;
+    }
     auto all_variants = load_variants(args->manifest);
     if (!all_variants) {
       exit_code = report(all_variants.error());

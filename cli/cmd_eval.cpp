@@ -4,6 +4,7 @@
 #include <iostream>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -37,7 +38,49 @@ bool same_file(const fs::path& a, const fs::path& b) {
   return !a_error && !b_error && a_path == b_path;
 }
 
+// Whether writing `output` would overwrite the existing file `input`: the
+// same file however spelled, a hard link included.
+bool overwrites(const fs::path& output, const fs::path& input) {
+  std::error_code ec;
+  return fs::equivalent(output, input, ec) || same_file(output, input);
+}
+
+// Whether `path` is `dir` or below it, through any spelling or link.
+bool inside(const fs::path& path, const fs::path& dir) {
+  std::error_code path_error, dir_error;
+  const fs::path resolved = fs::weakly_canonical(path, path_error);
+  const fs::path root = fs::canonical(dir, dir_error);
+  if (path_error || dir_error) return false;
+  const fs::path relative = resolved.lexically_relative(root);
+  return !relative.empty() && *relative.begin() != "..";
+}
+
+// eval reads every input before it writes: an output onto one would destroy it.
+Status check_outputs_spare_inputs(const EvalArgs& args) {
+  const std::pair<const char*, const std::string*> inputs[] = {{"--shadow-map", &args.shadow_map},
+                                                               {"--receivers", &args.receivers}};
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"-o", &args.output}, {"--texel-reads", &args.texel_reads}};
+  for (const auto& [flag, output] : outputs) {
+    if (output->empty()) continue;
+    const std::string where = std::string(flag) + " " + *output;
+    for (const auto& [input_flag, input] : inputs) {
+      if (overwrites(*output, *input)) {
+        return make_error(Error::Kind::bad_input, where,
+                          "is the same file as " + std::string(input_flag) + " " + *input +
+                              "; allowed: a file that is none of eval's inputs");
+      }
+    }
+    if (inside(*output, args.library)) {
+      return make_error(Error::Kind::bad_input, where,
+                        "is inside the library " + args.library + "; allowed: a file outside it");
+    }
+  }
+  return {};
+}
+
 Result<QueryOutput> run_eval(const EvalArgs& args) {
+  PENUMBRA_TRY(check_outputs_spare_inputs(args));
   if (args.reference && !args.texel_reads.empty()) {
     return make_error(Error::Kind::bad_input, "--texel-reads",
                       "texel reads are counted by the shaders on the device; they are not "

@@ -19,6 +19,12 @@ void add_merge_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", args->out, "Output directory (replaced only on success)")->required();
   cmd->add_flag("-q,--quiet", args->quiet, "Print only errors (no summary line)");
   cmd->callback([args, &exit_code] {
+    if (Status usable = check_output_directory(args->out); !usable) {
+      Error error = usable.error();
+      error.where = "-o " + error.where;
+      exit_code = report(error);
+      return;
+    }
     const std::vector<std::filesystem::path> parts(args->parts.begin(), args->parts.end());
     auto summary = merge_libraries(parts, args->out);
     if (!summary) {

@@ -119,6 +119,39 @@ TEST_F(EvalCommand, MissingShadowMapIsExit2AndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
 }
 
+// An output that is one of eval's inputs, however spelled, is refused before
+// anything runs, and the input stays as it was.
+TEST_F(EvalCommand, OutputOntoAnInputIsExit2AndLeavesTheInputIntact) {
+  const auto inputs = dir_->path() / "inputs";
+  std::filesystem::create_directories(inputs);
+  std::filesystem::copy_file(dir_->path() / "depth.pfm", inputs / "depth.pfm");
+  std::filesystem::copy_file(dir_->path() / "recv.pfm", inputs / "recv.pfm");
+  std::filesystem::create_hard_link(inputs / "recv.pfm", inputs / "recv-link.pfm");
+  const auto before = read_tree(inputs);
+  const auto lib_before = read_tree(lib());
+  const std::string depth = "'" + (inputs / "depth.pfm").string() + "'";
+  const std::string recv = "'" + (inputs / "recv.pfm").string() + "'";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"-o " + depth, "--shadow-map"},
+      {"-o '" + (inputs / "../inputs/recv.pfm").string() + "'", "--receivers"},
+      {"-o '" + (inputs / "recv-link.pfm").string() + "'", "--receivers"},
+      {"-o '" + (lib() / "index.json").string() + "'", lib().string()},
+      {"-o " + path("vis.pfm") + " --texel-reads " + depth, "--shadow-map"}};
+  for (const auto& [output, names] : cases) {
+    SCOPED_TRACE(output);
+    for (const char* mode : {"--reference", ""}) {
+      const CliRun run = run_penumbra("eval '" + lib().string() + "' hard --shadow-map " + depth +
+                                      " --receivers " + recv + " " + output + " " + mode);
+      EXPECT_EQ(run.exit_code, 2);
+      EXPECT_THAT(run.err, HasSubstr(names));
+      EXPECT_THAT(run.err, HasSubstr("allowed:"));
+      EXPECT_TRUE(read_tree(inputs) == before) << "an input changed";
+      EXPECT_TRUE(read_tree(lib()) == lib_before) << "the library changed";
+      EXPECT_FALSE(std::filesystem::exists(dir_->path() / "vis.pfm"));
+    }
+  }
+}
+
 TEST_F(EvalCommand, WrongReceiversImageIsExit2) {
   const CliRun run =
       run_penumbra("eval '" + lib().string() + "' hard --shadow-map " + path("depth.pfm") +

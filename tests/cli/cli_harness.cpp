@@ -39,6 +39,36 @@ CliRun run_penumbra(const std::string& args, const std::string& env) {
   return run;
 }
 
+pid_t start_penumbra(const std::string& args, const std::string& env) {
+  // exec env: the shell becomes penumbra, so the pid is penumbra's own.
+  const std::string command =
+      "exec env " + env + " " + std::string(PENUMBRA_EXECUTABLE) + " " + args + " >/dev/null 2>&1";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+int wait_penumbra(pid_t pid) {
+  int status = 0;
+  if (::waitpid(pid, &status, 0) != pid) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::map<std::string, std::string> read_tree(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  std::error_code ec;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+       !ec && it != std::filesystem::end(it); it.increment(ec)) {
+    if (it->is_regular_file()) {
+      files[it->path().lexically_relative(dir).string()] = slurp(it->path());
+    }
+  }
+  return files;
+}
+
 ScratchDir::ScratchDir(const std::string& name)
     : path_(std::filesystem::path(::testing::TempDir()) /
             ("penumbra-" + name + "-" + std::to_string(::getpid()))) {

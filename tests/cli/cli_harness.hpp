@@ -2,8 +2,10 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <sys/types.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "penumbra/support/image.hpp"
@@ -19,6 +21,17 @@ struct CliRun {
 // `args` is appended to the binary's path as is (quote paths yourself);
 // `env` ("NAME=value ...") is prepended to the command.
 CliRun run_penumbra(const std::string& args, const std::string& env = "");
+
+// Starts the binary like run_penumbra without waiting for it; its output
+// is discarded. The process id, for kill() and wait_penumbra.
+pid_t start_penumbra(const std::string& args, const std::string& env = "");
+
+// Waits for a process of start_penumbra: its exit code, or -1 when a signal ended it.
+int wait_penumbra(pid_t pid);
+
+// Every regular file below `dir`, relative path -> bytes; empty when `dir`
+// is missing. Two equal maps are the same tree.
+std::map<std::string, std::string> read_tree(const std::filesystem::path& dir);
 
 // A fresh empty directory under the test temp dir, removed by the destructor.
 class ScratchDir {

@@ -369,7 +369,7 @@ TEST(BuildLibrary, AShaderThatFailsToCompileLeavesThePreviousOutput) {
   TempDir dir("fail");
   const auto out = dir.path / "out";
   std::filesystem::create_directories(out);
-  std::ofstream(out / "index.json") << "{}";  // a previous library
+  std::ofstream(out / "index.json") << R"({"generator": "penumbra 0.1.0"})";  // a previous library
   std::ofstream(out / "keep.txt") << "previous";
   Variant broken = make_variant(Technique::pcf_poisson);
   broken.keys.pcf_samples = 0;  // an array of size 0 does not compile
@@ -401,7 +401,13 @@ TEST(BuildLibrary, RefusesToReplaceAnythingButALibrary) {
   std::ofstream(dir.path / "docs" / "thesis.tex") << "mine";
   auto over_dir = build_library(std::span(&hard, 1), dir.path / "docs", {}, ignore_diagnostics());
   ASSERT_FALSE(over_dir.ok());
-  EXPECT_THAT(over_dir.error().to_string(), HasSubstr("without index.json"));
+  EXPECT_THAT(over_dir.error().to_string(), HasSubstr("not a penumbra library"));
+  EXPECT_EQ(slurp(dir.path / "docs" / "thesis.tex"), "mine");
+  // An index.json that penumbra did not write does not make a library.
+  std::ofstream(dir.path / "docs" / "index.json") << R"({"title": "my thesis"})";
+  auto over_index = build_library(std::span(&hard, 1), dir.path / "docs", {}, ignore_diagnostics());
+  ASSERT_FALSE(over_index.ok());
+  EXPECT_THAT(over_index.error().to_string(), HasSubstr("not a penumbra library"));
   EXPECT_EQ(slurp(dir.path / "docs" / "thesis.tex"), "mine");
   // An empty directory and an earlier library are fine.
   std::filesystem::create_directories(dir.path / "empty");

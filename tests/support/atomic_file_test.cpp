@@ -108,5 +108,76 @@ TEST(StagedDirectory, MoveTransfersTheStaging) {
   EXPECT_TRUE(fs::is_directory(dir.path() / "out"));
 }
 
+// One writer at a time: a second create() for the same directory, even in
+// this process, is refused until the first is gone.
+TEST(StagedDirectory, ASecondWriterIsRefusedWhileTheFirstStages) {
+  testing::TempDir dir;
+  {
+    auto first = StagedDirectory::create(dir.path() / "out");
+    ASSERT_TRUE(first.ok()) << first.error().to_string();
+    const auto second = StagedDirectory::create(dir.path() / "out");
+    ASSERT_FALSE(second.ok());
+    EXPECT_NE(second.error().message.find("another penumbra process is writing"), std::string::npos)
+        << second.error().to_string();
+    EXPECT_EQ(second.error().where, (dir.path() / "out").string());
+    // A different output directory beside it has its own lock.
+    EXPECT_TRUE(StagedDirectory::create(dir.path() / "other").ok());
+  }
+  EXPECT_TRUE(StagedDirectory::create(dir.path() / "out").ok());
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+}
+
+// What a killed writer leaves: a staging tree, and an old tree beside an
+// output that still exists. Both go; other names are kept.
+TEST(StagedDirectory, CreateRemovesWhatDeadWritersLeft) {
+  testing::TempDir dir;
+  fs::create_directories(dir.path() / "out");
+  write_text(dir.path() / "out" / "index.json", "current");
+  for (const char* name : {".out.staging-0123456789abcdef", ".out.old-fedcba9876543210"}) {
+    fs::create_directories(dir.path() / name / "sub");
+    write_text(dir.path() / name / "sub" / "f.txt", "stale");
+  }
+  // Not this output's: another output named "out.staging-x", and a user's file.
+  fs::create_directories(dir.path() / ".out.staging-x.staging-0123456789abcdef");
+  write_text(dir.path() / ".out.notes", "mine");
+  {
+    auto staged = StagedDirectory::create(dir.path() / "out");
+    ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+  }
+  EXPECT_EQ(
+      entries(dir.path()),
+      (std::vector<std::string>{".out.notes", ".out.staging-x.staging-0123456789abcdef", "out"}));
+  EXPECT_EQ(read_text(dir.path() / "out" / "index.json"), "current");
+}
+
+// A commit by two renames that died between them leaves no output and the
+// previous tree aside: create() puts it back.
+TEST(StagedDirectory, CreatePutsBackAnOutputLeftAside) {
+  testing::TempDir dir;
+  fs::create_directories(dir.path() / ".out.old-0123456789abcdef");
+  write_text(dir.path() / ".out.old-0123456789abcdef" / "index.json", "previous");
+  fs::create_directories(dir.path() / ".out.staging-fedcba9876543210");
+  write_text(dir.path() / ".out.staging-fedcba9876543210" / "index.json", "unfinished");
+  {
+    auto staged = StagedDirectory::create(dir.path() / "out");
+    ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+  }
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"out"});
+  EXPECT_EQ(read_text(dir.path() / "out" / "index.json"), "previous");
+}
+
+TEST(StagedDirectory, CommitLeavesNoSiblingBehind) {
+  testing::TempDir dir;
+  for (const char* text : {"first", "second"}) {
+    auto staged = StagedDirectory::create(dir.path() / "out");
+    ASSERT_TRUE(staged.ok()) << staged.error().to_string();
+    write_text(staged->staging() / "index.json", text);
+    ASSERT_TRUE(staged->commit());
+    EXPECT_TRUE(staged->leftover().empty());
+  }
+  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"out"});
+  EXPECT_EQ(read_text(dir.path() / "out" / "index.json"), "second");
+}
+
 }  // namespace
 }  // namespace penumbra

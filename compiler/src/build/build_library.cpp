@@ -8,7 +8,6 @@
 #include <thread>
 
 #include "build/index_json.hpp"
-#include "build/output_dir.hpp"
 #include "build/pass_plan.hpp"
 #include "build/pipeline.hpp"
 #include "build/streamed_index.hpp"
@@ -136,7 +135,7 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
                                    const std::filesystem::path& out_dir,
                                    const BuildOptions& options,
                                    const DiagnosticConsumer& diagnostics) {
-  PENUMBRA_TRY(check_replaceable(out_dir));
+  PENUMBRA_TRY(check_output_directory(out_dir));
   const auto shaderlib = options.shaderlib ? options.shaderlib : embedded_shaderlib();
   auto staged = StagedDirectory::create(out_dir);
   if (!staged) return staged.error();
@@ -165,6 +164,11 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
   // Unchanged output keeps its times: a build system then reruns nothing
   // that depends on it.
   PENUMBRA_TRY(staged->commit_if_changed());
+  if (!staged->leftover().empty()) {
+    diagnostics({Severity::warning, out_dir.string(),
+                 "replaced, but the previous library could not be removed from " +
+                     staged->leftover().string() + "; the next build into it tries again"});
+  }
   std::set<std::string> inputs;
   for (const std::string& path : index.inputs()) inputs.insert(shaderlib->location(path));
   return BuildSummary{variants.size(),

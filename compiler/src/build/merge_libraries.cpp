@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "build/index_json.hpp"
-#include "build/output_dir.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/support/atomic_file.hpp"
@@ -100,7 +99,7 @@ Result<BuildSummary> merge_libraries(std::span<const fs::path> parts, const fs::
     return variant_less(*a.variant, *b.variant);
   });
 
-  PENUMBRA_TRY(check_replaceable(out_dir));
+  PENUMBRA_TRY(check_output_directory(out_dir));
   PENUMBRA_TRY_ASSIGN(StagedDirectory staged, StagedDirectory::create(out_dir));
   IndexWriter index;
   std::map<std::string, std::string> copied;

@@ -1,22 +1,77 @@
-#include "build/output_dir.hpp"
+// OUT is replaced wholesale, so only a library that build or merge wrote may
+// be: never a user's folder that merely holds a file named index.json.
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "penumbra/compiler/build.hpp"
 
 namespace penumbra {
+namespace {
 
-Status check_replaceable(const std::filesystem::path& out) {
+namespace fs = std::filesystem;
+
+// Reads index.json only up to its top-level "generator": that comes early,
+// and the variants after it can be megabytes. Any other shape stops it too.
+struct GeneratorReader {
+  using json = nlohmann::json;
+  int depth = 0;
+  bool at_generator = false;  // the next value is the top-level "generator"
+  std::optional<std::string> generator;
+
+  bool scalar() { return !at_generator; }
+  bool null() { return scalar(); }
+  bool boolean(bool) { return scalar(); }
+  bool number_integer(json::number_integer_t) { return scalar(); }
+  bool number_unsigned(json::number_unsigned_t) { return scalar(); }
+  bool number_float(json::number_float_t, const json::string_t&) { return scalar(); }
+  bool binary(json::binary_t&) { return scalar(); }
+  bool string(json::string_t& value) {
+    if (at_generator) generator = value;
+    return !at_generator;
+  }
+  bool start_object(std::size_t) { return !at_generator && ++depth > 0; }
+  bool end_object() { return --depth >= 0; }
+  bool start_array(std::size_t) { return !at_generator && depth++ > 0; }
+  bool end_array() { return --depth >= 0; }
+  bool key(json::string_t& name) {
+    at_generator = depth == 1 && name == "generator";
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) {
+    return false;
+  }
+};
+
+// What build and merge write: index.json, an object whose "generator" is
+// "penumbra <version>".
+bool is_penumbra_library(const fs::path& dir) {
+  std::ifstream in(dir / "index.json", std::ios::binary);
+  if (!in) return false;
+  GeneratorReader reader;
+  nlohmann::json::sax_parse(in, &reader);
+  return reader.generator && reader.generator->starts_with("penumbra ");
+}
+
+}  // namespace
+
+Status check_output_directory(const fs::path& out) {
+  static constexpr const char* kAllowed =
+      "allowed: a missing or empty directory, or a library that penumbra build or merge wrote";
   std::error_code ec;
-  const auto status = std::filesystem::symlink_status(out, ec);
-  if (ec || !std::filesystem::exists(status)) return {};
-  if (!std::filesystem::is_directory(status)) {
-    return make_error(Error::Kind::bad_input, out.string(),
-                      "exists and is not a directory; refusing to replace it with a library");
+  const auto status = fs::symlink_status(out, ec);
+  if (ec || !fs::exists(status)) return {};
+  if (!fs::is_directory(status)) {
+    return make_error(
+        Error::Kind::bad_input, out.string(),
+        std::string("exists and is not a directory; refusing to replace it; ") + kAllowed);
   }
-  const bool empty = std::filesystem::is_empty(out, ec);
-  if (!ec && !empty && !std::filesystem::exists(out / "index.json", ec)) {
-    return make_error(Error::Kind::bad_input, out.string(),
-                      "is a non-empty directory without index.json (not a penumbra library); "
-                      "refusing to replace it");
-  }
-  return {};
+  if (fs::is_empty(out, ec) || ec || is_penumbra_library(out)) return {};
+  return make_error(Error::Kind::bad_input, out.string(),
+                    std::string("is a non-empty directory that is not a penumbra library (no "
+                                "index.json whose \"generator\" is penumbra); refusing to "
+                                "replace it; ") +
+                        kAllowed);
 }
 
 }  // namespace penumbra

@@ -64,6 +64,12 @@ struct BuildSummary {
   std::vector<std::string> inputs;
 };
 
+// OK when `out` may be replaced by a library: it is missing, an empty
+// directory, or a library that build or merge wrote (its index.json says
+// "generator": "penumbra ..."); never a user's file or folder. Errors
+// (bad_input) name `out` and say what is allowed.
+Status check_output_directory(const std::filesystem::path& out);
+
 // Compiles everything into a staging directory and swaps it into `out_dir`
 // only when all of it succeeded: on error `out_dir` is left as it was. No
 // variants make a library with none (an empty group of a split build).
