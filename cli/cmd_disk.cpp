@@ -36,7 +36,10 @@ void add_disk_command(CLI::App& app, int& exit_code) {
     auto disk =
         options->method == kWhitepaper ? Result<Disk>(whitepaper16()) : generate_disk(*options);
     if (!disk) {
-      exit_code = report(disk.error());
+      // generate_disk knows no argument names; its one check is the count.
+      Error error = disk.error();
+      if (error.where.empty()) error.where = "--count " + std::to_string(options->count);
+      exit_code = report(error);
       return;
     }
     std::cout << disk_to_json(*disk).dump(2) << "\n";

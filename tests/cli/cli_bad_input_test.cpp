@@ -177,6 +177,7 @@ TEST_F(BadInput, NegativeSeedIsRefused) {
   const std::string err = one_error(run_penumbra("disk --seed -1"));
   EXPECT_THAT(err, HasSubstr("--seed"));
   EXPECT_THAT(err, HasSubstr("0..18446744073709551615"));
+  EXPECT_THAT(one_error(run_penumbra("disk --count 0")), HasSubstr("--count 0: "));
 }
 
 TEST_F(BadInput, NulBytesAfterTheJsonAreRefused) {
