@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "penumbra/compiler/disk.hpp"
+#include "validators.hpp"
 
 namespace penumbra::cli {
 namespace {
@@ -17,7 +18,9 @@ void add_disk_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("disk", "Print a Poisson disk as JSON");
   cmd->add_option("--count", options->count, "Number of points (1..128; whitepaper: 16)")
       ->capture_default_str();
-  cmd->add_option("--seed", options->seed, "Generator seed")->capture_default_str();
+  cmd->add_option("--seed", options->seed, "Generator seed (0..2^64-1)")
+      ->capture_default_str()
+      ->check(seed_value());
   cmd->add_option("--method", options->method,
                   "Generator, or whitepaper for the NVIDIA PCSS whitepaper's 16 points")
       ->capture_default_str()
@@ -33,7 +36,10 @@ void add_disk_command(CLI::App& app, int& exit_code) {
     auto disk =
         options->method == kWhitepaper ? Result<Disk>(whitepaper16()) : generate_disk(*options);
     if (!disk) {
-      exit_code = report(disk.error());
+      // generate_disk knows no argument names; its one check is the count.
+      Error error = disk.error();
+      if (error.where.empty()) error.where = "--count " + std::to_string(options->count);
+      exit_code = report(error);
       return;
     }
     std::cout << disk_to_json(*disk).dump(2) << "\n";

@@ -10,6 +10,7 @@
 #include "exit_codes.hpp"
 #include "penumbra/support/pfm.hpp"
 #include "penumbra/verify/eval.hpp"
+#include "validators.hpp"
 
 namespace penumbra::cli {
 namespace {
@@ -181,14 +182,14 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--texel-reads", args->texel_reads,
                   "Also write the shadow-map and min-max texels each pixel read (Pf; device only)");
   cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--frustum-width", args->light.frustum_width,
                   "Frustum width Fw at the near plane")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--near", args->light.near_plane, "Near plane n")->check(CLI::PositiveNumber);
+      ->check(positive_number());
+  cmd->add_option("--near", args->light.near_plane, "Near plane n")->check(positive_number());
   cmd->add_option("--bias", args->light.bias, "Depth bias subtracted from z_r");
   cmd->add_option("--filter-radius", args->filter_radius, "pcf_poisson radius in uv (default 2/W)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
   cmd->add_flag("--reference", args->reference, "Run the CPU reference instead of the device");
   cmd->callback([args, &exit_code] {

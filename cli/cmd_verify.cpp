@@ -131,6 +131,13 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(library.error());
       return;
     }
+    // verify.json goes into the library: a read-only one is refused before
+    // the checks run, not after, when their results would be lost.
+    const std::string results = (library->root / "verify.json").string();
+    if (Status s = check_output_file(results, ""); !s) {
+      exit_code = report(s.error());
+      return;
+    }
     auto engine = Engine::create({.device = args->device, .validation = args->validation},
                                  stderr_diagnostics(args->verbose));
     if (!engine) {

@@ -1,9 +1,31 @@
 // penumbra: build, list and verify soft-shadow shader libraries.
 #include <CLI/CLI.hpp>
+#include <iostream>
+#include <new>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "penumbra/compiler/build.hpp"
+#include "penumbra/support/text.hpp"
+#include "validators.hpp"
+
+namespace {
+
+// "list permutations/x.json": the command that ran and its positional
+// arguments (its input files), for a message about the run as a whole.
+std::string running(const CLI::App& app) {
+  std::string out;
+  for (const CLI::App* command : app.get_subcommands()) {
+    out += command->get_name();
+    for (const CLI::Option* option : command->get_options()) {
+      if (!option->get_positional()) continue;
+      for (const std::string& value : option->results()) out += " " + value;
+    }
+  }
+  return penumbra::shorten(out, 200);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"penumbra: soft-shadow shader libraries for every graphics API"};
@@ -20,17 +42,24 @@ int main(int argc, char** argv) {
   penumbra::cli::add_eval_command(app, exit_code);
   penumbra::cli::add_verify_command(app, exit_code);
 #endif
+  penumbra::cli::refuse_empty_values(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // Help and version are successes; every other parse error is bad usage.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : penumbra::cli::kExitBadInput;
-  } catch (const std::exception& e) {
-    // Libraries report errors as values; anything thrown below them (out of
-    // memory, a filesystem race) still ends with a message, not an abort.
+    // Help and version are successes; every other parse error is bad usage,
+    // one line like every other error (CLI11 names the argument).
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "penumbra: error: " << penumbra::shorten(e.what(), 400) << "\n";
+    return penumbra::cli::kExitBadInput;
+  } catch (const std::bad_alloc&) {
     return penumbra::cli::report(
-        penumbra::make_error(penumbra::Error::Kind::internal, "", e.what()));
+        penumbra::make_error(penumbra::Error::Kind::io, running(app),
+                             "out of memory; the input is too large for this machine's memory"));
+  } catch (const std::exception& e) {
+    // Libraries report errors as values; anything thrown below them (a
+    // filesystem race) still ends with a message, not an abort.
+    return penumbra::cli::report(
+        penumbra::make_error(penumbra::Error::Kind::internal, running(app), e.what()));
   }
   return exit_code;
 }

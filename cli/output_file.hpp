@@ -7,8 +7,9 @@
 
 namespace penumbra::cli {
 
-// OK when `path` can be written atomically: its directory exists and `path`
-// is not a directory. Errors (bad_input) name `argument` and the path.
+// OK when `path` can be written atomically: its directory exists and may be
+// written to (not read-only), and `path` is not a directory. Errors
+// (bad_input) name `argument` (when given) and the path.
 Status check_output_file(const std::string& path, const std::string& argument);
 
 }  // namespace penumbra::cli

@@ -2,16 +2,38 @@
 // errors; callers that need a friendlier message wrap this one.
 #include "penumbra/support/file.hpp"
 
-#include <fstream>
-#include <iterator>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
 
 namespace penumbra {
+namespace {
+
+// The system's reason (strerror) leads, so "No such file or directory" and
+// "Permission denied" reach the user as the system names them.
+Error io_error(const std::filesystem::path& path, const char* doing, int error) {
+  return make_error(Error::Kind::io, path.string(),
+                    std::string(doing) + ": " + std::strerror(error));
+}
+
+}  // namespace
 
 Result<std::string> read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(Error::Kind::io, path.string(), "cannot open file for reading");
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) return make_error(Error::Kind::io, path.string(), "cannot read file");
+  if (path.empty()) {
+    return make_error(Error::Kind::io, "", "cannot read a file with an empty name");
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return io_error(path, "cannot read", EISDIR);
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) return io_error(path, "cannot open the file", errno);
+  std::string bytes;
+  char buffer[1 << 16];
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get())) {
+    bytes.append(buffer, n);
+  }
+  if (std::ferror(file.get())) return io_error(path, "cannot read the file", errno);
   return bytes;
 }
 

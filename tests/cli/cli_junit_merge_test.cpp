@@ -105,7 +105,8 @@ TEST_F(JunitMerge, RefusesMissingUnreadableAndForeignFiles) {
   const std::string error = "penumbra: error: " + dir_.path().string() + "/";
   expect_refused(
       file("s1.xml") + " " + file("absent.xml"), error + "absent.xml",
-      "cannot open file for reading; allowed: each shard's penumbra verify --junit report");
+      "cannot open the file: No such file or directory; allowed: each shard's penumbra verify "
+      "--junit report");
   dir_.write("broken.xml", shard_xml("2/2", kPassB).substr(0, 120));
   expect_refused(file("s1.xml") + " " + file("broken.xml"),
                  dir_.path().string() + "/broken.xml:3:", "not well-formed XML");

@@ -49,7 +49,7 @@ TEST(ManifestErrors, SchemaIsRequiredAndMustBeOne) {
 TEST(ManifestErrors, UnknownTopLevelKey) {
   expect_bad_input(manifest_error(R"({"schema": 1, "set": []})"),
                    "perms.json: /set: unknown key 'set'; allowed keys: schema, disks, targets, "
-                   "sets, exclude");
+                   "sets, exclude, max_variants");
 }
 
 TEST(ManifestErrors, UnknownKeyInASet) {

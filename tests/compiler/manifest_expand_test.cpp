@@ -201,6 +201,19 @@ TEST(ManifestExpand, ExclusionKeyTheVariantLacksDoesNotMatch) {
   EXPECT_EQ(names(variants), std::vector<std::string>{"hard"});
 }
 
+// Repeats are merged when read, so they never multiply a set's product.
+TEST(ManifestExpand, RepeatedAxisValuesCountOnce) {
+  Result<Manifest> manifest = parse_manifest(R"({"schema": 1,
+    "sets": [{"technique": ["pcf_grid", "pcf_grid"], "kernel": [3, 3, 5, 3],
+              "target": ["spirv", "spirv"]}]})",
+                                             "test.json");
+  ASSERT_TRUE(manifest.ok()) << manifest.error().to_string();
+  const AxisValues& axes = manifest->sets[0].axes;
+  EXPECT_EQ(axes.technique, std::vector<Technique>{Technique::pcf_grid});
+  EXPECT_EQ(axes.kernel, (std::vector<int>{3, 5}));
+  EXPECT_EQ(axes.target, std::vector<Target>{Target::spirv});
+}
+
 TEST(ManifestExpand, DuplicatesMergeWithTheUnionOfTargets) {
   const std::vector<Variant> variants = expand_text(R"({"schema": 1,
     "sets": [{"technique": "pcf_grid", "kernel": [3, 5], "target": ["hlsl_dx9", "spirv"]},

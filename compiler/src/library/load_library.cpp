@@ -1,3 +1,4 @@
+#include <cstdint>
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -5,9 +6,12 @@
 #include <type_traits>
 #include <vector>
 
+#include "manifest/json_node.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/compiler/manifest.hpp"
 #include "penumbra/support/file.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra {
 namespace {
@@ -17,6 +21,85 @@ using nlohmann::json;
 Error index_error(const std::filesystem::path& file, const std::string& path,
                   const std::string& message) {
   return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
+}
+
+// "expected a string, got 5", the value quoted shortly.
+Error type_error(const std::filesystem::path& file, const std::string& path,
+                 std::string_view expected, const json& value) {
+  return index_error(
+      file, path,
+      "expected " + std::string(expected) + ", got " + manifest_detail::describe_json(value));
+}
+
+// `j`'s member `key`, or an error naming the missing key.
+Result<const json*> member(const std::filesystem::path& file, const json& j,
+                           const std::string& path, const std::string& key) {
+  if (!j.is_object()) return type_error(file, path, "an object", j);
+  if (!j.contains(key)) return index_error(file, path, "missing key '" + key + "'");
+  return &j[key];
+}
+
+Result<std::string> string_at(const std::filesystem::path& file, const json& value,
+                              const std::string& path) {
+  if (!value.is_string()) return type_error(file, path, "a string", value);
+  return value.get<std::string>();
+}
+
+// A count key: an integer in 1..`max` (docs/manifest.md, "Limits"), as in a
+// manifest, so a library edited by hand cannot ask for a 100001-texel kernel.
+Result<int> count_at(const std::filesystem::path& file, const json& value, const std::string& path,
+                     std::string_view key, int max) {
+  if (!value.is_number_integer()) return type_error(file, path, "an integer", value);
+  const bool in_range = value.is_number_unsigned()
+                            ? value.get<std::uint64_t>() >= 1 &&
+                                  value.get<std::uint64_t>() <= static_cast<std::uint64_t>(max)
+                            : value.get<std::int64_t>() >= 1 && value.get<std::int64_t>() <= max;
+  if (!in_range) {
+    return index_error(file, path,
+                       std::string(key) + " " + shorten(value.dump()) +
+                           " is out of range; allowed 1.." + std::to_string(max));
+  }
+  return value.get<int>();
+}
+
+// The largest value of each count key.
+int max_count(std::string_view key) {
+  if (key == "max_nodes") return kMaxMaxNodes;
+  if (key == "blur_radius") return kMaxBlurRadius;
+  return kMaxSamples;  // kernel, blocker_samples, pcf_samples
+}
+
+// The variant's keys, typed and range-checked like a manifest's.
+Status read_keys(const std::filesystem::path& file, const json& keys, const std::string& path,
+                 VariantKeys& out) {
+  if (!keys.is_object()) return type_error(file, path, "an object", keys);
+  Status status;
+  for_each_key(out, [&](std::string_view name, auto& key) {
+    using Value = typename std::decay_t<decltype(key)>::value_type;
+    const std::string member_name(name);
+    if (!status || !keys.contains(member_name)) return;
+    const json& value = keys[member_name];
+    const std::string at = path + "/" + member_name;
+    if constexpr (std::is_same_v<Value, int>) {
+      Result<int> count = count_at(file, value, at, name, max_count(name));
+      if (!count)
+        status = count.error();
+      else
+        key = *count;
+    } else if constexpr (std::is_same_v<Value, bool>) {
+      if (!value.is_boolean())
+        status = type_error(file, at, "true or false", value);
+      else
+        key = value.get<bool>();
+    } else {
+      Result<std::string> text = string_at(file, value, at);
+      if (!text)
+        status = text.error();
+      else
+        key = *text;
+    }
+  });
+  return status;
 }
 
 // pass_files[i].bytecode.<stage> (docs/shader-interface.md).
@@ -53,7 +136,8 @@ Result<const Record*> resolve(const std::filesystem::path& file, const json& ref
     const std::string allowed = table.empty() ? "/" + std::string(name) + " is empty"
                                               : "allowed 0.." + std::to_string(table.size() - 1) +
                                                     ", positions in /" + std::string(name);
-    return index_error(file, path, "reference " + ref.dump() + " is out of range; " + allowed);
+    return index_error(file, path,
+                       "reference " + shorten(ref.dump()) + " is out of range; " + allowed);
   }
   return &table[ref.get<std::size_t>()];
 }
@@ -65,9 +149,9 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
     try {
       out.pass_files.push_back(pass_files_from_json(pass_files[i]));
     } catch (const json::exception& e) {
-      return index_error(
-          file, "/pass_files/" + std::to_string(i),
-          std::string("malformed pass files (docs/shader-interface.md): ") + e.what());
+      return index_error(file, "/pass_files/" + std::to_string(i),
+                         "malformed pass files (docs/shader-interface.md): " +
+                             manifest_detail::json_exception_text(e));
     }
   }
   // Each record's constant textures refer to texture_contents by position (a
@@ -93,17 +177,25 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
     try {
       out.reflections.push_back(record.get<PassReflection>());
     } catch (const json::exception& e) {
-      return index_error(
-          file, at, std::string("malformed reflection (docs/shader-interface.md): ") + e.what());
+      return index_error(file, at,
+                         "malformed reflection (docs/shader-interface.md): " +
+                             manifest_detail::json_exception_text(e));
     }
   }
   const json& disks = j.at("disks");
   for (std::size_t i = 0; i < disks.size(); ++i) {
+    const json& points = disks[i].at("points");
+    if (points.is_array() && points.size() > static_cast<std::size_t>(kMaxSamples)) {
+      return index_error(file, "/disks/" + std::to_string(i) + "/points",
+                         std::to_string(points.size()) + " points are too many; allowed at most " +
+                             std::to_string(kMaxSamples));
+    }
     try {
       out.disks.push_back(disk_from_json(disks[i].at("points"), disks[i]));
     } catch (const json::exception& e) {
-      return index_error(file, "/disks/" + std::to_string(i),
-                         std::string("malformed disk (docs/disks.md): ") + e.what());
+      return index_error(
+          file, "/disks/" + std::to_string(i),
+          "malformed disk (docs/disks.md): " + manifest_detail::json_exception_text(e));
     }
   }
   return out;
@@ -113,19 +205,20 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
                                     const std::string& path, const SharedTables& tables) {
   LibraryVariant out;
   Variant& v = out.variant;
-  v.name = j.at("name").get<std::string>();
-  auto technique = parse_technique(j.at("technique").get<std::string>());
+  PENUMBRA_TRY_ASSIGN(const json* name, member(file, j, path, "name"));
+  PENUMBRA_TRY_ASSIGN(v.name, string_at(file, *name, path + "/name"));
+  PENUMBRA_TRY_ASSIGN(const json* technique_name, member(file, j, path, "technique"));
+  PENUMBRA_TRY_ASSIGN(const std::string technique_text,
+                      string_at(file, *technique_name, path + "/technique"));
+  auto technique = parse_technique(technique_text);
   if (!technique) {
-    return index_error(file, path + "/technique",
-                       "unknown technique; allowed: " + allowed_techniques());
+    return index_error(
+        file, path + "/technique",
+        "unknown technique '" + shorten(technique_text) + "'; allowed: " + allowed_techniques());
   }
   v.technique = *technique;
-  const json& keys = j.at("keys");
-  for_each_key(v.keys, [&keys](std::string_view name, auto& key) {
-    using Value = typename std::decay_t<decltype(key)>::value_type;
-    const std::string member(name);
-    if (keys.contains(member)) key = keys[member].get<Value>();
-  });
+  PENUMBRA_TRY_ASSIGN(const json* keys, member(file, j, path, "keys"));
+  PENUMBRA_TRY(read_keys(file, *keys, path + "/keys", v.keys));
   for (auto& [role, ref] : j.at("disks").items()) {
     auto disk = resolve(file, ref, path + "/disks/" + role, tables.disks, "disks");
     if (!disk) return disk.error();
@@ -138,12 +231,29 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     }
   }
   if (j.contains("blur_weights")) {
-    for (const json& w : j["blur_weights"]) v.blur_weights.push_back(w.get<float>());
+    const json& weights = j["blur_weights"];
+    const std::size_t most = 2 * static_cast<std::size_t>(kMaxBlurRadius) + 1;
+    if (!weights.is_array() || weights.size() > most) {
+      return type_error(file, path + "/blur_weights",
+                        "an array of at most " + std::to_string(most) + " numbers", weights);
+    }
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+      if (!weights[i].is_number()) {
+        return type_error(file, path + "/blur_weights/" + std::to_string(i), "a number",
+                          weights[i]);
+      }
+      v.blur_weights.push_back(weights[i].get<float>());
+    }
   }
-  for (const json& t : j.at("targets")) {
-    auto target = parse_target(t.get<std::string>());
+  PENUMBRA_TRY_ASSIGN(const json* targets, member(file, j, path, "targets"));
+  if (!targets->is_array()) return type_error(file, path + "/targets", "an array", *targets);
+  for (std::size_t i = 0; i < targets->size(); ++i) {
+    const std::string at = path + "/targets/" + std::to_string(i);
+    PENUMBRA_TRY_ASSIGN(const std::string target_name, string_at(file, (*targets)[i], at));
+    auto target = parse_target(target_name);
     if (!target) {
-      return index_error(file, path + "/targets", "unknown target; allowed: " + allowed_targets());
+      return index_error(
+          file, at, "unknown target '" + shorten(target_name) + "'; allowed: " + allowed_targets());
     }
     v.targets.push_back(*target);
   }
@@ -192,7 +302,12 @@ Result<Library> load_library(const std::filesystem::path& root) {
   const Result<std::string> text = read_file(file);
   if (!text) {
     return make_error(Error::Kind::io, file.string(),
-                      "cannot open the library index (run `penumbra build` first)");
+                      text.error().message + " (run `penumbra build` first)");
+  }
+  if (auto nul = text->find('\0'); nul != std::string::npos) {
+    return make_error(Error::Kind::bad_input, file.string(),
+                      "malformed library index: a NUL byte at offset " + std::to_string(nul) +
+                          "; JSON text may not contain NUL bytes");
   }
   return parse_library(*text, root);
 }
@@ -206,13 +321,19 @@ Result<Library> parse_library(std::string_view text, const std::filesystem::path
     library.generator = j.at("generator").get<std::string>();
     if (j.value("schema", 0) != kIndexSchema) {
       return index_error(file, "/schema",
-                         "index schema " + j.value("schema", json()).dump() +
+                         "index schema " + shorten(j.value("schema", json()).dump()) +
                              " is not supported; allowed value " + std::to_string(kIndexSchema) +
                              " (rebuild the library with this penumbra)");
     }
     const auto tables = read_tables(file, j);
     if (!tables) return tables.error();
     const json& variants = j.at("variants");
+    if (variants.size() > static_cast<std::size_t>(kMaxVariants)) {
+      return index_error(file, "/variants",
+                         std::to_string(variants.size()) +
+                             " variants are too many; allowed at most " +
+                             std::to_string(kMaxVariants));
+    }
     for (std::size_t i = 0; i < variants.size(); ++i) {
       auto v = read_variant(file, variants[i], "/variants/" + std::to_string(i), *tables);
       if (!v) return v.error();
@@ -220,7 +341,7 @@ Result<Library> parse_library(std::string_view text, const std::filesystem::path
     }
   } catch (const json::exception& e) {
     return make_error(Error::Kind::bad_input, file.string(),
-                      std::string("malformed library index: ") + e.what());
+                      "malformed library index: " + manifest_detail::json_exception_text(e));
   }
   return library;
 }

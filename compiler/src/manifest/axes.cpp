@@ -5,6 +5,7 @@
 
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/model/shader_contract.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra::manifest_detail {
 namespace {
@@ -12,7 +13,9 @@ namespace {
 // The largest odd kernel that fits kMaxSamples (pcf_grid's grid is centred).
 constexpr int kMaxOddKernel = kMaxSamples % 2 == 1 ? kMaxSamples : kMaxSamples - 1;
 
-// Reads one value or a list of values with `read_one`, appending to `out`.
+// Reads one value or a list of values with `read_one`, appending to `out`
+// those not already there: a repeated value is one value, so repeats do not
+// multiply the set's product.
 template <typename T, typename ReadOne>
 Status read_list(const JsonNode& node, ReadOne read_one, std::vector<T>& out) {
   Result<std::vector<JsonNode>> items = node.items();
@@ -20,7 +23,7 @@ Status read_list(const JsonNode& node, ReadOne read_one, std::vector<T>& out) {
   for (const JsonNode& item : *items) {
     Result<T> value = read_one(item);
     if (!value) return value.error();
-    out.push_back(std::move(*value));
+    if (std::ranges::find(out, *value) == out.end()) out.push_back(std::move(*value));
   }
   return {};
 }
@@ -29,7 +32,7 @@ Result<Technique> read_technique(const JsonNode& node) {
   Result<std::string> name = node.string();
   if (!name) return name.error();
   if (auto technique = parse_technique(*name)) return *technique;
-  return node.error("unknown technique '" + *name +
+  return node.error("unknown technique '" + shorten(*name) +
                     "'; allowed techniques: " + allowed_techniques());
 }
 
@@ -37,7 +40,8 @@ Result<Target> read_target(const JsonNode& node) {
   Result<std::string> name = node.string();
   if (!name) return name.error();
   if (auto target = parse_target(*name)) return *target;
-  return node.error("unknown target '" + *name + "'; allowed targets: " + allowed_targets());
+  return node.error("unknown target '" + shorten(*name) +
+                    "'; allowed targets: " + allowed_targets());
 }
 
 Result<int> read_sample_count(const JsonNode& node) {
@@ -60,7 +64,7 @@ Result<std::string> read_traversal(const JsonNode& node) {
   Result<std::string> name = node.string();
   if (!name) return name.error();
   if (*name == kBruteForceTraversal) return name;
-  return node.error("unknown traversal '" + *name +
+  return node.error("unknown traversal '" + shorten(*name) +
                     "'; allowed traversals: " + std::string(kBruteForceTraversal) +
                     " (leave the key out for the min-max traversal)");
 }
@@ -92,7 +96,7 @@ Result<std::string> read_disk(const JsonNode& node,
   if (*name == kWhitepaperDisk || disks.contains(*name)) return name;
   std::string allowed;
   for (const auto& [declared, family] : disks) allowed += declared + ", ";
-  return node.error("unknown disk '" + *name + "'; allowed disks: " + allowed +
+  return node.error("unknown disk '" + shorten(*name) + "'; allowed disks: " + allowed +
                     std::string(kWhitepaperDisk) + " (declare generated disks under /disks)");
 }
 
@@ -181,13 +185,15 @@ Status check_kernels(const JsonNode& node, const AxisValues& axes) {
   if (!grid || !node.has("kernel")) return {};
   Result<std::vector<JsonNode>> items = node.member("kernel").items();
   if (!items) return items.error();
-  for (std::size_t i = 0; i < items->size(); ++i) {
-    const int kernel = axes.kernel[i];
+  for (const JsonNode& item : *items) {
+    Result<int> value = item.integer();
+    if (!value) return value.error();
+    const int kernel = *value;
     if (kernel % 2 == 1 && kernel <= kMaxOddKernel) continue;
-    return (*items)[i].error("kernel " + std::to_string(kernel) +
-                             " is not allowed for pcf_grid; allowed odd sizes 1.." +
-                             std::to_string(kMaxOddKernel) + " (minmax_pcf takes any size 1.." +
-                             std::to_string(kMaxSamples) + ")");
+    return item.error("kernel " + std::to_string(kernel) +
+                      " is not allowed for pcf_grid; allowed odd sizes 1.." +
+                      std::to_string(kMaxOddKernel) + " (minmax_pcf takes any size 1.." +
+                      std::to_string(kMaxSamples) + ")");
   }
   return {};
 }

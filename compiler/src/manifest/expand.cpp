@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -52,6 +54,57 @@ std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes
     }
   }
   return out;
+}
+
+constexpr std::uint64_t kSaturated = std::numeric_limits<std::uint64_t>::max();
+
+std::uint64_t saturating_multiply(std::uint64_t a, std::uint64_t b) {
+  return b != 0 && a > kSaturated / b ? kSaturated : a * b;
+}
+
+// How many keys key_product() gives: counted before anything is made, so a
+// set of millions is refused in microseconds.
+std::uint64_t product_size(Technique technique, const AxisValues& axes) {
+  std::uint64_t size = 1;
+  for (Axis axis : manifest_detail::kKeyAxes) {
+    if (!uses(technique, axis)) continue;
+    std::size_t count = 0;
+    switch (axis) {
+      case Axis::kernel:
+        count = axes.kernel.size();
+        break;
+      case Axis::blocker_samples:
+        count = axes.blocker_samples.size();
+        break;
+      case Axis::pcf_samples:
+        count = axes.pcf_samples.size();
+        break;
+      case Axis::disk:
+        count = axes.disk.size();
+        break;
+      case Axis::traversal:
+        count = axes.traversal.size();
+        break;
+      case Axis::max_nodes:
+        count = axes.max_nodes.size();
+        break;
+      case Axis::blur_radius:
+        count = axes.blur_radius.size();
+        break;
+      case Axis::depth_aware:
+        count = axes.depth_aware.size();
+        break;
+    }
+    size = saturating_multiply(size, std::max<std::size_t>(count, 1));
+  }
+  return size;
+}
+
+Error too_many_variants(const Manifest& manifest, const VariantSet& set, std::string what) {
+  return make_error(Error::Kind::bad_input, manifest.source + ": " + set.json_path,
+                    std::move(what) + "; allowed at most " + std::to_string(manifest.max_variants) +
+                        " (set the top-level max_variants to allow more, up to " +
+                        std::to_string(kMaxVariants) + ")");
 }
 
 // whitepaper16 serves any count up to its 16 points as a prefix; other
@@ -164,7 +217,17 @@ void apply(const Exclusion& exclusion, Variant& variant) {
 Result<std::vector<Variant>> expand(const Manifest& manifest) {
   std::map<std::string, Variant> by_name;
   DiskCache disks;
+  const auto max = static_cast<std::uint64_t>(manifest.max_variants);
   for (const VariantSet& set : manifest.sets) {
+    std::uint64_t set_size = 0;
+    for (Technique technique : set.axes.technique) {
+      const std::uint64_t size = product_size(technique, set.axes);
+      set_size = size > kSaturated - set_size ? kSaturated : set_size + size;
+    }
+    if (set_size > max) {
+      return too_many_variants(manifest, set,
+                               "this set expands to " + std::to_string(set_size) + " variants");
+    }
     for (Technique technique : set.axes.technique) {
       for (const VariantKeys& keys : key_product(technique, set.axes)) {
         const std::string name = variant_name(technique, keys);
@@ -176,6 +239,11 @@ Result<std::vector<Variant>> expand(const Manifest& manifest) {
                               "variant " + name + ": " + variant.error().message);
           }
           it = by_name.emplace(name, std::move(*variant)).first;
+          if (by_name.size() > max) {
+            return too_many_variants(
+                manifest, set,
+                "the sets up to this one expand to more than " + std::to_string(max) + " variants");
+          }
         }
         std::vector<Target>& targets = it->second.targets;
         targets.insert(targets.end(), set.axes.target.begin(), set.axes.target.end());
@@ -190,6 +258,12 @@ Result<std::vector<Variant>> expand(const Manifest& manifest) {
                           variant.targets.end());
     for (const Exclusion& exclusion : manifest.exclude) apply(exclusion, variant);
     if (!variant.targets.empty()) variants.push_back(std::move(variant));
+  }
+  if (variants.empty() && !manifest.exclude.empty()) {
+    // Else `list` prints nothing and `build` writes an empty library, silently.
+    return make_error(Error::Kind::bad_input, manifest.source + ": /exclude",
+                      "the exclusions remove every variant the sets give; allowed: exclusions "
+                      "that leave at least one variant and target");
   }
   std::ranges::sort(variants, variant_less);
   return variants;

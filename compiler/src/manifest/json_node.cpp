@@ -22,14 +22,27 @@ std::string escape_pointer_token(std::string_view key) {
   return out;
 }
 
-// Scalars as written (so 16.5 reads as 16.5, not "number"); containers by kind.
-std::string describe(const nlohmann::json& value) {
+}  // namespace
+
+std::string describe_json(const nlohmann::json& value) {
   if (value.is_object()) return "an object";
   if (value.is_array()) return "an array";
-  return value.dump();
+  return shorten(value.dump());
 }
 
-}  // namespace
+// A parse error ends "...; last read: '<the token>'", and the token can be a
+// whole unterminated 10 MB string.
+std::string json_exception_text(const nlohmann::json::exception& e) {
+  std::string_view what = e.what();
+  if (const auto end = what.find("] "); end != std::string_view::npos) what.remove_prefix(end + 2);
+  constexpr std::string_view kLastRead = "last read: '";
+  const auto token = what.find(kLastRead);
+  if (token == std::string_view::npos) return shorten(what, 400);
+  const std::size_t start = token + kLastRead.size();
+  std::string_view rest = what.substr(start);
+  if (rest.ends_with('\'')) rest.remove_suffix(1);
+  return std::string(what.substr(0, start)) + shorten(rest, 40) + "'";
+}
 
 bool JsonNode::has(std::string_view key) const {
   return value_->is_object() && value_->contains(key);
@@ -67,7 +80,8 @@ Status JsonNode::expect_keys(std::span<const std::string_view> allowed) const {
     bool known = false;
     for (std::string_view name : allowed) known = known || name == key;
     if (!known) {
-      return member(key).error("unknown key '" + key + "'; allowed keys: " + join(allowed, ", "));
+      return member(key).error("unknown key '" + shorten(key) +
+                               "'; allowed keys: " + join(allowed, ", "));
     }
   }
   return {};
@@ -78,12 +92,12 @@ Result<int> JsonNode::integer() const {
   if (value_->is_number_unsigned()) {
     if (value_->get<std::uint64_t>() >
         static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
-      return error("integer " + value_->dump() + " is too large");
+      return error("integer " + shorten(value_->dump()) + " is too large");
     }
     return static_cast<int>(value_->get<std::uint64_t>());
   }
   if (value_->get<std::int64_t>() < std::numeric_limits<int>::min()) {
-    return error("integer " + value_->dump() + " is too small");
+    return error("integer " + shorten(value_->dump()) + " is too small");
   }
   return static_cast<int>(value_->get<std::int64_t>());
 }
@@ -118,7 +132,7 @@ Error JsonNode::error(const Error& cause) const {
 }
 
 Error JsonNode::type_error(std::string_view expected) const {
-  return error("expected " + std::string(expected) + ", got " + describe(*value_));
+  return error("expected " + std::string(expected) + ", got " + describe_json(*value_));
 }
 
 }  // namespace penumbra::manifest_detail

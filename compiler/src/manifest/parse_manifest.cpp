@@ -1,6 +1,7 @@
 #include <array>
 #include <string_view>
 
+#include "manifest/json_locate.hpp"
 #include "manifest/json_node.hpp"
 #include "manifest/sections.hpp"
 #include "penumbra/compiler/manifest.hpp"
@@ -10,15 +11,8 @@ namespace {
 
 using manifest_detail::JsonNode;
 
-constexpr std::array<std::string_view, 5> kManifestKeys = {"schema", "disks", "targets", "sets",
-                                                           "exclude"};
-
-// nlohmann's what() reads "[json.exception.parse_error.101] parse error at
-// line 3, column 5: ..."; users need the part after the tag.
-std::string without_exception_tag(std::string_view what) {
-  if (const auto end = what.find("] "); end != std::string_view::npos) what.remove_prefix(end + 2);
-  return std::string(what);
-}
+constexpr std::array<std::string_view, 6> kManifestKeys = {"schema", "disks",   "targets",
+                                                           "sets",   "exclude", "max_variants"};
 
 // Sections are read in dependency order: sets name disks and default to targets.
 Result<Manifest> read_manifest(const JsonNode& root) {
@@ -27,6 +21,7 @@ Result<Manifest> read_manifest(const JsonNode& root) {
   Manifest manifest;
   PENUMBRA_TRY(manifest_detail::read_disks(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_default_targets(root, manifest));
+  PENUMBRA_TRY(manifest_detail::read_max_variants(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_sets(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_exclusions(root, manifest));
   return manifest;
@@ -38,6 +33,16 @@ Result<Manifest> read_manifest(const JsonNode& root) {
 // turns a bug into an internal error instead of an exception.
 Result<Manifest> parse_manifest(std::string_view json_text, std::string_view source_name) {
   const std::string source(source_name);
+  // nlohmann stops at a NUL byte as at the end of the text, so whatever
+  // follows one would be ignored. Worded as its syntax errors, so the place
+  // is found the same way.
+  if (const auto nul = json_text.find('\0'); nul != std::string_view::npos) {
+    const manifest_detail::TextPosition at = manifest_detail::position_of(json_text, nul);
+    return make_error(Error::Kind::bad_input, source,
+                      "malformed JSON: parse error at line " + std::to_string(at.line) +
+                          ", column " + std::to_string(at.column) +
+                          ": a NUL byte; JSON text may not contain NUL bytes");
+  }
   try {
     const nlohmann::json document = nlohmann::json::parse(json_text);
     Result<Manifest> manifest = read_manifest(JsonNode(document, source));
@@ -45,9 +50,9 @@ Result<Manifest> parse_manifest(std::string_view json_text, std::string_view sou
     return manifest;
   } catch (const nlohmann::json::parse_error& e) {
     return make_error(Error::Kind::bad_input, source,
-                      "malformed JSON: " + without_exception_tag(e.what()));
+                      "malformed JSON: " + manifest_detail::json_exception_text(e));
   } catch (const nlohmann::json::exception& e) {
-    return make_error(Error::Kind::internal, source, without_exception_tag(e.what()));
+    return make_error(Error::Kind::internal, source, manifest_detail::json_exception_text(e));
   }
 }
 

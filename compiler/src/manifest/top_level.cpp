@@ -4,6 +4,7 @@
 #include "manifest/axes.hpp"
 #include "manifest/sections.hpp"
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra::manifest_detail {
 namespace {
@@ -62,8 +63,15 @@ Status read_disks(const JsonNode& root, Manifest& manifest) {
     if (name == kWhitepaperDisk) {
       return node.error("'" + name + "' is built in; give generated disks another name");
     }
+    if (name.size() > kMaxDiskNameLength) {
+      // The name ends variant and file names; a long one would fail only
+      // when the files are written, after every shader was compiled.
+      return node.error("disk name '" + shorten(name, 40) + "' is " + std::to_string(name.size()) +
+                        " characters long; allowed at most " + std::to_string(kMaxDiskNameLength) +
+                        " characters");
+    }
     if (!is_family_name(name)) {
-      return node.error("disk name '" + name +
+      return node.error("disk name '" + shorten(name) +
                         "' is not allowed; use lowercase letters, digits and '_', starting with "
                         "a letter");
     }
@@ -80,6 +88,19 @@ Status read_default_targets(const JsonNode& root, Manifest& manifest) {
     return {};
   }
   return read_targets(root.member("targets"), manifest.targets);
+}
+
+Status read_max_variants(const JsonNode& root, Manifest& manifest) {
+  if (!root.has("max_variants")) return {};
+  const JsonNode node = root.member("max_variants");
+  Result<int> most = node.integer();
+  if (!most) return most.error();
+  if (*most < 1 || *most > kMaxVariants) {
+    return node.error("max_variants " + std::to_string(*most) + " is out of range; allowed 1.." +
+                      std::to_string(kMaxVariants));
+  }
+  manifest.max_variants = *most;
+  return {};
 }
 
 }  // namespace penumbra::manifest_detail

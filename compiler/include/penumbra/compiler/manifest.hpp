@@ -2,6 +2,7 @@
 // The schema, expansion rules and error format are in docs/manifest.md.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -16,6 +17,15 @@ namespace penumbra {
 
 // The built-in disk family (the NVIDIA PCSS whitepaper's 16 points); never declared.
 inline constexpr std::string_view kWhitepaperDisk = "whitepaper16";
+
+// How many variants a manifest may expand to unless its "max_variants" says
+// otherwise, and the most it may say; a library's index.json holds at most
+// kMaxVariants too (docs/manifest.md, "Limits").
+inline constexpr int kDefaultMaxVariants = 10000;
+inline constexpr int kMaxVariants = 1000000;
+
+// The longest disk family name: it ends variant names and file names.
+inline constexpr std::size_t kMaxDiskNameLength = 32;
 
 // A generated disk family from "disks": one disk per sample count.
 struct DiskFamily {
@@ -56,6 +66,7 @@ struct Manifest {
   std::string source;                       // file name used in messages
   std::map<std::string, DiskFamily> disks;  // declared families by name
   std::vector<Target> targets;              // default targets of every set
+  int max_variants = kDefaultMaxVariants;   // 1..kMaxVariants
   std::vector<VariantSet> sets;
   std::vector<Exclusion> exclude;
 };

@@ -1,0 +1,59 @@
+// Bad input to eval and verify (docs/robustness.md, "Bad input"): exit 2 and
+// one message naming the argument or file, found before any device work.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <string>
+
+#include "cli_harness.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+TEST(BadRuntimeInput, RangeMessagesPrintShortNumbers) {
+  const CliRun run = run_penumbra(
+      "eval lib hard --target spirv --shadow-map d.pfm --receivers r.pfm -o v.pfm --near -1");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("--near"));
+  EXPECT_THAT(run.err, HasSubstr("1.79769e+308"));
+  EXPECT_THAT(run.err, Not(HasSubstr("179769313486")));
+  EXPECT_LT(run.err.size(), 200u) << run.err;
+}
+
+// verify writes OUT/verify.json: a library it cannot write into is refused
+// before the checks run (here before the device, which does not exist).
+TEST(BadRuntimeInput, VerifyRefusesALibraryItCannotWriteInto) {
+  ScratchDir dir("bad-verify");
+  const auto manifest = dir.write(
+      "m.json", R"({"schema": 1, "targets": ["spirv"], "sets": [{"technique": "hard"}]})");
+  const auto lib = dir.path() / "lib";
+  const CliRun built =
+      run_penumbra("build -q --no-cache '" + manifest.string() + "' -o '" + lib.string() + "'");
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  const std::string verify = "verify '" + lib.string() + "' --device no-such-device-anywhere";
+
+  std::filesystem::create_directory(lib / "verify.json");
+  const CliRun blocked = run_penumbra(verify);
+  EXPECT_EQ(blocked.exit_code, 2) << blocked.err;
+  EXPECT_THAT(blocked.err, HasSubstr((lib / "verify.json").string()));
+  EXPECT_THAT(blocked.err, HasSubstr("is a directory"));
+  std::filesystem::remove(lib / "verify.json");
+
+  // A read-only folder stops everyone but root (whom only a read-only mount stops).
+  if (::geteuid() != 0) {
+    std::filesystem::permissions(lib, std::filesystem::perms::owner_write,
+                                 std::filesystem::perm_options::remove);
+    const CliRun read_only = run_penumbra(verify);
+    std::filesystem::permissions(lib, std::filesystem::perms::owner_write,
+                                 std::filesystem::perm_options::add);
+    EXPECT_EQ(read_only.exit_code, 2) << read_only.err;
+    EXPECT_THAT(read_only.err, HasSubstr("Permission denied"));
+  }
+}
+
+}  // namespace
+}  // namespace penumbra::testing
