@@ -14,6 +14,12 @@ namespace {
 
 using nlohmann::json;
 
+// Whether low <= value <= high; false for NaN. A number too large for a
+// double (1e999) reads as infinite, so this refuses it too.
+bool in_range(float value, float low, float high) {
+  return value >= low && value <= high;
+}
+
 Error index_error(const std::filesystem::path& file, const std::string& path,
                   const std::string& message) {
   return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
@@ -99,11 +105,18 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
   }
   const json& disks = j.at("disks");
   for (std::size_t i = 0; i < disks.size(); ++i) {
+    const std::string at = "/disks/" + std::to_string(i);
     try {
       out.disks.push_back(disk_from_json(disks[i].at("points"), disks[i]));
     } catch (const json::exception& e) {
-      return index_error(file, "/disks/" + std::to_string(i),
-                         std::string("malformed disk (docs/disks.md): ") + e.what());
+      return index_error(file, at, std::string("malformed disk (docs/disks.md): ") + e.what());
+    }
+    const std::vector<Point2>& points = out.disks.back().points;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      if (!in_range(points[p][0], -1.0f, 1.0f) || !in_range(points[p][1], -1.0f, 1.0f)) {
+        return index_error(file, at + "/points/" + std::to_string(p),
+                           "out of range; allowed: coordinates from -1 to 1 (a unit disk)");
+      }
     }
   }
   return out;
@@ -138,7 +151,14 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     }
   }
   if (j.contains("blur_weights")) {
-    for (const json& w : j["blur_weights"]) v.blur_weights.push_back(w.get<float>());
+    for (const json& w : j["blur_weights"]) {
+      v.blur_weights.push_back(w.get<float>());
+      if (!in_range(v.blur_weights.back(), 0.0f, 1.0f)) {
+        return index_error(file,
+                           path + "/blur_weights/" + std::to_string(v.blur_weights.size() - 1),
+                           "out of range; allowed: a weight from 0 to 1");
+      }
+    }
   }
   for (const json& t : j.at("targets")) {
     auto target = parse_target(t.get<std::string>());
