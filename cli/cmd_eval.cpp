@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -28,7 +29,7 @@ struct EvalArgs {
   std::string device;
   bool reference = false;
   reference::LightParams light;
-  double filter_radius = 0.0;  // 0: the default, 2 texels
+  std::optional<double> filter_radius;  // none: the default, 2 texels
 };
 
 // Whether `a` and `b` name the same file, however spelled (neither need exist).
@@ -112,7 +113,7 @@ Result<QueryOutput> run_eval(const EvalArgs& args) {
   inputs.shadow_map = std::move(*map);
   inputs.receivers = std::move(*receivers);
   inputs.light = args.light;
-  if (args.filter_radius > 0.0) inputs.light.filter_radius_uv = args.filter_radius;
+  inputs.light.filter_radius_uv = args.filter_radius;
 
   if (args.reference) {
     auto visibility = eval_reference(*variant, inputs);
@@ -181,15 +182,13 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", args->output, "Visibility image to write (Pf)")->required();
   cmd->add_option("--texel-reads", args->texel_reads,
                   "Also write the shadow-map and min-max texels each pixel read (Pf; device only)");
-  cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L")
-      ->check(positive_number());
+  // Their ranges are checked with the inputs (check_eval_inputs), NaN included.
+  cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L (0: a point)");
   cmd->add_option("--frustum-width", args->light.frustum_width,
-                  "Frustum width Fw at the near plane")
-      ->check(positive_number());
-  cmd->add_option("--near", args->light.near_plane, "Near plane n")->check(positive_number());
+                  "Frustum width Fw at the near plane");
+  cmd->add_option("--near", args->light.near_plane, "Near plane n");
   cmd->add_option("--bias", args->light.bias, "Depth bias subtracted from z_r");
-  cmd->add_option("--filter-radius", args->filter_radius, "pcf_poisson radius in uv (default 2/W)")
-      ->check(positive_number());
+  cmd->add_option("--filter-radius", args->filter_radius, "pcf_poisson radius in uv (default 2/W)");
   cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
   cmd->add_flag("--reference", args->reference, "Run the CPU reference instead of the device");
   cmd->callback([args, &exit_code] {

@@ -1,11 +1,7 @@
 #include "validators.hpp"
 
-#include <cerrno>
-#include <cfloat>
 #include <charconv>
-#include <cmath>
 #include <cstdint>
-#include <cstdlib>
 
 #include "penumbra/support/text.hpp"
 
@@ -31,21 +27,6 @@ CLI::Validator seed_value() {
         return std::string();
       },
       "", "SEED");
-}
-
-CLI::Validator positive_number() {
-  // CLI::PositiveNumber's message prints its range with std::to_string.
-  return CLI::Validator(
-      [](std::string& value) {
-        char* end = nullptr;
-        errno = 0;
-        const double number = std::strtod(value.c_str(), &end);
-        const bool parsed = !value.empty() && end == value.c_str() + value.size() && errno == 0;
-        if (parsed && std::isfinite(number) && number > 0) return std::string();
-        return "value " + shorten(value, 40) + " is out of range; allowed a number in " +
-               short_number(DBL_MIN) + ".." + short_number(DBL_MAX);
-      },
-      "POSITIVE", "POSITIVE");
 }
 
 void refuse_empty_values(CLI::App& app) {

@@ -1,6 +1,5 @@
 // Argument checks whose messages name the argument (CLI11 prefixes it) and
-// what is allowed, in a few characters: no echo of a long value, no
-// DBL_MAX's 309 digits.
+// what is allowed, in a few characters: no echo of a long value.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -12,9 +11,6 @@ CLI::Validator non_empty();
 
 // A seed: a decimal integer in 0..2^64-1, so "-1" does not wrap around.
 CLI::Validator seed_value();
-
-// A finite number > 0; shown in help as FLOAT:POSITIVE.
-CLI::Validator positive_number();
 
 // Adds non_empty() to every option of `app`'s subcommands that takes a value.
 void refuse_empty_values(CLI::App& app);

@@ -80,6 +80,8 @@ double filtered(const ShadowMapView& map, const LightParams& light, const Query&
 
 Sample pcss_minmax(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                    const Query& q, const Disk& pcf_disk, const SamplingPrecision& precision) {
+  // Up to the near plane, lit, as pcss.
+  if (!(q.z > light.near_plane)) return {1.0, false};
   // Step 1, blocker search over the window of uv half-width w around (u, v).
   const float light_size_uv = float(light.light_size_uv());
   const float w = light_size_uv * (float(q.z) - float(light.near_plane)) / float(q.z);

@@ -90,6 +90,11 @@ constexpr TechniqueReference kReferences[] = {
        return check_traversal(v);
      },
      [](const ReceiverInputs& in) {
+       // A point light (L = 0) has no area to cover: its shadow is the hard
+       // test of the texel the receiver's ray to the light crosses.
+       if (!(in.light.light_world_size > 0.0)) {
+         return point_compare(in.map, in.query.u, in.query.v, in.z_ref, in.precision);
+       }
        return backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
                              capped_walk_steps(in));
      },

@@ -6,6 +6,7 @@
 // in the NVIDIA PCSS whitepaper.
 #include "penumbra/reference/techniques.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "penumbra/model/target_traits.hpp"
@@ -37,6 +38,9 @@ double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kern
 
 Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, double z_ref,
             const Disk& blocker_disk, const Disk& pcf_disk, const SamplingPrecision& precision) {
+  // Up to the near plane the search width is 0 or negative: a rendered map
+  // holds nothing there to occlude the receiver.
+  if (!(q.z > light.near_plane)) return {1.0, false};
   // Step 1, blocker search: point samples over the light's footprint on the
   // near plane, seen from the receiver (similar triangles).
   const double light_size_uv = light.light_size_uv();
@@ -61,8 +65,10 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   }
   if (blockers == 0) return {1.0, ambiguous};
 
-  // Step 2, penumbra size by the parallel-plane estimate.
-  const double avg_blocker_depth = blocker_sum / blockers;
+  // Step 2, penumbra size by the parallel-plane estimate, the blocker no
+  // nearer than the near plane as in pcss_minmax (a rendered map holds
+  // nothing nearer; a blocker at z = 0 would make the penumbra infinite).
+  const double avg_blocker_depth = std::max(blocker_sum / blockers, light.near_plane);
   const double penumbra = (q.z - avg_blocker_depth) / avg_blocker_depth;
   const double filter_radius_uv = penumbra * light_size_uv * light.near_plane / q.z;
 
@@ -78,8 +84,13 @@ namespace {
 Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMip* mip,
                 const LightParams& light, const Query& query, const SamplingPrecision& precision,
                 const ShaderLimits& limits) {
+  // At or behind the light nothing can occlude the receiver, and the
+  // techniques' geometry divides by z_r; `!(>)` also takes NaN.
+  if (!(query.z > 0.0)) return {1.0, false};
+  Query q = query;
+  q.z = std::min(q.z, kMaxReceiverDepth);
   return detail::reference_for(variant.technique)
-      .evaluate({variant, map, mip, light, query, query.z - light.bias, precision, limits});
+      .evaluate({variant, map, mip, light, q, q.z - light.bias, precision, limits});
 }
 
 }  // namespace

@@ -14,6 +14,6 @@ layout(location = 0) out vec4 visibility;
 void main() {
   penumbra_texel_reads = 0.0;
   vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
-  float visible = shadow_visibility(query);
+  float visible = receiver_visibility(query);
   visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }

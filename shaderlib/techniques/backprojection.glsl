@@ -115,6 +115,9 @@ float backprojection_area(vec3 query, vec4 window, float limit) {
 }
 
 float shadow_visibility(vec3 query) {
+  // A point light (L = 0) has no area to cover: its shadow is hard's test
+  // of the texel the receiver's ray to the light crosses.
+  if (!(LIGHT_WORLD_SIZE > 0.0)) return shadow_compare_point(query.xy, query.z);
   // A texel occludes when d < reference; one at or behind the receiver
   // (a negative bias lets it pass) cannot be projected towards the light
   // (g(z) is infinite or negative) and is skipped, as the reference does.

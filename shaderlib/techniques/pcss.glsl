@@ -26,6 +26,9 @@ void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, floa
 float PCSS(vec3 coords) {
   vec2 uv = coords.xy;
   float zReceiver = coords.z;  // linear light-view z
+  // Up to the near plane the search width is 0 or negative: a rendered map
+  // holds nothing there to occlude the receiver.
+  if (!(zReceiver > NEAR_PLANE)) return 1.0;
 
   // Step 1: blocker search.
   float avgBlockerDepth = 0.0;
@@ -35,8 +38,9 @@ float PCSS(vec3 coords) {
     return 1.0;  // no occluder: fully lit, and filtering is skipped
   }
 
-  // Step 2: penumbra size.
-  float penumbraRatio = PenumbraSize(zReceiver, avgBlockerDepth);
+  // Step 2: penumbra size, the blocker no nearer than the near plane (as
+  // pcss_minmax: a blocker at z = 0 would make the penumbra infinite).
+  float penumbraRatio = PenumbraSize(zReceiver, max(avgBlockerDepth, NEAR_PLANE));
   float filterRadiusUV = penumbraRatio * LIGHT_SIZE_UV * NEAR_PLANE / coords.z;
 
   // Step 3: filtering.

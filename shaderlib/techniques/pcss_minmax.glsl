@@ -43,6 +43,7 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
 }
 
 float shadow_visibility(vec3 query) {
+  if (!(query.z > NEAR_PLANE)) return 1.0;  // up to the near plane, lit, as pcss
   float zBlocker = 0.0;
   if (!minmax_find_blocker(zBlocker, query.xy, query.z, shadow_reference(query.z))) {
     return 1.0;  // no blocker: fully lit

@@ -20,3 +20,14 @@
 #else
 #error "no PENUMBRA_TECHNIQUE_* defined"
 #endif
+
+// Receivers beyond this depth (2^60) are taken at it: behind any occluder,
+// and a product of two depths stays a finite float.
+#define PENUMBRA_MAX_RECEIVER_DEPTH 1152921504606846976.0
+
+// The technique's visibility for any receiver (docs/robustness.md): one at
+// or behind the light is lit, as is a NaN depth (`!(>)` holds for it).
+float receiver_visibility(vec3 query) {
+  if (!(query.z > 0.0)) return 1.0;
+  return shadow_visibility(vec3(query.xy, min(query.z, PENUMBRA_MAX_RECEIVER_DEPTH)));
+}

@@ -161,6 +161,42 @@ TEST_F(EvalCommand, WrongReceiversImageIsExit2) {
   EXPECT_FALSE(std::filesystem::exists(dir_->path() / "never.pfm"));
 }
 
+// A light option that is NaN, infinite or out of range is refused with one
+// line naming the argument and its range, on the device and with
+// --reference alike, and a previous output is left as it was.
+TEST_F(EvalCommand, LightOptionsOutOfRangeAreExit2AndLeaveTheOutputIntact) {
+  {
+    std::ofstream previous(dir_->path() / "kept.pfm");
+    previous << "previous";
+  }
+  const std::pair<const char*, const char*> bad[] = {
+      {"--light-size nan", "--light-size nan: out of range; allowed: a number from 0 to 1e+06"},
+      {"--light-size -1", "--light-size -1: out of range; allowed: a number from 0 to 1e+06"},
+      {"--frustum-width inf",
+       "--frustum-width inf: out of range; allowed: a number from 1e-06 to 1e+06"},
+      {"--near 0", "--near 0: out of range; allowed: a number from 1e-06 to 1e+06"},
+      {"--near nan", "--near nan: out of range; allowed: a number from 1e-06 to 1e+06"},
+      {"--bias nan", "--bias nan: out of range; allowed: a number from -1e+06 to 1e+06"},
+      {"--bias 1e300", "--bias 1e+300: out of range; allowed: a number from -1e+06 to 1e+06"},
+      {"--filter-radius nan",
+       "--filter-radius nan: out of range; allowed: a number from 1e-06 to 1e+06"},
+      {"--filter-radius 0",
+       "--filter-radius 0: out of range; allowed: a number from 1e-06 to 1e+06"},
+  };
+  for (const auto& [option, message] : bad) {
+    for (const char* mode : {"", "--reference "}) {
+      const CliRun run = run_penumbra(eval_args(
+          "pcss_b16_p16_whitepaper16", std::string(mode) + option + " -o " + path("kept.pfm")));
+      EXPECT_EQ(run.exit_code, 2) << mode << option;
+      EXPECT_EQ(run.err, std::string("penumbra: error: ") + message + "\n") << mode << option;
+      std::ifstream kept(dir_->path() / "kept.pfm");
+      std::stringstream text;
+      text << kept.rdbuf();
+      EXPECT_TRUE(text.str() == "previous") << mode << option << ": the output was replaced";
+    }
+  }
+}
+
 TEST_F(EvalCommand, UnknownVariantAndTargetAreExit2) {
   CliRun run = run_penumbra(eval_args("pcss_b99", "-o " + path("never.pfm")));
   EXPECT_EQ(run.exit_code, 2);

@@ -573,6 +573,40 @@ TEST(LoadLibrary, ReferencesOutOfRangeAreErrorsNamingTheJsonPath) {
   EXPECT_THAT(missing.error().to_string(), HasSubstr("/variants/0/reflection/query/essl300"));
 }
 
+// A disk point or blur weight out of range (NaN cannot be written in JSON;
+// 1e39 reads as an infinite float) is refused naming its JSON path.
+TEST(LoadLibrary, DiskPointsAndBlurWeightsOutOfRangeAreErrorsNamingTheJsonPath) {
+  TempDir dir("badvalues");
+  const Variant variants[] = {make_variant(Technique::pcss), make_variant(Technique::screen_blur)};
+  ASSERT_TRUE(build_library(std::span(variants), dir.path / "out", {}, ignore_diagnostics()).ok());
+  const auto file = dir.path / "out" / "index.json";
+  const auto index = nlohmann::json::parse(slurp(file));
+  const auto refused = [&](const std::string& pointer, const nlohmann::json& value) {
+    nlohmann::json broken = index;
+    broken[nlohmann::json::json_pointer(pointer)] = value;
+    std::ofstream(file) << broken.dump(2);
+    auto library = load_library(dir.path / "out");
+    if (library.ok()) return std::string("loaded");
+    EXPECT_EQ(library.error().kind, Error::Kind::bad_input);
+    return library.error().to_string();
+  };
+  for (const nlohmann::json& value : {nlohmann::json(1e39), nlohmann::json(-2.5)}) {
+    EXPECT_EQ(refused("/disks/0/points/3/1", value),
+              file.string() +
+                  ": /disks/0/points/3: out of range; allowed: coordinates from -1 to 1 "
+                  "(a unit disk)")
+        << value;
+  }
+  std::size_t blur = 0;
+  while (index.at("variants").at(blur).at("technique") != "screen_blur") ++blur;
+  const std::string weight = "/variants/" + std::to_string(blur) + "/blur_weights/2";
+  for (const nlohmann::json& value : {nlohmann::json(1e39), nlohmann::json(-0.5)}) {
+    EXPECT_EQ(refused(weight, value),
+              file.string() + ": " + weight + ": out of range; allowed: a weight from 0 to 1")
+        << value;
+  }
+}
+
 // Schema 2 repeated every variant's pass files, reflection records and
 // disks, each nested member on a line of its own: 2,620,995 bytes for the
 // default library's 33 variants (with bytecode), against about 0.21 MB now.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -11,18 +13,42 @@
 namespace penumbra {
 namespace {
 
-bool all_finite(const FloatImage& image) {
-  return std::all_of(image.data.begin(), image.data.end(),
-                     [](float v) { return std::isfinite(v); });
-}
-
-// The largest depth either input holds: the far end of the normalized range.
+// The far end of the normalized range: the largest finite map depth and
+// comparison reference z_r - bias, receivers held at kMaxReceiverDepth as
+// the shaders hold them. Every reference is then <= 1, so a texel stored as
+// 1 (normalized_map()) occludes nothing.
 double max_depth(const EvalInputs& inputs) {
-  double max_z = *std::max_element(inputs.shadow_map.data.begin(), inputs.shadow_map.data.end());
+  constexpr double kFar = reference::kMaxReceiverDepth;
+  double max_z = 0.0;
+  for (float z : inputs.shadow_map.data) {
+    if (std::isfinite(z)) max_z = std::max(max_z, std::min(double(z), kFar));
+  }
+  const double behind = std::max(0.0, -inputs.light.bias);
   for (std::size_t p = 0; p < inputs.receivers.pixel_count(); ++p) {
-    max_z = std::max(max_z, double(inputs.receivers.data[p * 3 + 2]));
+    const double z = inputs.receivers.data[p * 3 + 2];
+    if (z > 0.0) max_z = std::max(max_z, std::min(z, kFar) + behind);  // not NaN
   }
   return max_z;
+}
+
+// The map as the device stores it, z * depth_scale (exact: a power of two),
+// in the [0, 1] a depth image holds: NaN, infinite and farther texels are
+// stored as 1, like the reference's +inf they occlude no receiver.
+FloatImage normalized_map(const FloatImage& map, float depth_scale) {
+  FloatImage normalized = map;
+  for (float& d : normalized.data) d = d * depth_scale <= 1.0f ? d * depth_scale : 1.0f;
+  return normalized;
+}
+
+// One light option's range; `name` is its argument.
+Status check_range(const char* name, double value, double low, double high) {
+  if (value >= low && value <= high) return {};  // false for NaN
+  char range[64];
+  std::snprintf(range, sizeof range, "%g to %g", low, high);
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%g", value);
+  return make_error(Error::Kind::bad_input, std::string(name) + " " + shown,
+                    std::string("out of range; allowed: a number from ") + range);
 }
 
 // screen_blur's chain: the receivers image is the screen; the blurred factor
@@ -51,15 +77,20 @@ Status check_eval_inputs(const EvalInputs& inputs) {
     return make_error(Error::Kind::bad_input, "--receivers",
                       "expected a three-channel (PF) image of (u, v, z_r)");
   }
-  if (!all_finite(inputs.shadow_map)) {
-    return make_error(Error::Kind::bad_input, "--shadow-map", "holds a NaN or infinite depth");
-  }
-  if (!all_finite(inputs.receivers)) {
-    return make_error(Error::Kind::bad_input, "--receivers", "holds a NaN or infinite value");
-  }
-  if (*std::min_element(inputs.shadow_map.data.begin(), inputs.shadow_map.data.end()) < 0.0f) {
+  if (std::any_of(inputs.shadow_map.data.begin(), inputs.shadow_map.data.end(),
+                  [](float z) { return z < 0.0f; })) {
     return make_error(Error::Kind::bad_input, "--shadow-map",
                       "holds a negative depth; linear light-view z is >= 0");
+  }
+  const reference::LightParams& light = inputs.light;
+  PENUMBRA_TRY(check_range("--light-size", light.light_world_size, 0.0, kMaxLightLength));
+  PENUMBRA_TRY(
+      check_range("--frustum-width", light.frustum_width, kMinLightLength, kMaxLightLength));
+  PENUMBRA_TRY(check_range("--near", light.near_plane, kMinLightLength, kMaxLightLength));
+  PENUMBRA_TRY(check_range("--bias", light.bias, -kMaxLightLength, kMaxLightLength));
+  if (light.filter_radius_uv) {
+    PENUMBRA_TRY(
+        check_range("--filter-radius", *light.filter_radius_uv, kMinLightLength, kMaxLightLength));
   }
   return {};
 }
@@ -68,9 +99,7 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
                                    Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
   const float depth_scale = depth_scale_for(max_depth(inputs));
-  FloatImage normalized = inputs.shadow_map;
-  for (float& d : normalized.data) d *= depth_scale;  // exact: a power of two
-  auto map = engine.upload_shadow_map(normalized);
+  auto map = engine.upload_shadow_map(normalized_map(inputs.shadow_map, depth_scale));
   if (!map) return map.error();
   const ParamBlock params = shadow_params(inputs.light,
                                           {inputs.shadow_map.width, inputs.shadow_map.height,

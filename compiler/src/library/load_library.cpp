@@ -18,6 +18,12 @@ namespace {
 
 using nlohmann::json;
 
+// Whether low <= value <= high; false for NaN. A number too large for a
+// double (1e999) reads as infinite, so this refuses it too.
+bool in_range(float value, float low, float high) {
+  return value >= low && value <= high;
+}
+
 Error index_error(const std::filesystem::path& file, const std::string& path,
                   const std::string& message) {
   return make_error(Error::Kind::bad_input, file.string() + ": " + path, message);
@@ -184,18 +190,26 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
   }
   const json& disks = j.at("disks");
   for (std::size_t i = 0; i < disks.size(); ++i) {
-    const json& points = disks[i].at("points");
-    if (points.is_array() && points.size() > static_cast<std::size_t>(kMaxSamples)) {
-      return index_error(file, "/disks/" + std::to_string(i) + "/points",
-                         std::to_string(points.size()) + " points are too many; allowed at most " +
+    const std::string at = "/disks/" + std::to_string(i);
+    const json& raw_points = disks[i].at("points");
+    if (raw_points.is_array() && raw_points.size() > static_cast<std::size_t>(kMaxSamples)) {
+      return index_error(file, at + "/points",
+                         std::to_string(raw_points.size()) +
+                             " points are too many; allowed at most " +
                              std::to_string(kMaxSamples));
     }
     try {
-      out.disks.push_back(disk_from_json(disks[i].at("points"), disks[i]));
+      out.disks.push_back(disk_from_json(raw_points, disks[i]));
     } catch (const json::exception& e) {
       return index_error(
-          file, "/disks/" + std::to_string(i),
-          "malformed disk (docs/disks.md): " + manifest_detail::json_exception_text(e));
+          file, at, "malformed disk (docs/disks.md): " + manifest_detail::json_exception_text(e));
+    }
+    const std::vector<Point2>& points = out.disks.back().points;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      if (!in_range(points[p][0], -1.0f, 1.0f) || !in_range(points[p][1], -1.0f, 1.0f)) {
+        return index_error(file, at + "/points/" + std::to_string(p),
+                           "out of range; allowed: coordinates from -1 to 1 (a unit disk)");
+      }
     }
   }
   return out;
@@ -243,6 +257,10 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
                           weights[i]);
       }
       v.blur_weights.push_back(weights[i].get<float>());
+      if (!in_range(v.blur_weights.back(), 0.0f, 1.0f)) {
+        return index_error(file, path + "/blur_weights/" + std::to_string(i),
+                           "out of range; allowed: a weight from 0 to 1");
+      }
     }
   }
   PENUMBRA_TRY_ASSIGN(const json* targets, member(file, j, path, "targets"));

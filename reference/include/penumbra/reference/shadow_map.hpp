@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "penumbra/support/image.hpp"
 
@@ -17,8 +19,10 @@ class ShadowMapView {
   int height() const { return image_->height; }
 
   // Depth of texel (i, j); indices outside the map take the nearest edge texel.
+  // A NaN texel reads as +inf: it occludes nothing (docs/robustness.md).
   double depth(int i, int j) const {
-    return image_->at(std::clamp(i, 0, width() - 1), std::clamp(j, 0, height() - 1));
+    const double z = image_->at(std::clamp(i, 0, width() - 1), std::clamp(j, 0, height() - 1));
+    return std::isnan(z) ? std::numeric_limits<double>::infinity() : z;
   }
 
  private:

@@ -12,6 +12,11 @@
 
 namespace penumbra::reference {
 
+// Receivers farther than this are evaluated at this depth (2^60): far enough
+// to be behind any occluder a map can hold, near enough that the shaders'
+// float32 products of two depths stay finite (docs/robustness.md).
+inline constexpr double kMaxReceiverDepth = 1152921504606846976.0;
+
 // A receiver: its shadow-map coordinates and linear light-view z.
 struct Query {
   double u = 0.0;
@@ -44,7 +49,10 @@ Status check_variant(const Variant& variant);
 // and pcss_minmax.
 bool reference_reads_mip(Technique technique);
 
-// One receiver, as the shader of a target with `limits` computes it.
+// One receiver, as the shader of a target with `limits` computes it: in
+// [0, 1] for any input. A receiver at or behind the light (z <= 0), or
+// with a NaN depth, is lit (pcss and pcss_minmax: up to the near plane);
+// one beyond kMaxReceiverDepth is taken there.
 // `variant` must pass check_variant(); `mip` must be built from `map` (read
 // where reference_reads_mip()).
 Sample evaluate(const Variant& variant, const ShadowMapView& map, const MinMaxMip& mip,

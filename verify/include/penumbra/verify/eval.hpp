@@ -14,7 +14,15 @@ struct EvalInputs {
   reference::LightParams light;  // light size, frustum width, near plane, bias, filter radius
 };
 
-// Checks the images (channels, sizes, finite values); errors name the input.
+// The light options' range (lengths in light-view units; the bias and the
+// filter radius share it): wide enough for any scene, narrow enough that the
+// shaders' float32 products of them stay finite.
+inline constexpr double kMinLightLength = 1e-6;  // frustum width, near plane, filter radius
+inline constexpr double kMaxLightLength = 1e6;   // and light size (from 0), |bias|
+
+// Checks the images (channels, sizes, no negative depth) and the light
+// options (finite, in range); errors name the argument. NaN and infinite
+// depths are allowed: every technique defines them (docs/robustness.md).
 Status check_eval_inputs(const EvalInputs& inputs);
 
 // The visibility image (Pf, the receivers' size) from the device, with the

@@ -36,6 +36,13 @@ float shadow_reference(float z_receiver)
     return (z_receiver - params.sampling.y) * params.sampling.z;
 }
 
+float shadow_compare_point(vec2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 1.0;
+    float param = z_receiver;
+    return float(shadow_reference(param) <= textureLod(shadow_depth, uv, 0.0).x);
+}
+
 vec2 minmax_top_node()
 {
     penumbra_texel_reads += 1.0;
@@ -120,8 +127,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _167 = shadow_texel(param);
-        float depth = _167;
+        float _188 = shadow_texel(param);
+        float depth = _188;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -133,8 +140,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _362 = minmax_node(param, param_1);
-    return _362;
+    vec2 _383 = minmax_node(param, param_1);
+    return _383;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -167,17 +174,17 @@ bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receive
     vec3 param_2 = query;
     vec2 param_3 = receiver_slope;
     vec4 rect = backprojection_project(param, param_1, param_2, param_3);
-    bool _554 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _565;
-    if (_554)
+    bool _575 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _586;
+    if (_575)
     {
-        _565 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _586 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _565 = _554;
+        _586 = _575;
     }
-    return _565;
+    return _586;
 }
 
 float backprojection_light_area(vec4 rect)
@@ -196,16 +203,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _385;
+    vec2 _406;
     if (root)
     {
-        _385 = cursor.first_root;
+        _406 = cursor.first_root;
     }
     else
     {
-        _385 = floor(cursor.node * 0.5) * 2.0;
+        _406 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _385;
+    vec2 first_sibling = _406;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -255,54 +262,54 @@ float backprojection_area(vec3 query, vec4 window, float limit)
                 {
                     visits += 1.0;
                 }
-                bool _678 = !cursor.climbed;
-                bool _689;
-                if (_678)
+                bool _699 = !cursor.climbed;
+                bool _710;
+                if (_699)
                 {
                     MinmaxCursor param_2 = cursor;
                     vec4 param_3 = window;
                     vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _689 = !minmax_window_empty(param_4);
+                    _710 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _689 = _678;
+                    _710 = _699;
                 }
-                if (_689)
+                if (_710)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _695 = minmax_cursor_read(param_5);
-                    vec2 range = _695;
+                    vec2 _716 = minmax_cursor_read(param_5);
+                    vec2 range = _716;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params.sampling.w;
-                    bool _709 = range.x < limit;
-                    bool _721;
-                    if (_709)
+                    bool _730 = range.x < limit;
+                    bool _742;
+                    if (_730)
                     {
                         vec4 param_7 = texels;
                         float param_8 = z_min;
                         vec3 param_9 = query;
                         vec2 param_10 = receiver_slope;
-                        _721 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _742 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _721 = _709;
+                        _742 = _730;
                     }
-                    if (_721)
+                    if (_742)
                     {
-                        bool _727 = range.y < limit;
-                        bool _735;
-                        if (_727)
+                        bool _748 = range.y < limit;
+                        bool _756;
+                        if (_748)
                         {
-                            _735 = range.x == range.y;
+                            _756 = range.x == range.y;
                         }
                         else
                         {
-                            _735 = _727;
+                            _756 = _748;
                         }
-                        if (_735)
+                        if (_756)
                         {
                             vec4 param_11 = texels;
                             float param_12 = z_min;
@@ -338,27 +345,45 @@ float backprojection_area(vec3 query, vec4 window, float limit)
 
 float shadow_visibility(vec3 query)
 {
-    float param = query.z;
-    float limit = min(shadow_reference(param), query.z * params.sampling.z);
-    vec2 _799 = minmax_top_node();
-    float map_min = _799.x;
+    if (!(params.light.x > 0.0))
+    {
+        vec2 param = query.xy;
+        float param_1 = query.z;
+        float _820 = shadow_compare_point(param, param_1);
+        return _820;
+    }
+    float param_2 = query.z;
+    float limit = min(shadow_reference(param_2), query.z * params.sampling.z);
+    vec2 _834 = minmax_top_node();
+    float map_min = _834.x;
     if (!(map_min < limit))
     {
         return 1.0;
     }
-    vec3 param_1 = query;
-    float param_2 = map_min * params.sampling.w;
-    vec4 window = backprojection_window(param_1, param_2);
-    vec4 param_3 = window;
-    if (minmax_window_empty(param_3))
+    vec3 param_3 = query;
+    float param_4 = map_min * params.sampling.w;
+    vec4 window = backprojection_window(param_3, param_4);
+    vec4 param_5 = window;
+    if (minmax_window_empty(param_5))
     {
         return 1.0;
     }
-    vec3 param_4 = query;
-    vec4 param_5 = window;
-    float param_6 = limit;
-    float _829 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0, 1.0 - (_829 / backprojection_whole_light_area()));
+    vec3 param_6 = query;
+    vec4 param_7 = window;
+    float param_8 = limit;
+    float _864 = backprojection_area(param_6, param_7, param_8);
+    return max(0.0, 1.0 - (_864 / backprojection_whole_light_area()));
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _888 = shadow_visibility(param);
+    return _888;
 }
 
 void main()
@@ -366,8 +391,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _847 = shadow_visibility(param);
-    float visible = _847;
+    float _902 = receiver_visibility(param);
+    float visible = _902;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

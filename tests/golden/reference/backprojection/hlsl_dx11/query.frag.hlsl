@@ -46,6 +46,13 @@ float shadow_reference(float z_receiver)
     return (z_receiver - params_sampling.y) * params_sampling.z;
 }
 
+float shadow_compare_point(float2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 1.0f;
+    float param = z_receiver;
+    return float(shadow_reference(param) <= shadow_depth.SampleLevel(_shadow_depth_sampler, uv, 0.0f).x);
+}
+
 float2 minmax_top_node()
 {
     penumbra_texel_reads += 1.0f;
@@ -131,8 +138,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _167 = shadow_texel(param);
-        float depth = _167;
+        float _188 = shadow_texel(param);
+        float depth = _188;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -144,8 +151,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _362 = minmax_node(param, param_1);
-    return _362;
+    float2 _383 = minmax_node(param, param_1);
+    return _383;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -178,19 +185,19 @@ bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 r
     float3 param_2 = query;
     float2 param_3 = receiver_slope;
     float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _552 = params_light.x.xx;
-    bool _554 = all(bool2(rect.xy.x <= _552.x, rect.xy.y <= _552.y));
-    bool _565;
-    if (_554)
+    float2 _573 = params_light.x.xx;
+    bool _575 = all(bool2(rect.xy.x <= _573.x, rect.xy.y <= _573.y));
+    bool _586;
+    if (_575)
     {
-        float2 _562 = (-params_light.x).xx;
-        _565 = all(bool2(rect.zw.x >= _562.x, rect.zw.y >= _562.y));
+        float2 _583 = (-params_light.x).xx;
+        _586 = all(bool2(rect.zw.x >= _583.x, rect.zw.y >= _583.y));
     }
     else
     {
-        _565 = _554;
+        _586 = _575;
     }
-    return _565;
+    return _586;
 }
 
 float backprojection_light_area(float4 rect)
@@ -209,16 +216,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _385;
+    float2 _406;
     if (root)
     {
-        _385 = cursor.first_root;
+        _406 = cursor.first_root;
     }
     else
     {
-        _385 = floor(cursor.node * 0.5f) * 2.0f;
+        _406 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _385;
+    float2 first_sibling = _406;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -271,54 +278,54 @@ float backprojection_area(float3 query, float4 window, float limit)
                 {
                     visits += 1.0f;
                 }
-                bool _678 = !cursor.climbed;
-                bool _689;
-                if (_678)
+                bool _699 = !cursor.climbed;
+                bool _710;
+                if (_699)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _689 = !minmax_window_empty(param_4);
+                    _710 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _689 = _678;
+                    _710 = _699;
                 }
-                if (_689)
+                if (_710)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _695 = minmax_cursor_read(param_5);
-                    float2 range = _695;
+                    float2 _716 = minmax_cursor_read(param_5);
+                    float2 range = _716;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params_sampling.w;
-                    bool _709 = range.x < limit;
-                    bool _721;
-                    if (_709)
+                    bool _730 = range.x < limit;
+                    bool _742;
+                    if (_730)
                     {
                         float4 param_7 = texels;
                         float param_8 = z_min;
                         float3 param_9 = query;
                         float2 param_10 = receiver_slope;
-                        _721 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _742 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _721 = _709;
+                        _742 = _730;
                     }
-                    if (_721)
+                    if (_742)
                     {
-                        bool _727 = range.y < limit;
-                        bool _735;
-                        if (_727)
+                        bool _748 = range.y < limit;
+                        bool _756;
+                        if (_748)
                         {
-                            _735 = range.x == range.y;
+                            _756 = range.x == range.y;
                         }
                         else
                         {
-                            _735 = _727;
+                            _756 = _748;
                         }
-                        if (_735)
+                        if (_756)
                         {
                             float4 param_11 = texels;
                             float param_12 = z_min;
@@ -354,27 +361,45 @@ float backprojection_area(float3 query, float4 window, float limit)
 
 float shadow_visibility(float3 query)
 {
-    float param = query.z;
-    float limit = min(shadow_reference(param), query.z * params_sampling.z);
-    float2 _799 = minmax_top_node();
-    float map_min = _799.x;
+    if (!(params_light.x > 0.0f))
+    {
+        float2 param = query.xy;
+        float param_1 = query.z;
+        float _820 = shadow_compare_point(param, param_1);
+        return _820;
+    }
+    float param_2 = query.z;
+    float limit = min(shadow_reference(param_2), query.z * params_sampling.z);
+    float2 _834 = minmax_top_node();
+    float map_min = _834.x;
     if (!(map_min < limit))
     {
         return 1.0f;
     }
-    float3 param_1 = query;
-    float param_2 = map_min * params_sampling.w;
-    float4 window = backprojection_window(param_1, param_2);
-    float4 param_3 = window;
-    if (minmax_window_empty(param_3))
+    float3 param_3 = query;
+    float param_4 = map_min * params_sampling.w;
+    float4 window = backprojection_window(param_3, param_4);
+    float4 param_5 = window;
+    if (minmax_window_empty(param_5))
     {
         return 1.0f;
     }
-    float3 param_4 = query;
-    float4 param_5 = window;
-    float param_6 = limit;
-    float _829 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0f, 1.0f - (_829 / backprojection_whole_light_area()));
+    float3 param_6 = query;
+    float4 param_7 = window;
+    float param_8 = limit;
+    float _864 = backprojection_area(param_6, param_7, param_8);
+    return max(0.0f, 1.0f - (_864 / backprojection_whole_light_area()));
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _888 = shadow_visibility(param);
+    return _888;
 }
 
 void frag_main()
@@ -382,8 +407,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _847 = shadow_visibility(param);
-    float visible = _847;
+    float _902 = receiver_visibility(param);
+    float visible = _902;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

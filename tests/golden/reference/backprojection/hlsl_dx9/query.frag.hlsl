@@ -42,6 +42,13 @@ float shadow_reference(float z_receiver)
     return (z_receiver - params_sampling.y) * params_sampling.z;
 }
 
+float shadow_compare_point(float2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 1.0f;
+    float param = z_receiver;
+    return float(shadow_reference(param) <= tex2Dlod(shadow_depth, float4(uv, 0.0, 0.0f)).x);
+}
+
 float2 minmax_top_node()
 {
     penumbra_texel_reads += 1.0f;
@@ -127,8 +134,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _167 = shadow_texel(param);
-        float depth = _167;
+        float _188 = shadow_texel(param);
+        float depth = _188;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -140,8 +147,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _362 = minmax_node(param, param_1);
-    return _362;
+    float2 _383 = minmax_node(param, param_1);
+    return _383;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -174,19 +181,19 @@ bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 r
     float3 param_2 = query;
     float2 param_3 = receiver_slope;
     float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _552 = params_light.x.xx;
-    bool _554 = all(bool2(rect.xy.x <= _552.x, rect.xy.y <= _552.y));
-    bool _565;
-    if (_554)
+    float2 _573 = params_light.x.xx;
+    bool _575 = all(bool2(rect.xy.x <= _573.x, rect.xy.y <= _573.y));
+    bool _586;
+    if (_575)
     {
-        float2 _562 = (-params_light.x).xx;
-        _565 = all(bool2(rect.zw.x >= _562.x, rect.zw.y >= _562.y));
+        float2 _583 = (-params_light.x).xx;
+        _586 = all(bool2(rect.zw.x >= _583.x, rect.zw.y >= _583.y));
     }
     else
     {
-        _565 = _554;
+        _586 = _575;
     }
-    return _565;
+    return _586;
 }
 
 float backprojection_light_area(float4 rect)
@@ -205,16 +212,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _385;
+    float2 _406;
     if (root)
     {
-        _385 = cursor.first_root;
+        _406 = cursor.first_root;
     }
     else
     {
-        _385 = floor(cursor.node * 0.5f) * 2.0f;
+        _406 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _385;
+    float2 first_sibling = _406;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -267,54 +274,54 @@ float backprojection_area(float3 query, float4 window, float limit)
                 {
                     visits += 1.0f;
                 }
-                bool _677 = !cursor.climbed;
-                bool _688;
-                if (_677)
+                bool _698 = !cursor.climbed;
+                bool _709;
+                if (_698)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _688 = !minmax_window_empty(param_4);
+                    _709 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _688 = _677;
+                    _709 = _698;
                 }
-                if (_688)
+                if (_709)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _694 = minmax_cursor_read(param_5);
-                    float2 range = _694;
+                    float2 _715 = minmax_cursor_read(param_5);
+                    float2 range = _715;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params_sampling.w;
-                    bool _708 = range.x < limit;
-                    bool _720;
-                    if (_708)
+                    bool _729 = range.x < limit;
+                    bool _741;
+                    if (_729)
                     {
                         float4 param_7 = texels;
                         float param_8 = z_min;
                         float3 param_9 = query;
                         float2 param_10 = receiver_slope;
-                        _720 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _741 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _720 = _708;
+                        _741 = _729;
                     }
-                    if (_720)
+                    if (_741)
                     {
-                        bool _726 = range.y < limit;
-                        bool _734;
-                        if (_726)
+                        bool _747 = range.y < limit;
+                        bool _755;
+                        if (_747)
                         {
-                            _734 = range.x == range.y;
+                            _755 = range.x == range.y;
                         }
                         else
                         {
-                            _734 = _726;
+                            _755 = _747;
                         }
-                        if (_734)
+                        if (_755)
                         {
                             float4 param_11 = texels;
                             float param_12 = z_min;
@@ -350,27 +357,45 @@ float backprojection_area(float3 query, float4 window, float limit)
 
 float shadow_visibility(float3 query)
 {
-    float param = query.z;
-    float limit = min(shadow_reference(param), query.z * params_sampling.z);
-    float2 _798 = minmax_top_node();
-    float map_min = _798.x;
+    if (!(params_light.x > 0.0f))
+    {
+        float2 param = query.xy;
+        float param_1 = query.z;
+        float _819 = shadow_compare_point(param, param_1);
+        return _819;
+    }
+    float param_2 = query.z;
+    float limit = min(shadow_reference(param_2), query.z * params_sampling.z);
+    float2 _833 = minmax_top_node();
+    float map_min = _833.x;
     if (!(map_min < limit))
     {
         return 1.0f;
     }
-    float3 param_1 = query;
-    float param_2 = map_min * params_sampling.w;
-    float4 window = backprojection_window(param_1, param_2);
-    float4 param_3 = window;
-    if (minmax_window_empty(param_3))
+    float3 param_3 = query;
+    float param_4 = map_min * params_sampling.w;
+    float4 window = backprojection_window(param_3, param_4);
+    float4 param_5 = window;
+    if (minmax_window_empty(param_5))
     {
         return 1.0f;
     }
-    float3 param_4 = query;
-    float4 param_5 = window;
-    float param_6 = limit;
-    float _828 = backprojection_area(param_4, param_5, param_6);
-    return max(0.0f, 1.0f - (_828 / backprojection_whole_light_area()));
+    float3 param_6 = query;
+    float4 param_7 = window;
+    float param_8 = limit;
+    float _863 = backprojection_area(param_6, param_7, param_8);
+    return max(0.0f, 1.0f - (_863 / backprojection_whole_light_area()));
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _887 = shadow_visibility(param);
+    return _887;
 }
 
 void frag_main()
@@ -378,8 +403,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _846 = shadow_visibility(param);
-    float visible = _846;
+    float _901 = receiver_visibility(param);
+    float visible = _901;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -35,8 +35,19 @@ float shadow_visibility(vec3 query)
 {
     vec2 param = query.xy;
     float param_1 = query.z;
-    float _73 = shadow_compare_point(param, param_1);
-    return _73;
+    float _76 = shadow_compare_point(param, param_1);
+    return _76;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _96 = shadow_visibility(param);
+    return _96;
 }
 
 void main()
@@ -44,8 +55,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _87 = shadow_visibility(param);
-    float visible = _87;
+    float _110 = receiver_visibility(param);
+    float visible = _110;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

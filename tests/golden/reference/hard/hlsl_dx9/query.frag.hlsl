@@ -41,8 +41,19 @@ float shadow_visibility(float3 query)
 {
     float2 param = query.xy;
     float param_1 = query.z;
-    float _73 = shadow_compare_point(param, param_1);
-    return _73;
+    float _76 = shadow_compare_point(param, param_1);
+    return _76;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _96 = shadow_visibility(param);
+    return _96;
 }
 
 void frag_main()
@@ -50,8 +61,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _87 = shadow_visibility(param);
-    float visible = _87;
+    float _110 = receiver_visibility(param);
+    float visible = _110;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -108,8 +108,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _128 = shadow_texel(param);
-        float depth = _128;
+        float _131 = shadow_texel(param);
+        float depth = _131;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -121,8 +121,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _309 = minmax_node(param, param_1);
-    return _309;
+    vec2 _312 = minmax_node(param, param_1);
+    return _312;
 }
 
 float minmax_texel_count(vec4 part)
@@ -140,16 +140,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _332;
+    vec2 _335;
     if (root)
     {
-        _332 = cursor.first_root;
+        _335 = cursor.first_root;
     }
     else
     {
-        _332 = floor(cursor.node * 0.5) * 2.0;
+        _335 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _332;
+    vec2 first_sibling = _335;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -205,22 +205,22 @@ float minmax_pcf_count(vec2 first, float reference)
                 vec4 param_5 = window;
                 vec4 part = minmax_node_part(param_4, param_5);
                 bool descend = false;
-                bool _462 = !cursor.climbed;
-                bool _469;
-                if (_462)
+                bool _465 = !cursor.climbed;
+                bool _472;
+                if (_465)
                 {
                     vec4 param_6 = part;
-                    _469 = !minmax_window_empty(param_6);
+                    _472 = !minmax_window_empty(param_6);
                 }
                 else
                 {
-                    _469 = _462;
+                    _472 = _465;
                 }
-                if (_469)
+                if (_472)
                 {
                     MinmaxCursor param_7 = cursor;
-                    vec2 _475 = minmax_cursor_read(param_7);
-                    vec2 range = _475;
+                    vec2 _478 = minmax_cursor_read(param_7);
+                    vec2 range = _478;
                     if (range.y < reference)
                     {
                         vec4 param_8 = part;
@@ -228,17 +228,17 @@ float minmax_pcf_count(vec2 first, float reference)
                     }
                     else
                     {
-                        bool _491 = reference > range.x;
-                        bool _497;
-                        if (_491)
+                        bool _494 = reference > range.x;
+                        bool _500;
+                        if (_494)
                         {
-                            _497 = cursor.level > 0.5;
+                            _500 = cursor.level > 0.5;
                         }
                         else
                         {
-                            _497 = _491;
+                            _500 = _494;
                         }
-                        descend = _497;
+                        descend = _500;
                     }
                 }
                 if (descend)
@@ -265,18 +265,29 @@ float shadow_visibility(vec3 query)
     float param = query.z;
     vec2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _538 = minmax_pcf_count(param_1, param_2);
-    float count = _538;
-    float _541;
+    float _541 = minmax_pcf_count(param_1, param_2);
+    float count = _541;
+    float _544;
     if (count > 0.0)
     {
-        _541 = (144.0 - count) * 0.0069444444961845874786376953125;
+        _544 = (144.0 - count) * 0.0069444444961845874786376953125;
     }
     else
     {
-        _541 = 1.0;
+        _544 = 1.0;
     }
-    return _541;
+    return _544;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _573 = shadow_visibility(param);
+    return _573;
 }
 
 void main()
@@ -284,8 +295,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _564 = shadow_visibility(param);
-    float visible = _564;
+    float _587 = receiver_visibility(param);
+    float visible = _587;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -29,8 +29,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _62 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_62.xy, _62.z), 0.0);
+    vec3 _65 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_65.xy, _65.z), 0.0);
 }
 
 float shadow_visibility(vec3 query)
@@ -42,11 +42,22 @@ float shadow_visibility(vec3 query)
         {
             vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
             float param_1 = query.z;
-            float _107 = shadow_compare_bilinear(param, param_1);
-            sum += _107;
+            float _110 = shadow_compare_bilinear(param, param_1);
+            sum += _110;
         }
     }
     return sum / 9.0;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _140 = shadow_visibility(param);
+    return _140;
 }
 
 void main()
@@ -54,8 +65,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _133 = shadow_visibility(param);
-    float visible = _133;
+    float _157 = receiver_visibility(param);
+    float visible = _157;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -58,11 +58,22 @@ float shadow_visibility(float3 query)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
             float param_1 = query.z;
-            float _184 = shadow_compare_bilinear(param, param_1);
-            sum += _184;
+            float _187 = shadow_compare_bilinear(param, param_1);
+            sum += _187;
         }
     }
     return sum / 9.0f;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _216 = shadow_visibility(param);
+    return _216;
 }
 
 void frag_main()
@@ -70,8 +81,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _207 = shadow_visibility(param);
-    float visible = _207;
+    float _230 = receiver_visibility(param);
+    float visible = _230;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

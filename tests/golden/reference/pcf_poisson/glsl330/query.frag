@@ -31,8 +31,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _62 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_62.xy, _62.z), 0.0);
+    vec3 _65 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_65.xy, _65.z), 0.0);
 }
 
 float shadow_visibility(vec3 query)
@@ -42,10 +42,21 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy + (PCF_DISK[i] * params.sampling.x);
         float param_1 = query.z;
-        float _148 = shadow_compare_bilinear(param, param_1);
-        sum += _148;
+        float _151 = shadow_compare_bilinear(param, param_1);
+        sum += _151;
     }
     return sum / 16.0;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _180 = shadow_visibility(param);
+    return _180;
 }
 
 void main()
@@ -53,8 +64,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _173 = shadow_visibility(param);
-    float visible = _173;
+    float _197 = receiver_visibility(param);
+    float visible = _197;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

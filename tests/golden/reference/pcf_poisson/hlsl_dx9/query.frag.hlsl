@@ -56,10 +56,21 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy + (tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * params_sampling.x);
         float param_1 = query.z;
-        float _179 = shadow_compare_bilinear(param, param_1);
-        sum += _179;
+        float _182 = shadow_compare_bilinear(param, param_1);
+        sum += _182;
     }
     return sum / 16.0f;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _209 = shadow_visibility(param);
+    return _209;
 }
 
 void frag_main()
@@ -67,8 +78,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _200 = shadow_visibility(param);
-    float visible = _200;
+    float _223 = receiver_visibility(param);
+    float visible = _223;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

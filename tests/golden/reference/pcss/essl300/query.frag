@@ -36,22 +36,22 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, vec2 uv, 
     for (int i = 0; i < 16; i++)
     {
         vec2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float _236 = shadow_depth_point(param);
-        float shadowMapDepth = _236;
+        float _239 = shadow_depth_point(param);
+        float shadowMapDepth = _239;
         bool blocks = shadowMapDepth < (zReceiver - params.sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0);
         numBlockers += float(blocks);
     }
-    float _258;
+    float _261;
     if (numBlockers > 0.0)
     {
-        _258 = blockerSum / numBlockers;
+        _261 = blockerSum / numBlockers;
     }
     else
     {
-        _258 = zReceiver;
+        _261 = zReceiver;
     }
-    avgBlockerDepth = _258;
+    avgBlockerDepth = _261;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -69,8 +69,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _106 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_106.xy, _106.z), 0.0);
+    vec3 _109 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_109.xy, _109.z), 0.0);
 }
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
@@ -81,8 +81,8 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
         vec2 offset = POISSON_DISK[i] * filterRadiusUV;
         vec2 param = uv + offset;
         float param_1 = zReceiver;
-        float _196 = shadow_compare_bilinear(param, param_1);
-        sum += _196;
+        float _199 = shadow_compare_bilinear(param, param_1);
+        sum += _199;
     }
     return sum / 16.0;
 }
@@ -91,6 +91,10 @@ float PCSS(vec3 coords)
 {
     vec2 uv = coords.xy;
     float zReceiver = coords.z;
+    if (!(zReceiver > params.light.z))
+    {
+        return 1.0;
+    }
     float avgBlockerDepth = 0.0;
     float numBlockers = 0.0;
     vec2 param_2 = uv;
@@ -105,21 +109,32 @@ float PCSS(vec3 coords)
         return 1.0;
     }
     float param_4 = zReceiver;
-    float param_5 = avgBlockerDepth;
+    float param_5 = max(avgBlockerDepth, params.light.z);
     float penumbraRatio = PenumbraSize(param_4, param_5);
     float filterRadiusUV = ((penumbraRatio * params.light.w) * params.light.z) / coords.z;
     vec2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _312 = PCF_Filter(param_6, param_7, param_8);
-    return _312;
+    float _326 = PCF_Filter(param_6, param_7, param_8);
+    return _326;
 }
 
 float shadow_visibility(vec3 query)
 {
     vec3 param = query;
-    float _317 = PCSS(param);
-    return _317;
+    float _331 = PCSS(param);
+    return _331;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _351 = shadow_visibility(param);
+    return _351;
 }
 
 void main()
@@ -127,8 +142,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _331 = shadow_visibility(param);
-    float visible = _331;
+    float _365 = receiver_visibility(param);
+    float visible = _365;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

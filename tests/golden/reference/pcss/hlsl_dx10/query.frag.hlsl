@@ -47,22 +47,22 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     for (int i = 0; i < 16; i++)
     {
         float2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float _236 = shadow_depth_point(param);
-        float shadowMapDepth = _236;
+        float _239 = shadow_depth_point(param);
+        float shadowMapDepth = _239;
         bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0f);
         numBlockers += float(blocks);
     }
-    float _258;
+    float _261;
     if (numBlockers > 0.0f)
     {
-        _258 = blockerSum / numBlockers;
+        _261 = blockerSum / numBlockers;
     }
     else
     {
-        _258 = zReceiver;
+        _261 = zReceiver;
     }
-    avgBlockerDepth = _258;
+    avgBlockerDepth = _261;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -80,8 +80,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _106 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _106.xy, _106.z);
+    float3 _109 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _109.xy, _109.z);
 }
 
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
@@ -93,8 +93,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = POISSON_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _196 = shadow_compare_bilinear(param, param_1);
-        sum += _196;
+        float _199 = shadow_compare_bilinear(param, param_1);
+        sum += _199;
     }
     return sum / 16.0f;
 }
@@ -103,6 +103,10 @@ float PCSS(float3 coords)
 {
     float2 uv = coords.xy;
     float zReceiver = coords.z;
+    if (!(zReceiver > params_light.z))
+    {
+        return 1.0f;
+    }
     float avgBlockerDepth = 0.0f;
     float numBlockers = 0.0f;
     float2 param_2 = uv;
@@ -117,21 +121,32 @@ float PCSS(float3 coords)
         return 1.0f;
     }
     float param_4 = zReceiver;
-    float param_5 = avgBlockerDepth;
+    float param_5 = max(avgBlockerDepth, params_light.z);
     float penumbraRatio = PenumbraSize(param_4, param_5);
     float filterRadiusUV = ((penumbraRatio * params_light.w) * params_light.z) / coords.z;
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _312 = PCF_Filter(param_6, param_7, param_8);
-    return _312;
+    float _326 = PCF_Filter(param_6, param_7, param_8);
+    return _326;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _317 = PCSS(param);
-    return _317;
+    float _331 = PCSS(param);
+    return _331;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _351 = shadow_visibility(param);
+    return _351;
 }
 
 void frag_main()
@@ -139,8 +154,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _331 = shadow_visibility(param);
-    float visible = _331;
+    float _365 = receiver_visibility(param);
+    float visible = _365;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -42,22 +42,22 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     for (int i = 0; i < 16; i++)
     {
         float2 param = uv + (tex2Dlod(blocker_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * searchWidth);
-        float _266 = shadow_depth_point(param);
-        float shadowMapDepth = _266;
+        float _269 = shadow_depth_point(param);
+        float shadowMapDepth = _269;
         bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0f);
         numBlockers += float(blocks);
     }
-    float _288;
+    float _291;
     if (numBlockers > 0.0f)
     {
-        _288 = blockerSum / numBlockers;
+        _291 = blockerSum / numBlockers;
     }
     else
     {
-        _288 = zReceiver;
+        _291 = zReceiver;
     }
-    avgBlockerDepth = _288;
+    avgBlockerDepth = _291;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -96,8 +96,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _222 = shadow_compare_bilinear(param, param_1);
-        sum += _222;
+        float _225 = shadow_compare_bilinear(param, param_1);
+        sum += _225;
     }
     return sum / 16.0f;
 }
@@ -106,6 +106,10 @@ float PCSS(float3 coords)
 {
     float2 uv = coords.xy;
     float zReceiver = coords.z;
+    if (!(zReceiver > params_light.z))
+    {
+        return 1.0f;
+    }
     float avgBlockerDepth = 0.0f;
     float numBlockers = 0.0f;
     float2 param_2 = uv;
@@ -120,21 +124,32 @@ float PCSS(float3 coords)
         return 1.0f;
     }
     float param_4 = zReceiver;
-    float param_5 = avgBlockerDepth;
+    float param_5 = max(avgBlockerDepth, params_light.z);
     float penumbraRatio = PenumbraSize(param_4, param_5);
     float filterRadiusUV = ((penumbraRatio * params_light.w) * params_light.z) / coords.z;
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _342 = PCF_Filter(param_6, param_7, param_8);
-    return _342;
+    float _356 = PCF_Filter(param_6, param_7, param_8);
+    return _356;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _347 = PCSS(param);
-    return _347;
+    float _361 = PCSS(param);
+    return _361;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _381 = shadow_visibility(param);
+    return _381;
 }
 
 void frag_main()
@@ -142,8 +157,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _361 = shadow_visibility(param);
-    float visible = _361;
+    float _395 = receiver_visibility(param);
+    float visible = _395;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

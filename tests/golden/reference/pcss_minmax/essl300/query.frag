@@ -66,8 +66,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _145 = shadow_texel(param);
-        float depth = _145;
+        float _148 = shadow_texel(param);
+        float depth = _148;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -111,8 +111,8 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
             {
                 float param_6 = level;
                 vec2 param_7 = node;
-                vec2 _466 = minmax_node(param_6, param_7);
-                float node_min = _466.x;
+                vec2 _469 = minmax_node(param_6, param_7);
+                float node_min = _469.x;
                 if (node_min < reference)
                 {
                     vec4 param_8 = part;
@@ -141,8 +141,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _109 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_109.xy, _109.z), 0.0);
+    vec3 _112 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_112.xy, _112.z), 0.0);
 }
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
@@ -153,23 +153,27 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
         vec2 offset = PCF_DISK[i] * filterRadiusUV;
         vec2 param = uv + offset;
         float param_1 = zReceiver;
-        float _339 = shadow_compare_bilinear(param, param_1);
-        sum += _339;
+        float _342 = shadow_compare_bilinear(param, param_1);
+        sum += _342;
     }
     return sum / 16.0;
 }
 
 float shadow_visibility(vec3 query)
 {
+    if (!(query.z > params.light.z))
+    {
+        return 1.0;
+    }
     float zBlocker = 0.0;
     float param = query.z;
     vec2 param_2 = query.xy;
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _516 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _528 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_516)
+    if (!_528)
     {
         return 1.0;
     }
@@ -180,8 +184,19 @@ float shadow_visibility(vec3 query)
     vec2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _550 = PCF_Filter(param_7, param_8, param_9);
-    return _550;
+    float _562 = PCF_Filter(param_7, param_8, param_9);
+    return _562;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _582 = shadow_visibility(param);
+    return _582;
 }
 
 void main()
@@ -189,8 +204,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _564 = shadow_visibility(param);
-    float visible = _564;
+    float _596 = receiver_visibility(param);
+    float visible = _596;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

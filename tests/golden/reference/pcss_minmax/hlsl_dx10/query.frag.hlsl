@@ -78,8 +78,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _145 = shadow_texel(param);
-        float depth = _145;
+        float _148 = shadow_texel(param);
+        float depth = _148;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -125,8 +125,8 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
             {
                 float param_6 = level;
                 float2 param_7 = node;
-                float2 _466 = minmax_node(param_6, param_7);
-                float node_min = _466.x;
+                float2 _469 = minmax_node(param_6, param_7);
+                float node_min = _469.x;
                 if (node_min < reference)
                 {
                     float4 param_8 = part;
@@ -155,8 +155,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _109 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _109.xy, _109.z);
+    float3 _112 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _112.xy, _112.z);
 }
 
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
@@ -168,23 +168,27 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = PCF_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _339 = shadow_compare_bilinear(param, param_1);
-        sum += _339;
+        float _342 = shadow_compare_bilinear(param, param_1);
+        sum += _342;
     }
     return sum / 16.0f;
 }
 
 float shadow_visibility(float3 query)
 {
+    if (!(query.z > params_light.z))
+    {
+        return 1.0f;
+    }
     float zBlocker = 0.0f;
     float param = query.z;
     float2 param_2 = query.xy;
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _516 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _528 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_516)
+    if (!_528)
     {
         return 1.0f;
     }
@@ -195,8 +199,19 @@ float shadow_visibility(float3 query)
     float2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _550 = PCF_Filter(param_7, param_8, param_9);
-    return _550;
+    float _562 = PCF_Filter(param_7, param_8, param_9);
+    return _562;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _582 = shadow_visibility(param);
+    return _582;
 }
 
 void frag_main()
@@ -204,8 +219,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _564 = shadow_visibility(param);
-    float visible = _564;
+    float _596 = receiver_visibility(param);
+    float visible = _596;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -38,11 +38,22 @@ float shadow_visibility(vec3 query)
         {
             vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
             float param_1 = query.z;
-            float _105 = shadow_compare_point(param, param_1);
-            sum += _105;
+            float _108 = shadow_compare_point(param, param_1);
+            sum += _108;
         }
     }
     return sum / 9.0;
+}
+
+float receiver_visibility(vec3 query)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _137 = shadow_visibility(param);
+    return _137;
 }
 
 void main()
@@ -50,8 +61,8 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _128 = shadow_visibility(param);
-    float visible = _128;
+    float _151 = receiver_visibility(param);
+    float visible = _151;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

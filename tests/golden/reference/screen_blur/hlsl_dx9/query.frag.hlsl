@@ -46,11 +46,22 @@ float shadow_visibility(float3 query)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
             float param_1 = query.z;
-            float _105 = shadow_compare_point(param, param_1);
-            sum += _105;
+            float _108 = shadow_compare_point(param, param_1);
+            sum += _108;
         }
     }
     return sum / 9.0f;
+}
+
+float receiver_visibility(float3 query)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _137 = shadow_visibility(param);
+    return _137;
 }
 
 void frag_main()
@@ -58,8 +69,8 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _128 = shadow_visibility(param);
-    float visible = _128;
+    float _151 = receiver_visibility(param);
+    float visible = _151;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
