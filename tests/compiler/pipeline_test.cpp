@@ -447,6 +447,23 @@ TEST(LoadLibrary, UnknownPassesAndSchemasAreErrorsNamingTheJsonPath) {
   EXPECT_THAT(bad_sampler.error().to_string(), HasSubstr("unknown filter 'cubic'"));
 }
 
+// Numbers that do not fit their field are errors, not undefined behaviour
+// (the index.json fuzzer's find: an instruction count of 2e115, a schema of
+// 1e300, a blur weight of 1e39).
+TEST(LoadLibrary, NumbersThatDoNotFitTheirFieldAreErrors) {
+  const std::string index = slurp(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "tests" / "fuzz" /
+                                  "index" / "huge_integer.json");
+  const auto huge = parse_library(index, "lib");
+  ASSERT_FALSE(huge.ok());
+  EXPECT_THAT(huge.error().to_string(), HasSubstr("is not a number that fits its field"));
+  std::string schema =
+      slurp(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "tests" / "fuzz" / "index" / "hard.json");
+  schema.replace(schema.find("\"schema\": 3"), 11, "\"schema\": 1e300");
+  const auto bad_schema = parse_library(schema, "lib");
+  ASSERT_FALSE(bad_schema.ok());
+  EXPECT_THAT(bad_schema.error().to_string(), HasSubstr("/schema"));
+}
+
 // Variants refer to the records of index.json's shared tables by position;
 // load_library resolves them into each LibraryVariant.
 TEST(LoadLibrary, VariantsSharingAReflectionPointAtOneRecord) {

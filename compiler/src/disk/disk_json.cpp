@@ -1,3 +1,5 @@
+#include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "penumbra/compiler/disk.hpp"
@@ -33,10 +35,20 @@ Disk disk_from_json(const nlohmann::json& points, const nlohmann::json& info) {
   Disk disk;
   disk.name = info.value("name", "");
   disk.method = info.value("method", "");
-  disk.seed = info.value("seed", std::uint64_t{0});
+  // Read wide and narrowed by hand: nlohmann's get<float>() of 1e39, or an
+  // unsigned get of 1e300, is undefined behaviour. A coordinate beyond
+  // float's range becomes infinite, for the reader's range check to refuse.
+  const nlohmann::json seed = info.value("seed", nlohmann::json(0));
+  disk.seed = seed.is_number_unsigned() ? seed.get<std::uint64_t>() : 0;
   disk.normalized_min_distance = info.value("normalized_min_distance", 0.0);
+  auto coordinate = [](const nlohmann::json& value) {
+    const double d = value.get<double>();
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    if (std::abs(d) <= std::numeric_limits<float>::max()) return static_cast<float>(d);
+    return d > 0 ? kInfinity : -kInfinity;
+  };
   for (const nlohmann::json& p : points) {
-    disk.points.push_back({p.at(0).get<float>(), p.at(1).get<float>()});
+    disk.points.push_back({coordinate(p.at(0)), coordinate(p.at(1))});
   }
   return disk;
 }

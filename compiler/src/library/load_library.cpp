@@ -1,5 +1,7 @@
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -108,10 +110,34 @@ Status read_keys(const std::filesystem::path& file, const json& keys, const std:
   return status;
 }
 
+// `value` as a T, thrown as a json exception (reported at its place) when it
+// is no number or does not fit: nlohmann's get<T>() of 1e115 as an int is
+// undefined behaviour. Integer types take integers only.
+template <typename T>
+T number_as(const json& value) {
+  using limits = std::numeric_limits<T>;
+  if (value.is_number_unsigned()) {
+    const std::uint64_t u = value.get<std::uint64_t>();
+    if (u <= static_cast<std::uint64_t>(limits::max())) return static_cast<T>(u);
+  } else if (value.is_number_integer()) {
+    const std::int64_t i = value.get<std::int64_t>();
+    if (i >= static_cast<std::int64_t>(limits::lowest()) &&
+        (std::is_floating_point_v<T> || i <= static_cast<std::int64_t>(limits::max()))) {
+      return static_cast<T>(i);
+    }
+  } else if (std::is_floating_point_v<T> && value.is_number_float()) {
+    const double d = value.get<double>();
+    if (std::abs(d) <= static_cast<double>(limits::max())) return static_cast<T>(d);
+  }
+  throw json::out_of_range::create(
+      406, shorten(value.dump()) + " is not a number that fits its field", &value);
+}
+
 // pass_files[i].bytecode.<stage> (docs/shader-interface.md).
 BytecodeFile bytecode_file(const json& j) {
   return BytecodeFile{j.at("path").get<std::string>(), j.at("profile").get<std::string>(),
-                      j.at("size").get<std::uint64_t>(), j.value("instruction_slots", 0)};
+                      number_as<std::uint64_t>(j.at("size")),
+                      j.contains("instruction_slots") ? number_as<int>(j["instruction_slots"]) : 0};
 }
 
 // A record of pass_files: the two stages' files and their bytecode.
@@ -256,11 +282,13 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
         return type_error(file, path + "/blur_weights/" + std::to_string(i), "a number",
                           weights[i]);
       }
-      v.blur_weights.push_back(weights[i].get<float>());
-      if (!in_range(v.blur_weights.back(), 0.0f, 1.0f)) {
+      // Checked as a double: a weight beyond float's range must not be cast.
+      const double weight = weights[i].get<double>();
+      if (!(weight >= 0.0 && weight <= 1.0)) {
         return index_error(file, path + "/blur_weights/" + std::to_string(i),
                            "out of range; allowed: a weight from 0 to 1");
       }
+      v.blur_weights.push_back(static_cast<float>(weight));
     }
   }
   PENUMBRA_TRY_ASSIGN(const json* targets, member(file, j, path, "targets"));
@@ -337,7 +365,7 @@ Result<Library> parse_library(std::string_view text, const std::filesystem::path
   try {
     const json j = json::parse(text);
     library.generator = j.at("generator").get<std::string>();
-    if (j.value("schema", 0) != kIndexSchema) {
+    if (j.value("schema", json()) != kIndexSchema) {
       return index_error(file, "/schema",
                          "index schema " + shorten(j.value("schema", json()).dump()) +
                              " is not supported; allowed value " + std::to_string(kIndexSchema) +
