@@ -539,6 +539,19 @@ TEST(LoadLibrary, VariantsSharingAReflectionPointAtOneRecord) {
             library->variants[0].passes.at(PassKind::depth).at(Target::spirv).frag);
 }
 
+// Loads the library at `root` with `index` written as its index.json after
+// setting `pointer` to `value`: the bad_input error's text, or "loaded".
+std::string load_with(const std::filesystem::path& root, const nlohmann::json& index,
+                      const std::string& pointer, const nlohmann::json& value) {
+  nlohmann::json broken = index;
+  broken[nlohmann::json::json_pointer(pointer)] = value;
+  std::ofstream(root / "index.json") << broken.dump(2);
+  auto library = load_library(root);
+  if (library.ok()) return std::string("loaded");
+  EXPECT_EQ(library.error().kind, Error::Kind::bad_input);
+  return library.error().to_string();
+}
+
 TEST(LoadLibrary, ReferencesOutOfRangeAreErrorsNamingTheJsonPath) {
   TempDir dir("badref");
   const Variant pcss = make_variant(Technique::pcss);
@@ -546,13 +559,7 @@ TEST(LoadLibrary, ReferencesOutOfRangeAreErrorsNamingTheJsonPath) {
   const auto file = dir.path / "out" / "index.json";
   const auto index = nlohmann::json::parse(slurp(file));
   const auto refused = [&](const std::string& pointer, const nlohmann::json& value) {
-    nlohmann::json broken = index;
-    broken[nlohmann::json::json_pointer(pointer)] = value;
-    std::ofstream(file) << broken.dump(2);
-    auto library = load_library(dir.path / "out");
-    if (library.ok()) return std::string("loaded");
-    EXPECT_EQ(library.error().kind, Error::Kind::bad_input);
-    return library.error().to_string();
+    return load_with(dir.path / "out", index, pointer, value);
   };
   const std::size_t records = index.at("reflections").size();
   EXPECT_THAT(refused("/variants/0/reflection/query/spirv", records),
@@ -591,7 +598,7 @@ TEST(LoadLibrary, ReferencesOutOfRangeAreErrorsNamingTheJsonPath) {
 }
 
 // A disk point or blur weight out of range (NaN cannot be written in JSON;
-// 1e39 reads as an infinite float) is refused naming its JSON path.
+// 1e39 is beyond float's range) is refused naming its JSON path.
 TEST(LoadLibrary, DiskPointsAndBlurWeightsOutOfRangeAreErrorsNamingTheJsonPath) {
   TempDir dir("badvalues");
   const Variant variants[] = {make_variant(Technique::pcss), make_variant(Technique::screen_blur)};
@@ -599,13 +606,7 @@ TEST(LoadLibrary, DiskPointsAndBlurWeightsOutOfRangeAreErrorsNamingTheJsonPath) 
   const auto file = dir.path / "out" / "index.json";
   const auto index = nlohmann::json::parse(slurp(file));
   const auto refused = [&](const std::string& pointer, const nlohmann::json& value) {
-    nlohmann::json broken = index;
-    broken[nlohmann::json::json_pointer(pointer)] = value;
-    std::ofstream(file) << broken.dump(2);
-    auto library = load_library(dir.path / "out");
-    if (library.ok()) return std::string("loaded");
-    EXPECT_EQ(library.error().kind, Error::Kind::bad_input);
-    return library.error().to_string();
+    return load_with(dir.path / "out", index, pointer, value);
   };
   for (const nlohmann::json& value : {nlohmann::json(1e39), nlohmann::json(-2.5)}) {
     EXPECT_EQ(refused("/disks/0/points/3/1", value),
