@@ -1,57 +1,53 @@
-// Exact visibility: every occluder is an axis-aligned rectangle parallel to
-// the light, so its shadow volume seen from a point projects onto the light
-// plane as an axis-aligned rectangle. The area of a union of such rectangles
-// is exact by coordinate compression: the rectangles' edges cut the plane into
-// cells, each wholly inside or outside every rectangle.
+// Exact visibility: seen from a point, each occluder's shadow on the light
+// plane is a convex polygon (a rectangle's is an axis-aligned rectangle, a
+// box's the hull of its projected corners), so the occluded part of the
+// light is the area of a union of convex polygons clipped to the light
+// square (convex_union.cpp).
 #include "penumbra/reference/exact_visibility.hpp"
 
 #include <algorithm>
 #include <vector>
 
+#include "convex_union.hpp"
+
 namespace penumbra::reference {
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-};
-
-double union_area(const std::vector<Box>& boxes) {
-  std::vector<double> xs, ys;
-  for (const Box& b : boxes) {
-    xs.insert(xs.end(), {b.x0, b.x1});
-    ys.insert(ys.end(), {b.y0, b.y1});
-  }
-  std::sort(xs.begin(), xs.end());
-  std::sort(ys.begin(), ys.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
-  double area = 0.0;
-  for (std::size_t a = 0; a + 1 < xs.size(); ++a) {
-    for (std::size_t b = 0; b + 1 < ys.size(); ++b) {
-      const double cx = (xs[a] + xs[a + 1]) / 2, cy = (ys[b] + ys[b + 1]) / 2;
-      const bool covered = std::any_of(boxes.begin(), boxes.end(), [&](const Box& box) {
-        return box.x0 < cx && cx < box.x1 && box.y0 < cy && cy < box.y1;
-      });
-      if (covered) area += (xs[a + 1] - xs[a]) * (ys[b + 1] - ys[b]);
-    }
-  }
-  return area;
+// The point (x', y', z') seen from P = (px, py, pz), z' < pz, lands on z = 0 at
+// P + (x' - P) pz / (pz - z').
+Point2 project_from(double px, double py, double pz, double x, double y, double z) {
+  const double scale = pz / (pz - z);
+  return {px + (x - px) * scale, py + (y - py) * scale};
 }
 
 }  // namespace
 
 double exact_visibility(const Scene& scene, double x, double y, double z) {
   const double L = scene.light.light_world_size;
-  std::vector<Box> shadows;
+  // Only what lies nearer the light than z - bias occludes; a box reaching
+  // past that depth is cut there (never at z itself, where the projection
+  // has no bound).
+  const double limit = z - std::max(scene.light.bias, 1e-9 * z);
+  std::vector<ConvexPolygon> shadows;
+  const auto add = [&](ConvexPolygon shadow) {
+    shadow = clip_to_square(shadow, L);
+    if (!shadow.empty()) shadows.push_back(std::move(shadow));
+  };
   for (const Rect& r : scene.occluders) {
     if (!(r.z < z - scene.light.bias)) continue;
-    // From P, the point (x', y', r.z) projects to P + (x' - P) z / (z - r.z) on z = 0.
-    const double scale = z / (z - r.z);
-    const Box projected{x + (r.x0 - x) * scale, y + (r.y0 - y) * scale, x + (r.x1 - x) * scale,
-                        y + (r.y1 - y) * scale};
-    const Box clipped{std::max(projected.x0, -L), std::max(projected.y0, -L),
-                      std::min(projected.x1, L), std::min(projected.y1, L)};
-    if (clipped.x0 < clipped.x1 && clipped.y0 < clipped.y1) shadows.push_back(clipped);
+    add({project_from(x, y, z, r.x0, r.y0, r.z), project_from(x, y, z, r.x1, r.y0, r.z),
+         project_from(x, y, z, r.x1, r.y1, r.z), project_from(x, y, z, r.x0, r.y1, r.z)});
+  }
+  for (const Box& b : scene.boxes) {
+    if (!(b.z0 < limit)) continue;
+    const double z1 = std::min(b.z1, limit);
+    std::vector<Point2> corners;
+    for (double cz : {b.z0, z1}) {
+      for (double cy : {b.y0, b.y1}) {
+        for (double cx : {b.x0, b.x1}) corners.push_back(project_from(x, y, z, cx, cy, cz));
+      }
+    }
+    add(convex_hull(std::move(corners)));
   }
   return 1.0 - union_area(shadows) / (4 * L * L);
 }

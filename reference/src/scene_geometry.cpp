@@ -3,17 +3,31 @@
 #include <algorithm>
 
 #include "penumbra/reference/scene.hpp"
+#include "ray_box.hpp"
 
 namespace penumbra::reference {
 
 std::vector<std::array<float, 3>> triangles(const Scene& scene) {
   std::vector<std::array<float, 3>> vertices;
-  vertices.reserve(6 * scene.occluders.size());
+  vertices.reserve(6 * scene.occluders.size() + 36 * scene.boxes.size());
   for (const Rect& r : scene.occluders) {
     const float x0 = float(r.x0), y0 = float(r.y0), x1 = float(r.x1), y1 = float(r.y1);
     const float z = float(r.z);
     vertices.insert(vertices.end(),
                     {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y0, z}, {x1, y1, z}, {x0, y1, z}});
+  }
+  for (const Box& b : scene.boxes) {
+    // Corner k has x1 when bit 0 is set, y1 for bit 1, z1 for bit 2.
+    std::array<std::array<float, 3>, 8> c;
+    for (int k = 0; k < 8; ++k) {
+      c[k] = {float(k & 1 ? b.x1 : b.x0), float(k & 2 ? b.y1 : b.y0), float(k & 4 ? b.z1 : b.z0)};
+    }
+    // Each face as its four corners in order around it, two triangles.
+    constexpr int kFaces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                  {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    for (const auto& f : kFaces) {
+      vertices.insert(vertices.end(), {c[f[0]], c[f[1]], c[f[2]], c[f[0]], c[f[2]], c[f[3]]});
+    }
   }
   return vertices;
 }
@@ -46,6 +60,11 @@ FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_
         const double x = slope.u * r.z;
         const double y = slope.v * r.z;
         if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) nearest = std::min(nearest, r.z);
+      }
+      for (const Box& b : scene.boxes) {
+        // With direction (s_u, s_v, 1), the parameter t is the hit's z.
+        const auto hit = ray_box(b, {0.0, 0.0, 0.0}, {slope.u, slope.v, 1.0});
+        if (hit) nearest = std::min(nearest, hit->t);
       }
       image.at(i, j) = float(nearest);
     }

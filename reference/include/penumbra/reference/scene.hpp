@@ -1,6 +1,7 @@
 // Test scenes in light-view space: rectangular occluders parallel to the
-// light plane above a receiver plane, and what a test needs from them (the
-// depth pass's triangles, the receivers image, a ray-cast shadow map).
+// light plane and solid boxes above a receiver plane, and what a test needs
+// from them (the depth pass's triangles, the receivers image, a ray-cast
+// shadow map).
 #pragma once
 
 #include <array>
@@ -21,9 +22,21 @@ struct Rect {
   double z = 0.0;
 };
 
+// A solid occluder: x in [x0, x1), y in [y0, y1), z in [z0, z1], its face
+// z = z0 toward the light.
+struct Box {
+  double x0 = 0.0;
+  double y0 = 0.0;
+  double x1 = 0.0;
+  double y1 = 0.0;
+  double z0 = 0.0;
+  double z1 = 0.0;
+};
+
 struct Scene {
   std::string name;
   std::vector<Rect> occluders;
+  std::vector<Box> boxes;
   // The receiver plane z = plane_z0 + plane_dzdx x + plane_dzdy y.
   double plane_z0 = 16.0;
   double plane_dzdx = 0.0;
@@ -42,7 +55,7 @@ struct Scene {
 std::vector<Scene> builtin_scenes();
 
 // The occluders as a triangle list in light-view space, two per rectangle
-// (winding unspecified: draw with culling off).
+// and twelve per box (winding unspecified: draw with culling off).
 std::vector<std::array<float, 3>> triangles(const Scene& scene);
 
 // A receivers image (3 channels: u, v, z_r): pixel (i, j) at

@@ -1,0 +1,59 @@
+// The report's stage: a ground tile under the square light with boxes on it
+// (one standing on the ground, a tall pole, a slab over a low block), seen
+// by a camera. Each camera pixel's surface point becomes a receiver, so a
+// variant's query shades the picture and exact_visibility() gives its truth.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "penumbra/reference/scene.hpp"
+#include "penumbra/support/image.hpp"
+
+namespace penumbra::reference {
+
+struct Camera {
+  std::array<double, 3> eye{0.5, 10.5, 4.5};      // light-view position
+  std::array<double, 3> target{0.0, -0.6, 13.6};  // the point at the picture's centre
+  double vertical_fov_degrees = 44.0;             // the picture's vertical field of view
+};
+
+struct Stage {
+  Scene scene;                     // the boxes, light and receiver plane (the ground)
+  double ground_half_width = 4.2;  // the ground tile: |x|, |y| <= this, inside the map
+  Camera camera;
+};
+
+// What a camera pixel sees.
+enum class Surface : std::uint8_t {
+  none,    // nothing: the background
+  ground,  // the ground tile
+  top,     // a box's face toward the light
+  side,    // a box's side, which the light grazes
+};
+
+struct StageView {
+  // Per pixel, row 0 at the top: (u, v, z_r) of the surface point; a
+  // background pixel gets (0.5, 0.5, far_z).
+  FloatImage receivers;
+  std::vector<Surface> surfaces;              // per pixel
+  std::vector<std::array<double, 3>> points;  // per pixel, the light-view surface point
+};
+
+// The stage the report pictures (docs/verification.md, "Report").
+Stage report_stage();
+
+// The stage as the camera sees it through `width` x `height` pixel centres.
+StageView view(const Stage& stage, int width, int height);
+
+// exact_visibility() at each pixel's surface point; 1 on the background.
+FloatImage exact_visibility_image(const Scene& scene, const StageView& view);
+
+// Whether the light falls on `surface` face-on (ground and tops): the
+// pixels whose shadows the report measures.
+inline bool receives_light(Surface surface) {
+  return surface == Surface::ground || surface == Surface::top;
+}
+
+}  // namespace penumbra::reference
