@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/support/image.hpp"
@@ -69,6 +70,12 @@ class Backend {
 // paths that execute on the Vulkan engine (vulkan_backend.cpp).
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
+
+// Every path, in report order: Vulkan, the Direct3D bytecode through
+// `bytecode`, and OpenGL (not executed unless `gl`) on the device `engine`
+// runs on (backend_list.cpp). A new path is a new backend file and a line there.
+std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTranslator bytecode,
+                                                   bool gl);
 
 // Every target on the Vulkan engine, on the maps (and min-max mips) the
 // scenes hold (vulkan_backend.cpp).

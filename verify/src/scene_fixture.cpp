@@ -45,7 +45,7 @@ DepthCheck check_depth(const reference::Scene& scene, Target target, const Float
 }  // namespace
 
 Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
-                                   const reference::Scene& scene) {
+                                   const reference::Scene& scene, FloatImage receivers) {
   SceneFixture fixture;
   fixture.scene = scene;
   const float depth_scale = depth_scale_for(scene.far_z);
@@ -63,7 +63,7 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Tar
   fixture.normalized_depth = *normalized;
   fixture.linear_depth = std::move(*normalized);
   for (float& d : fixture.linear_depth.data) d /= depth_scale;  // exact: a power of two
-  fixture.receivers = reference::receivers(scene, scene.receivers_width, scene.receivers_height);
+  fixture.receivers = std::move(receivers);
   fixture.colour = reference::scene_colour(scene.receivers_width, scene.receivers_height);
   fixture.depth_check = check_depth(scene, target, fixture.linear_depth);
   return fixture;

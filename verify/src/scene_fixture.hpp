@@ -32,7 +32,9 @@ struct TargetScenes {
   std::optional<Status> minmax;
 };
 
+// `scene` rendered by `depth`, with `receivers` (u, v, z_r per pixel; the
+// scene's receivers_width x receivers_height).
 Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
-                                   const reference::Scene& scene);
+                                   const reference::Scene& scene, FloatImage receivers);
 
 }  // namespace penumbra

@@ -129,7 +129,9 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
   TargetScenes scenes;
   for (const reference::Scene& scene : reference::builtin_scenes()) {
     const auto start = Clock::now();
-    auto fixture = prepare_scene(ctx.engine, depth->program, target, scene);
+    auto fixture =
+        prepare_scene(ctx.engine, depth->program, target, scene,
+                      reference::receivers(scene, scene.receivers_width, scene.receivers_height));
     if (!fixture) return fixture.error();
     report.depth_checks.push_back(fixture->depth_check);
     report.depth_checks.back().seconds = seconds_since(start);
@@ -260,11 +262,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
   Context ctx{library, engine, precision, {}, {}, {}};
   // The paths, in report order: a new one is a new backend file and a line here.
-  ctx.backends.push_back(vulkan_backend(engine));
-  ctx.backends.push_back(bytecode_backend(engine, options.bytecode));
-  // On lavapipe, GL runs on llvmpipe too, so both paths use one rasterizer.
-  const bool lavapipe = report.device.name.find("llvmpipe") != std::string::npos;
-  ctx.backends.push_back(gl_backend(options.gl, lavapipe ? "llvmpipe" : ""));
+  ctx.backends = all_backends(engine, options.bytecode, options.gl);
   report.gl_device = ctx.backends.back()->device();
 
   const Preparers prepare_with = preparers(library, options);

@@ -1,0 +1,59 @@
+// Every variant's shaders run on one caller-given scene and view (the
+// report's stage), each target on each execution path as `penumbra verify`
+// runs them, and handed one run at a time to a sink with the CPU reference
+// of the same image.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "penumbra/reference/scene.hpp"
+#include "penumbra/verify/verify.hpp"
+
+namespace penumbra {
+
+struct PictureOptions {
+  std::vector<std::string> variants;  // only these (by name); empty = all
+  std::vector<Target> targets;        // only these; empty = all the library has
+  bool gl = true;                     // also run glsl330/glsl450 through the OpenGL driver
+  BytecodeTranslator bytecode = {};   // the Direct3D bytecode path; none: not executed
+  int timed_runs = 3;                 // runs of the passes timed; the fastest is reported
+};
+
+// A scene and the receivers to shade it at (u, v, z_r per pixel, the
+// scene's receivers_width x receivers_height).
+struct PictureScene {
+  reference::Scene scene;
+  FloatImage receivers;
+};
+
+// One variant on one target and path.
+struct PictureRun {
+  std::string variant;
+  Technique technique = Technique::hard;
+  Target target = Target::spirv;
+  std::string backend;       // "vulkan", "bytecode" or "gl", as in verify.json
+  std::string device;        // the device or driver that ran it
+  Execution execution;       // front end and shims
+  std::string not_executed;  // why the path could not run it here; then no images
+  std::string error;         // why it failed (front end, device); then no images
+  // What the variant shows: the query's visibility (screen_blur: the
+  // blurred factor), 1 channel, and the CPU reference of the same image.
+  FloatImage visibility;
+  FloatImage reference;
+  FloatImage texel_reads;    // the query's per-pixel texel reads
+  double run_seconds = 0.0;  // the fastest timed run of the passes, read-back included
+};
+
+using PictureSink = std::function<Status(PictureRun&&)>;
+
+// Runs every wanted (variant, target, path) on `scene`, in library order,
+// and gives each to `sink`; stops at the first error the sink returns.
+// Errors: bad_input for a variant the library lacks; a depth pass or
+// min-max mip that cannot be built fails the runs of its target, not the call.
+Status render_pictures(const Library& library, Engine& engine, const PictureScene& scene,
+                       const PictureOptions& options, const PictureSink& sink,
+                       const DiagnosticConsumer& diagnostics);
+
+}  // namespace penumbra

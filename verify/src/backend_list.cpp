@@ -1,0 +1,16 @@
+#include "backend.hpp"
+
+namespace penumbra {
+
+std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTranslator bytecode,
+                                                   bool gl) {
+  std::vector<std::unique_ptr<Backend>> backends;
+  backends.push_back(vulkan_backend(engine));
+  backends.push_back(bytecode_backend(engine, std::move(bytecode)));
+  // On lavapipe, GL runs on llvmpipe too, so both paths use one rasterizer.
+  const bool lavapipe = engine.device_info().name.find("llvmpipe") != std::string::npos;
+  backends.push_back(gl_backend(gl, lavapipe ? "llvmpipe" : ""));
+  return backends;
+}
+
+}  // namespace penumbra
