@@ -15,6 +15,7 @@ void add_junit_merge_command(CLI::App& app, int& exit_code);
 #ifdef PENUMBRA_HAS_VERIFY
 void add_eval_command(CLI::App& app, int& exit_code);
 void add_verify_command(CLI::App& app, int& exit_code);
+void add_report_command(CLI::App& app, int& exit_code);
 #endif
 
 }  // namespace penumbra::cli

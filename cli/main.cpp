@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
 #ifdef PENUMBRA_HAS_VERIFY
   penumbra::cli::add_eval_command(app, exit_code);
   penumbra::cli::add_verify_command(app, exit_code);
+  penumbra::cli::add_report_command(app, exit_code);
 #endif
   penumbra::cli::refuse_empty_values(app);
   try {

@@ -1,0 +1,32 @@
+// `penumbra report`: every variant of a built library pictured on the
+// report's stage (reference/stage.hpp) through the runtime, measured against
+// the CPU reference and the exact area-light truth, and written as PNGs,
+// report.json and a static HTML page (docs/verification.md, "Report").
+#pragma once
+
+#include <filesystem>
+
+#include "penumbra/compiler/library.hpp"
+#include "penumbra/verify/pictures.hpp"
+
+namespace penumbra {
+
+struct ReportOptions {
+  PictureOptions pictures;  // which variants, targets and paths run
+  // Where the report's links to the library's files point from: the folder
+  // the report will finally be in (it may be written elsewhere first).
+  std::filesystem::path final_dir;
+};
+
+// Writes the report of `library` into `dir` (an existing empty folder):
+// index.html, report.json, truth.png, contact_sheet.png and images/.
+// Errors: those of render_pictures and of writing the files.
+Status write_report(const Library& library, Engine& engine, const std::filesystem::path& dir,
+                    const ReportOptions& options, const DiagnosticConsumer& diagnostics);
+
+// Whether `dir` may be replaced by a report: missing, empty, or a report
+// that write_report() wrote (report.json whose "generator" is penumbra);
+// bad_input naming the folder and what is allowed otherwise.
+Status check_report_directory(const std::filesystem::path& dir);
+
+}  // namespace penumbra

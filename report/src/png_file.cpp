@@ -1,0 +1,40 @@
+#include "png_file.hpp"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::report {
+namespace {
+
+std::uint8_t encode(float linear) {
+  const float c = std::clamp(linear, 0.0f, 1.0f);
+  const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+  return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+}
+
+}  // namespace
+
+void Picture::set(int x, int y, Rgb linear) {
+  const std::size_t at = (std::size_t(y) * width + x) * 3;
+  rgb[at] = encode(linear.r);
+  rgb[at + 1] = encode(linear.g);
+  rgb[at + 2] = encode(linear.b);
+}
+
+Status write_png(const std::filesystem::path& path, const Picture& picture) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(picture.width);
+  image.height = static_cast<png_uint_32>(picture.height);
+  image.format = PNG_FORMAT_RGB;
+  if (png_image_write_to_file(&image, path.c_str(), 0, picture.rgb.data(), 0, nullptr) == 0) {
+    const std::string why = image.message;
+    png_image_free(&image);
+    return make_error(Error::Kind::io, path.string(), "cannot write the PNG: " + why);
+  }
+  return {};
+}
+
+}  // namespace penumbra::report

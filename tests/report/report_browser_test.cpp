@@ -1,0 +1,190 @@
+// The report as a user gets it: `penumbra build` of the default library,
+// `penumbra report`, and the page opened in headless Chromium. The page must
+// render with no console message and no missing picture, show a row for
+// every (variant, target, path), link only to files that exist, and its
+// screenshot is kept as a test artifact. The CLI's refusals are checked on
+// the same library.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "cli_harness.hpp"
+#include "default_library.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Headless as root on a machine with no GPU, nothing reaching the network,
+// console messages logged to stderr, and time for the page's pictures and
+// script before the DOM is read.
+constexpr const char* kChromiumFlags =
+    " --headless --no-sandbox --disable-gpu --disable-background-networking"
+    " --disable-component-update --disable-sync --no-first-run --hide-scrollbars"
+    " --enable-logging=stderr --v=0 --virtual-time-budget=10000";
+
+std::string quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class ReportInBrowser : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new ScratchDir("report-browser");
+    const CliRun build =
+        run_penumbra("build " + quoted(PENUMBRA_SOURCE_DIR "/permutations/default.json") + " -o " +
+                     quoted(lib().string()) + " --no-cache -j 2");
+    ASSERT_EQ(build.exit_code, 0) << build.err;
+    const CliRun report = run_penumbra("report " + quoted(lib().string()));
+    ASSERT_EQ(report.exit_code, 0) << report.err;
+    ASSERT_NE(report.out.find((report_dir() / "index.html").string()), std::string::npos)
+        << report.out;
+    json_ = nlohmann::json::parse(read_text(report_dir() / "report.json"));
+    // One run for the DOM and the console, one for the screenshot.
+    const fs::path page = report_dir() / "index.html";
+    const std::string profile = " --user-data-dir=" + quoted((dir_->path() / "profile").string());
+    const std::string url = quoted("file://" + page.string());
+    ASSERT_EQ(
+        std::system(("timeout 300 " + quoted(CHROMIUM_EXECUTABLE) + kChromiumFlags + profile +
+                     " --dump-dom " + url + " > " + quoted((dir_->path() / "dom.html").string()) +
+                     " 2> " + quoted((dir_->path() / "chromium.log").string()))
+                        .c_str()),
+        0)
+        << read_text(dir_->path() / "chromium.log");
+    fs::create_directories(PENUMBRA_ARTIFACT_DIR);
+    ASSERT_EQ(std::system(("timeout 300 " + quoted(CHROMIUM_EXECUTABLE) + kChromiumFlags + profile +
+                           " --window-size=1600,2000 --screenshot=" +
+                           quoted(screenshot().string()) + " " + url + " > /dev/null 2>&1")
+                              .c_str()),
+              0);
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    dir_ = nullptr;
+  }
+
+  static fs::path lib() { return dir_->path() / "lib"; }
+  static fs::path report_dir() { return lib() / "report"; }
+  static fs::path screenshot() { return fs::path(PENUMBRA_ARTIFACT_DIR) / "report.png"; }
+  static std::string dom() { return read_text(dir_->path() / "dom.html"); }
+
+  static inline ScratchDir* dir_ = nullptr;
+  static inline nlohmann::json json_;
+};
+
+TEST_F(ReportInBrowser, RendersWithNoConsoleMessageAndNoMissingPicture) {
+  const std::string log = read_text(dir_->path() / "chromium.log");
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_EQ(line.find(":CONSOLE"), std::string::npos) << line;
+  }
+  const std::string page = dom();
+  ASSERT_NE(page.find("<tbody id=\"rows\">"), std::string::npos) << "the page did not render";
+  // The page names any script error or picture that did not load in #errors.
+  std::smatch errors;
+  ASSERT_TRUE(
+      std::regex_search(page, errors, std::regex(R"(<div id="errors"[^>]*>([^<]*)</div>)")));
+  EXPECT_EQ(errors[1].str(), "");
+}
+
+TEST_F(ReportInBrowser, ShowsARowForEveryVariantTargetAndPath) {
+  const std::string page = dom();
+  const nlohmann::json& rows = json_.at("rows");
+  // The script marks the rows it drew on <body>.
+  EXPECT_NE(page.find("data-rows=\"" + std::to_string(rows.size()) + "\""), std::string::npos);
+  std::set<std::pair<std::string, std::string>> pairs;
+  for (const auto& row : rows) {
+    EXPECT_EQ(row.at("status"), "ok") << row.dump();
+    pairs.emplace(row.at("variant"), row.at("target"));
+  }
+  for (const Variant& variant : default_variants()) {
+    EXPECT_TRUE(std::regex_search(page, std::regex("<td[^>]*>" + variant.name + "</td>")))
+        << variant.name;
+    for (Target target : variant.targets) {
+      EXPECT_TRUE(pairs.contains({variant.name, std::string(to_string(target))}))
+          << variant.name << " " << to_string(target);
+    }
+  }
+}
+
+TEST_F(ReportInBrowser, EveryLinkResolvesInsideTheReportOrTheLibrary) {
+  std::size_t links = 0;
+  for (const auto& row : json_.at("rows")) {
+    for (const char* key : {"image", "exact_error_image", "reference_error_image"}) {
+      EXPECT_TRUE(fs::is_regular_file(report_dir() / row.at(key).get<std::string>())) << row.dump();
+      ++links;
+    }
+    for (const auto& file : row.at("files")) {
+      EXPECT_TRUE(fs::is_regular_file(report_dir() / file.at("href").get<std::string>()))
+          << file.dump();
+      ++links;
+    }
+  }
+  EXPECT_GT(links, 4 * json_.at("rows").size());
+  EXPECT_TRUE(fs::is_regular_file(report_dir() / "truth.png"));
+  EXPECT_TRUE(fs::is_regular_file(report_dir() / "contact_sheet.png"));
+}
+
+TEST_F(ReportInBrowser, FiguresRankTheTechniquesAsThePapersDo) {
+  // Against the exact square light, on the SPIR-V runs: the hard shadow is
+  // the worst in the penumbra; PCSS beats fixed-width PCF; back-projection
+  // beats the whitepaper's PCSS.
+  std::map<std::string, double> mae;
+  for (const auto& row : json_.at("rows")) {
+    if (row.at("target") != "spirv") continue;
+    mae[row.at("variant")] = row.at("figures").at("exact_penumbra_mae");
+  }
+  for (const auto& [name, error] : mae) {
+    if (name != "hard") {
+      EXPECT_LT(error, mae.at("hard")) << name;
+    }
+  }
+  EXPECT_LT(mae.at("pcss_b16_p16_whitepaper16"), mae.at("pcf_poisson_p16_whitepaper16"));
+  EXPECT_LT(mae.at("backprojection"), mae.at("pcss_b16_p16_whitepaper16"));
+}
+
+TEST_F(ReportInBrowser, ScreenshotIsKept) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  ASSERT_NE(png_image_begin_read_from_file(&image, screenshot().c_str()), 0) << screenshot();
+  EXPECT_EQ(image.width, 1600u);
+  EXPECT_EQ(image.height, 2000u);
+  png_image_free(&image);
+}
+
+TEST_F(ReportInBrowser, RefusesBadArgumentsAndForeignFolders) {
+  const CliRun variant = run_penumbra("report " + quoted(lib().string()) + " --variant nope");
+  EXPECT_EQ(variant.exit_code, 2);
+  EXPECT_NE(variant.err.find("--variant nope"), std::string::npos) << variant.err;
+  const CliRun target = run_penumbra("report " + quoted(lib().string()) + " --target dx12");
+  EXPECT_EQ(target.exit_code, 2);
+  EXPECT_NE(target.err.find("allowed:"), std::string::npos) << target.err;
+  // A folder of the user's is never replaced, and nothing is written.
+  const fs::path mine = dir_->path() / "mine";
+  fs::create_directories(mine);
+  std::ofstream(mine / "notes.txt") << "keep";
+  const CliRun foreign = run_penumbra("report " + quoted(lib().string()) + " -o " +
+                                      quoted(mine.string()) + " --variant hard");
+  EXPECT_EQ(foreign.exit_code, 2);
+  EXPECT_NE(foreign.err.find("not a penumbra report"), std::string::npos) << foreign.err;
+  EXPECT_EQ(read_tree(mine), (std::map<std::string, std::string>{{"notes.txt", "keep"}}));
+}
+
+}  // namespace
+}  // namespace penumbra::testing
