@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -43,6 +44,27 @@ std::string read_text(const fs::path& path) {
   return text.str();
 }
 
+// The body rows of the page's table: each <tr>'s attributes and the text
+// of its cells (a cell's markup, for cells holding pictures or links).
+std::vector<std::pair<std::string, std::vector<std::string>>> table_rows(const std::string& page) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> rows;
+  const std::size_t body = page.find("<tbody");
+  for (std::size_t at = page.find("<tr", body); at != std::string::npos;
+       at = page.find("<tr", at + 3)) {
+    const std::size_t open_end = page.find('>', at);
+    const std::size_t close = page.find("</tr>", open_end);
+    if (open_end == std::string::npos || close == std::string::npos) break;
+    std::vector<std::string> cells;
+    for (std::size_t c = page.find("<td", open_end); c != std::string::npos && c < close;
+         c = page.find("<td", c + 3)) {
+      const std::size_t text = page.find('>', c) + 1;
+      cells.push_back(page.substr(text, page.find("</td>", text) - text));
+    }
+    rows.emplace_back(page.substr(at + 3, open_end - at - 3), std::move(cells));
+  }
+  return rows;
+}
+
 class ReportInBrowser : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -57,22 +79,25 @@ class ReportInBrowser : public ::testing::Test {
         << report.out;
     json_ = nlohmann::json::parse(read_text(report_dir() / "report.json"));
     // One run for the DOM and the console, one for the screenshot.
-    const fs::path page = report_dir() / "index.html";
-    const std::string profile = " --user-data-dir=" + quoted((dir_->path() / "profile").string());
-    const std::string url = quoted("file://" + page.string());
-    ASSERT_EQ(
-        std::system(("timeout 300 " + quoted(CHROMIUM_EXECUTABLE) + kChromiumFlags + profile +
-                     " --dump-dom " + url + " > " + quoted((dir_->path() / "dom.html").string()) +
-                     " 2> " + quoted((dir_->path() / "chromium.log").string()))
-                        .c_str()),
-        0)
+    ASSERT_EQ(chromium("--dump-dom " + url(""), "dom.html", "chromium.log"), 0)
         << read_text(dir_->path() / "chromium.log");
     fs::create_directories(PENUMBRA_ARTIFACT_DIR);
-    ASSERT_EQ(std::system(("timeout 300 " + quoted(CHROMIUM_EXECUTABLE) + kChromiumFlags + profile +
-                           " --window-size=1600,2000 --screenshot=" +
-                           quoted(screenshot().string()) + " " + url + " > /dev/null 2>&1")
-                              .c_str()),
+    ASSERT_EQ(chromium("--window-size=1600,2000 --screenshot=" + quoted(screenshot().string()) +
+                           " " + url(""),
+                       "screenshot.out", "screenshot.log"),
               0);
+  }
+
+  // Runs Chromium on `args`, its stdout and stderr into the scratch folder.
+  static int chromium(const std::string& args, const std::string& out, const std::string& log) {
+    return std::system(("timeout 300 " + quoted(CHROMIUM_EXECUTABLE) + kChromiumFlags +
+                        " --user-data-dir=" + quoted((dir_->path() / "profile").string()) + " " +
+                        args + " > " + quoted((dir_->path() / out).string()) + " 2> " +
+                        quoted((dir_->path() / log).string()))
+                           .c_str());
+  }
+  static std::string url(const std::string& fragment) {
+    return quoted("file://" + (report_dir() / "index.html").string() + fragment);
   }
   static void TearDownTestSuite() {
     delete dir_;
@@ -157,6 +182,35 @@ TEST_F(ReportInBrowser, FiguresRankTheTechniquesAsThePapersDo) {
   }
   EXPECT_LT(mae.at("pcss_b16_p16_whitepaper16"), mae.at("pcf_poisson_p16_whitepaper16"));
   EXPECT_LT(mae.at("backprojection"), mae.at("pcss_b16_p16_whitepaper16"));
+}
+
+// The view in the address's fragment: the rows shown are the filter's, in
+// the order of the sorted column.
+TEST_F(ReportInBrowser, SortsAndFiltersAsTheAddressSays) {
+  ASSERT_EQ(chromium("--dump-dom " + url("#sort=exact_penumbra_mae&order=down&technique=pcss&"
+                                         "target=spirv"),
+                     "sorted.html", "sorted.log"),
+            0);
+  const std::string page = read_text(dir_->path() / "sorted.html");
+  std::vector<double> shown;
+  std::size_t hidden = 0;
+  for (const auto& [attributes, cells] : table_rows(page)) {
+    if (attributes.find("hidden") != std::string::npos) {
+      ++hidden;
+      continue;
+    }
+    EXPECT_NE(attributes.find("data-technique=\"pcss\""), std::string::npos) << attributes;
+    EXPECT_NE(attributes.find("data-target=\"spirv\""), std::string::npos) << attributes;
+    ASSERT_GT(cells.size(), 6u);
+    shown.push_back(std::stod(cells[6]));  // exact_penumbra_mae
+  }
+  std::size_t pcss = 0;
+  for (const Variant& variant : default_variants()) {
+    pcss += variant.technique == Technique::pcss ? 1 : 0;
+  }
+  EXPECT_EQ(shown.size(), pcss);
+  EXPECT_EQ(shown.size() + hidden, json_.at("rows").size());
+  EXPECT_TRUE(std::is_sorted(shown.rbegin(), shown.rend())) << "not descending";
 }
 
 TEST_F(ReportInBrowser, ScreenshotIsKept) {
