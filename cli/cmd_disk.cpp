@@ -24,7 +24,8 @@ void add_disk_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--method", options->method,
                   "Generator, or whitepaper for the NVIDIA PCSS whitepaper's 16 points")
       ->capture_default_str()
-      ->check(CLI::IsMember({"sample_elimination", "best_candidate", kWhitepaper}));
+      ->check(CLI::IsMember(
+          {"sample_elimination", "best_candidate", "square_stratified", "square_r2", kWhitepaper}));
   cmd->callback([options, &exit_code] {
     if (options->method == kWhitepaper && options->count != 16) {
       exit_code =

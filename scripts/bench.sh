@@ -8,13 +8,16 @@
 #   scripts/bench.sh build [ARGS]     penumbra build's cold, warm and no-op times,
 #                                     memory and index size, against a chain of
 #                                     separate tools (penumbra_bench_build)
+#   scripts/bench.sh accuracy [ARGS]  every variant's error against the exact
+#                                     area light on the accuracy suite, with its
+#                                     texel reads and time (penumbra_bench_accuracy)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
 bench=minmax
-if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build) ]]; then
+if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy) ]]; then
   bench=$1
   shift
 fi

@@ -112,6 +112,20 @@ StageView view(const Stage& stage, int width, int height) {
   return out;
 }
 
+StageView light_view(const Scene& scene, int width, int height) {
+  StageView out{receivers(scene, width, height),
+                std::vector<Surface>(std::size_t(width) * height, Surface::ground),
+                std::vector<Vec3>(std::size_t(width) * height)};
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      const double z = out.receivers.at(i, j, 2);
+      const UV slope = ray_slope(scene.light, out.receivers.at(i, j, 0), out.receivers.at(i, j, 1));
+      out.points[std::size_t(j) * width + i] = {slope.u * z, slope.v * z, z};
+    }
+  }
+  return out;
+}
+
 FloatImage exact_visibility_image(const Scene& scene, const StageView& view) {
   const FloatImage& receivers = view.receivers;
   FloatImage image(receivers.width, receivers.height, 1);

@@ -1,4 +1,4 @@
-#include "figures.hpp"
+#include "penumbra/report/figures.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,10 +7,10 @@
 #include <map>
 #include <optional>
 
-#include "figures.hpp"
 #include "html_page.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/reference/stage.hpp"
+#include "penumbra/report/figures.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "png_file.hpp"
 #include "shading.hpp"

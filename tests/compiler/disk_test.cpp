@@ -65,7 +65,8 @@ TEST(Disk, UnknownMethodListsTheMethods) {
   ASSERT_FALSE(disk.ok());
   EXPECT_EQ(disk.error().kind, Error::Kind::bad_input);
   EXPECT_EQ(disk.error().to_string(),
-            "unknown disk method 'lloyd'; allowed methods: best_candidate, sample_elimination");
+            "unknown disk method 'lloyd'; allowed methods: best_candidate, sample_elimination, "
+            "square_stratified, square_r2");
 }
 
 TEST(Disk, EveryCountGivesDistinctPointsInTheUnitDisk) {
@@ -105,6 +106,77 @@ TEST(Disk, NormalizedMinDistanceDividesByTheHexagonalBound) {
   const double bound = std::sqrt(2.0 * std::numbers::pi / (std::sqrt(3.0) * 2.0));
   EXPECT_NEAR(normalized_min_distance(two), 2.0 / bound, 1e-12);
   EXPECT_NEAR(normalized_min_distance(two), 1.48503, 1e-5);
+}
+
+constexpr const char* kSquareMethods[] = {"square_stratified", "square_r2"};
+
+TEST(SquareSet, EveryCountGivesDistinctPointsInTheSquare) {
+  for (const char* method : kSquareMethods) {
+    EXPECT_EQ(sample_shape(method), SampleShape::square);
+    for (int count = 1; count <= kMaxSamples; ++count) {
+      const Disk set = generate(count, 1, method);
+      ASSERT_EQ(set.points.size(), static_cast<std::size_t>(count)) << method;
+      for (std::size_t i = 0; i < set.points.size(); ++i) {
+        EXPECT_LE(std::abs(set.points[i][0]), 1.0f) << method << " count " << count;
+        EXPECT_LE(std::abs(set.points[i][1]), 1.0f) << method << " count " << count;
+        for (std::size_t j = 0; j < i; ++j) EXPECT_NE(set.points[i], set.points[j]) << method;
+      }
+    }
+  }
+  EXPECT_EQ(sample_shape("sample_elimination"), SampleShape::disk);
+}
+
+// square_stratified: rows = floor(sqrt(N)) bands, the first N mod rows with
+// one cell more, each band as tall as its cells' share: one point per cell.
+TEST(SquareSet, StratifiedPutsOnePointInEachCellOfEqualArea) {
+  for (int count : {1, 2, 7, 16, 25, 32, 64, 127}) {
+    const Disk set = generate(count, 3, "square_stratified");
+    const int rows = static_cast<int>(std::floor(std::sqrt(double(count))));
+    std::size_t next = 0;
+    double bottom = 0.0;
+    for (int r = 0; r < rows; ++r) {
+      const int cells = count / rows + (r < count % rows ? 1 : 0);
+      const double height = double(cells) / count;
+      for (int c = 0; c < cells; ++c, ++next) {
+        const double x = (set.points[next][0] + 1.0) / 2, y = (set.points[next][1] + 1.0) / 2;
+        // float32 rounding may put a point on its cell's edge.
+        EXPECT_GE(x, double(c) / cells - 1e-7) << count;
+        EXPECT_LE(x, double(c + 1) / cells + 1e-7) << count;
+        EXPECT_GE(y, bottom - 1e-7) << count;
+        EXPECT_LE(y, bottom + height + 1e-7) << count;
+      }
+      bottom += height;
+    }
+  }
+}
+
+// square_r2: consecutive points step by (1/g, 1/g^2) in the unit square,
+// g the plastic number, wrapped.
+TEST(SquareSet, R2StepsByThePlasticNumber) {
+  const Disk set = generate(64, 5, "square_r2");
+  constexpr double kG = 1.32471795724474602596;
+  for (std::size_t i = 1; i < set.points.size(); ++i) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double step = axis == 0 ? 1.0 / kG : 1.0 / (kG * kG);
+      const double d =
+          (set.points[i][axis] - set.points[i - 1][axis]) / 2.0;  // in unit-square units
+      EXPECT_NEAR(d - std::floor(d), step, 1e-6) << i << " axis " << axis;
+    }
+  }
+}
+
+// Pinned: the default manifest's square family; a change here changes its shaders.
+TEST(SquareSet, DefaultSquareIsPinned) {
+  const Disk set = generate(16, 1, "square_stratified");
+  EXPECT_EQ(bits(set.points[0][0]), 0xbf6edd21u);  // -0.933061659
+  EXPECT_EQ(bits(set.points[0][1]), 0xbf6e8a37u);  // -0.931796491
+  EXPECT_NEAR(set.normalized_min_distance, 0.29, 0.005);
+}
+
+TEST(SquareSet, NormalizedMinDistanceUsesTheSquaresArea) {
+  const Point2 two[] = {{-1.0f, 0.0f}, {1.0f, 0.0f}};
+  const double bound = std::sqrt(2.0 * 4.0 / (std::sqrt(3.0) * 2.0));
+  EXPECT_NEAR(normalized_min_distance(two, SampleShape::square), 2.0 / bound, 1e-12);
 }
 
 TEST(Disk, Whitepaper16IsTheWhitepapersSet) {

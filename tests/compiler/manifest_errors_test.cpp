@@ -168,7 +168,7 @@ TEST(ManifestErrors, UndeclaredDisk) {
 TEST(ManifestErrors, DiskDeclarations) {
   expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"p": {"method": "lloyd"}}})"),
                    "perms.json: /disks/p/method: unknown disk method 'lloyd'; allowed methods: "
-                   "best_candidate, sample_elimination");
+                   "best_candidate, sample_elimination, square_stratified, square_r2");
   expect_bad_input(manifest_error(R"({"schema": 1, "disks": {"p": {"seed": -1}}})"),
                    "perms.json: /disks/p/seed: expected an integer in 0..18446744073709551615, "
                    "got -1");

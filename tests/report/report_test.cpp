@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "figures.hpp"
 #include "html_page.hpp"
+#include "penumbra/report/figures.hpp"
 #include "shading.hpp"
 
 namespace penumbra::report {

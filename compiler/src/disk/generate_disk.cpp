@@ -11,11 +11,19 @@ namespace {
 
 constexpr std::string_view kBestCandidate = "best_candidate";
 constexpr std::string_view kSampleElimination = "sample_elimination";
+constexpr std::string_view kSquareStratified = "square_stratified";
+constexpr std::string_view kSquareR2 = "square_r2";
 
 }  // namespace
 
 std::string allowed_disk_methods() {
-  return std::string(kBestCandidate) + ", " + std::string(kSampleElimination);
+  return std::string(kBestCandidate) + ", " + std::string(kSampleElimination) + ", " +
+         std::string(kSquareStratified) + ", " + std::string(kSquareR2);
+}
+
+SampleShape sample_shape(std::string_view method) {
+  return method == kSquareStratified || method == kSquareR2 ? SampleShape::square
+                                                            : SampleShape::disk;
 }
 
 Status check_sample_count(int count) {
@@ -26,7 +34,10 @@ Status check_sample_count(int count) {
 }
 
 Status check_disk_method(std::string_view method) {
-  if (method == kBestCandidate || method == kSampleElimination) return {};
+  if (method == kBestCandidate || method == kSampleElimination || method == kSquareStratified ||
+      method == kSquareR2) {
+    return {};
+  }
   return make_error(Error::Kind::bad_input, "",
                     "unknown disk method '" + std::string(method) +
                         "'; allowed methods: " + allowed_disk_methods());
@@ -40,14 +51,20 @@ Result<Disk> generate_disk(const DiskOptions& options) {
   disk.name = options.method;
   disk.method = options.method;
   disk.seed = options.seed;
-  disk.points = options.method == kBestCandidate
-                    ? disk_detail::best_candidate(options.count, sampler)
-                    : disk_detail::sample_elimination(options.count, sampler);
-  disk.normalized_min_distance = normalized_min_distance(disk.points);
+  if (options.method == kBestCandidate) {
+    disk.points = disk_detail::best_candidate(options.count, sampler);
+  } else if (options.method == kSquareStratified) {
+    disk.points = disk_detail::square_stratified(options.count, sampler);
+  } else if (options.method == kSquareR2) {
+    disk.points = disk_detail::square_r2(options.count, sampler);
+  } else {
+    disk.points = disk_detail::sample_elimination(options.count, sampler);
+  }
+  disk.normalized_min_distance = normalized_min_distance(disk.points, sample_shape(options.method));
   return disk;
 }
 
-double normalized_min_distance(std::span<const Point2> points) {
+double normalized_min_distance(std::span<const Point2> points, SampleShape shape) {
   if (points.size() < 2) return 1.0;
   double nearest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -55,8 +72,11 @@ double normalized_min_distance(std::span<const Point2> points) {
       nearest = std::min(nearest, disk_detail::squared_distance(points[i], points[j]));
     }
   }
+  const double bound = disk_detail::hexagonal_distance_bound(static_cast<int>(points.size()));
+  // The bound scales with the square root of the area: 4 for the square, pi
+  // for the disk.
   return std::sqrt(nearest) /
-         disk_detail::hexagonal_distance_bound(static_cast<int>(points.size()));
+         (shape == SampleShape::square ? bound * std::sqrt(4.0 / std::numbers::pi) : bound);
 }
 
 namespace disk_detail {

@@ -18,10 +18,9 @@ class UnitDiskSampler {
 
   // A float32 point whose distance from the origin is at most 1.
   Point2 next();
-
- private:
   double next_unit();  // uniform in [0, 1), a multiple of 2^-53
 
+ private:
   std::mt19937_64 engine_;
 };
 
@@ -37,5 +36,14 @@ std::vector<Point2> best_candidate(int count, UnitDiskSampler& sampler);
 
 // Yuksel 2015 weighted sample elimination from 5 * count candidates.
 std::vector<Point2> sample_elimination(int count, UnitDiskSampler& sampler);
+
+// The square [-1, 1]^2 in `count` cells of equal area, one jittered point in
+// each: rows of floor(sqrt(count)) bands, each band as tall as its share of
+// the cells (square_sets.cpp).
+std::vector<Point2> square_stratified(int count, UnitDiskSampler& sampler);
+
+// Roberts' R2 low-discrepancy sequence in [-1, 1]^2, shifted by a random
+// offset from `sampler` (square_sets.cpp).
+std::vector<Point2> square_r2(int count, UnitDiskSampler& sampler);
 
 }  // namespace penumbra::disk_detail

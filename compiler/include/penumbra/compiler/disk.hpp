@@ -1,5 +1,6 @@
-// Poisson disks: the whitepaper's 16-point set and the project's deterministic
-// generators. See docs/disks.md.
+// Sample sets: the whitepaper's 16-point Poisson disk, the project's
+// deterministic disk generators, and square sets that match a square
+// light's shape. See docs/disks.md.
 #pragma once
 
 #include <cstdint>
@@ -14,14 +15,21 @@
 namespace penumbra {
 
 struct DiskOptions {
-  int count = 16;                             // number of points, 1..kMaxSamples
-  std::uint64_t seed = 1;                     // std::mt19937_64 seed; same seed, same disk
-  std::string method = "sample_elimination";  // "best_candidate" or "sample_elimination"
+  int count = 16;          // number of points, 1..kMaxSamples
+  std::uint64_t seed = 1;  // std::mt19937_64 seed; same seed, same set
+  // "best_candidate" or "sample_elimination" (disks), "square_stratified" or
+  // "square_r2" (squares)
+  std::string method = "sample_elimination";
 };
 
-// Generates a disk: bit-identical on every platform for the same options.
-// Points lie in the unit disk, are float32 values and come in generation order.
-// The disk's name is its method's name (a manifest renames it to its family).
+// Where a method's points lie: the unit disk or the square [-1, 1]^2.
+enum class SampleShape { disk, square };
+SampleShape sample_shape(std::string_view method);
+
+// Generates a set: bit-identical on every platform for the same options.
+// Points lie in the method's shape, are float32 values and come in
+// generation order. The set's name is its method's name (a manifest renames
+// it to its family).
 Result<Disk> generate_disk(const DiskOptions& options);
 
 // The NVIDIA PCSS whitepaper's 16 points, point for point (name
@@ -30,8 +38,10 @@ Result<Disk> generate_disk(const DiskOptions& options);
 Disk whitepaper16();
 
 // Minimum pairwise distance divided by the hexagonal-packing bound for
-// N points in the unit disk, sqrt(2 pi / (sqrt(3) N)); 1.0 for fewer than 2.
-double normalized_min_distance(std::span<const Point2> points);
+// N points in the shape's area A, sqrt(2 A / (sqrt(3) N)) (A = pi for the
+// unit disk, 4 for the square); 1.0 for fewer than 2.
+double normalized_min_distance(std::span<const Point2> points,
+                               SampleShape shape = SampleShape::disk);
 
 // {"name", "method", "seed", "count", "normalized_min_distance", "points"};
 // points are [x, y] pairs that read back into float with the same bits.
@@ -45,7 +55,8 @@ nlohmann::json disk_info_json(const Disk& disk);
 // nlohmann::json::exception on a malformed point.
 Disk disk_from_json(const nlohmann::json& points, const nlohmann::json& info);
 
-// "best_candidate, sample_elimination", for messages and help text.
+// "best_candidate, sample_elimination, square_stratified, square_r2", for
+// messages and help text.
 std::string allowed_disk_methods();
 
 // Errors (kind bad_input, no location) that say what is allowed.

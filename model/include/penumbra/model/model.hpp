@@ -69,7 +69,7 @@ using Point2 = std::array<float, 2>;
 // A Poisson disk exactly as baked into shaders (float32 values).
 struct Disk {
   std::string name;                      // family name from the manifest, e.g. "whitepaper16"
-  std::string method;                    // "whitepaper", "best_candidate", "sample_elimination"
+  std::string method;                    // "whitepaper" or a generate_disk method (docs/disks.md)
   std::uint64_t seed = 0;                // generator seed (0 for whitepaper16)
   std::vector<Point2> points;            // the baked points, in order
   double normalized_min_distance = 0.0;  // min pairwise distance / hexagonal-packing bound

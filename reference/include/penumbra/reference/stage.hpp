@@ -47,6 +47,10 @@ Stage report_stage();
 // The stage as the camera sees it through `width` x `height` pixel centres.
 StageView view(const Stage& stage, int width, int height);
 
+// The receiver plane as the light sees it: reference::receivers(scene,
+// width, height), every pixel a ground point.
+StageView light_view(const Scene& scene, int width, int height);
+
 // exact_visibility() at each pixel's surface point; 1 on the background.
 FloatImage exact_visibility_image(const Scene& scene, const StageView& view);
 
