@@ -8,6 +8,7 @@
 #include <cmath>
 #include <set>
 
+#include "penumbra/reference/accuracy_scenes.hpp"
 #include "penumbra/reference/exact_visibility.hpp"
 
 namespace penumbra::reference {
@@ -162,6 +163,33 @@ TEST(Stage, TruthHasUmbraPenumbraAndLight) {
   EXPECT_GT(umbra, 50);
   EXPECT_GT(penumbra, 300);
   EXPECT_GT(lit, 2000);
+}
+
+// The accuracy suite: names as docs/accuracy.md lists them, everything a
+// shadow can depend on inside the map, and a penumbra to measure.
+TEST(AccuracyScenes, LieInsideTheirMapsAndHavePenumbrae) {
+  std::vector<std::string> names;
+  for (const Scene& scene : accuracy_scenes()) {
+    names.push_back(scene.name);
+    const auto half = [&](double z) {
+      return scene.light.frustum_width * z / (2 * scene.light.near_plane);
+    };
+    for (const Rect& r : scene.occluders) {
+      EXPECT_TRUE(r.x0 > -half(r.z) && r.x1 < half(r.z) && r.y0 > -half(r.z) && r.y1 < half(r.z))
+          << scene.name;
+    }
+    for (const Box& b : scene.boxes) {
+      EXPECT_TRUE(b.x0 > -half(b.z0) && b.x1 < half(b.z0) && b.y0 > -half(b.z0) &&
+                  b.y1 < half(b.z0))
+          << scene.name;
+    }
+    const StageView v = light_view(scene, scene.receivers_width, scene.receivers_height);
+    const FloatImage exact = exact_visibility_image(scene, v);
+    int penumbra = 0;
+    for (float e : exact.data) penumbra += e > 0.0f && e < 1.0f ? 1 : 0;
+    EXPECT_GT(penumbra, 200) << scene.name;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"contact", "overlap", "thin", "large_light"}));
 }
 
 }  // namespace
