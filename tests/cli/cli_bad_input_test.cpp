@@ -48,6 +48,7 @@ class BadInput : public ::testing::Test {
 // 300 copies of one value on each of three axes are one value each: listing
 // stays within a small address space (the product of the copies took GBs).
 TEST_F(BadInput, DuplicatesOnAnAxisAreMergedFirst) {
+  if (!kAddressSpaceCanBeLimited) GTEST_SKIP() << "ulimit -v cannot bound a sanitized binary";
   std::string samples;
   std::string disks;
   for (int i = 0; i < 300; ++i) {
@@ -95,6 +96,7 @@ TEST_F(BadInput, TooManyVariantsAreRefused) {
 
 // Running out of memory names the command and its input, not std::bad_alloc.
 TEST_F(BadInput, OutOfMemoryNamesWhatWasBeingDone) {
+  if (!kAddressSpaceCanBeLimited) GTEST_SKIP() << "ulimit -v cannot bound a sanitized binary";
   // Ten million nested arrays: a small file, a large document.
   const std::size_t depth = 10'000'000;
   const auto file = dir.path() / "deep.json";

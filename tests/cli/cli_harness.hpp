@@ -18,6 +18,19 @@ struct CliRun {
   std::string err;  // stderr
 };
 
+// Whether a memory limit (`ulimit -v`) can bound the binary: not under
+// AddressSanitizer, which reserves terabytes of address space at start.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PENUMBRA_TEST_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(PENUMBRA_TEST_ASAN)
+inline constexpr bool kAddressSpaceCanBeLimited = false;
+#else
+inline constexpr bool kAddressSpaceCanBeLimited = true;
+#endif
+
 // `args` is appended to the binary's path as is (quote paths yourself);
 // `env` ("NAME=value ...") is prepended to the command.
 CliRun run_penumbra(const std::string& args, const std::string& env = "");
