@@ -30,8 +30,8 @@ constexpr int kContactScale = 2;
 struct ContactPanel {
   nlohmann::json row;  // the run's row, for the page's caption
   Picture crop;
-  // Which run stands for its technique: the SPIR-V one on Vulkan before any
-  // other (every target computes the same), then the lowest exact_penumbra_mae.
+  // Which run stands for its technique: SPIR-V on Vulkan before any other
+  // (hlsl_dx9 caps some loops), then the lowest exact_penumbra_mae.
   std::pair<bool, double> rank;
 };
 
