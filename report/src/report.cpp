@@ -3,7 +3,6 @@
 // picture for the contact sheet), so memory does not grow with the library.
 #include "penumbra/report/report.hpp"
 
-#include <fstream>
 #include <map>
 #include <optional>
 
@@ -169,25 +168,7 @@ class ReportWriter {
 }  // namespace
 
 Status check_report_directory(const fs::path& dir) {
-  static constexpr const char* kAllowed =
-      "allowed: a missing or empty directory, or a report that penumbra report wrote";
-  std::error_code ec;
-  const auto status = fs::symlink_status(dir, ec);
-  if (ec || !fs::exists(status)) return {};
-  if (!fs::is_directory(status)) {
-    return make_error(
-        Error::Kind::bad_input, dir.string(),
-        std::string("exists and is not a directory; refusing to replace it; ") + kAllowed);
-  }
-  if (fs::is_empty(dir, ec) && !ec) return {};
-  std::ifstream in(dir / "report.json", std::ios::binary);
-  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (json.is_object() && json.value("generator", "").starts_with("penumbra ")) return {};
-  return make_error(Error::Kind::bad_input, dir.string(),
-                    std::string("is a non-empty directory that is not a penumbra report (no "
-                                "report.json whose \"generator\" is penumbra); refusing to "
-                                "replace it; ") +
-                        kAllowed);
+  return check_replaceable_directory(dir, {"report", "report.json", "penumbra report"});
 }
 
 Status write_report(const Library& library, Engine& engine, const fs::path& dir,

@@ -1,5 +1,6 @@
-// OUT is replaced wholesale, so only a library that build or merge wrote may
-// be: never a user's folder that merely holds a file named index.json.
+// A library or report folder is replaced wholesale, so only one that penumbra
+// wrote may be: never a user's folder that merely holds a file named
+// index.json or report.json.
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,7 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Reads index.json only up to its top-level "generator": that comes early,
+// Reads a marker only up to its top-level "generator": in index.json it comes early,
 // and the variants after it can be megabytes. Any other shape stops it too.
 struct GeneratorReader {
   using json = nlohmann::json;
@@ -43,10 +44,10 @@ struct GeneratorReader {
   }
 };
 
-// What build and merge write: index.json, an object whose "generator" is
-// "penumbra <version>".
-bool is_penumbra_library(const fs::path& dir) {
-  std::ifstream in(dir / "index.json", std::ios::binary);
+// A folder penumbra wrote: its marker is a JSON object whose top-level
+// "generator" is "penumbra <version>".
+bool written_by_penumbra(const fs::path& marker) {
+  std::ifstream in(marker, std::ios::binary);
   if (!in) return false;
   GeneratorReader reader;
   nlohmann::json::sax_parse(in, &reader);
@@ -55,23 +56,26 @@ bool is_penumbra_library(const fs::path& dir) {
 
 }  // namespace
 
-Status check_output_directory(const fs::path& out) {
-  static constexpr const char* kAllowed =
-      "allowed: a missing or empty directory, or a library that penumbra build or merge wrote";
+Status check_replaceable_directory(const fs::path& dir, const OutputKind& kind) {
+  const std::string allowed = "allowed: a missing or empty directory, or a " +
+                              std::string(kind.what) + " that " + std::string(kind.writers) +
+                              " wrote";
   std::error_code ec;
-  const auto status = fs::symlink_status(out, ec);
+  const auto status = fs::symlink_status(dir, ec);
   if (ec || !fs::exists(status)) return {};
   if (!fs::is_directory(status)) {
-    return make_error(
-        Error::Kind::bad_input, out.string(),
-        std::string("exists and is not a directory; refusing to replace it; ") + kAllowed);
+    return make_error(Error::Kind::bad_input, dir.string(),
+                      "exists and is not a directory; refusing to replace it; " + allowed);
   }
-  if (fs::is_empty(out, ec) || ec || is_penumbra_library(out)) return {};
-  return make_error(Error::Kind::bad_input, out.string(),
-                    std::string("is a non-empty directory that is not a penumbra library (no "
-                                "index.json whose \"generator\" is penumbra); refusing to "
-                                "replace it; ") +
-                        kAllowed);
+  if (fs::is_empty(dir, ec) || ec || written_by_penumbra(dir / kind.marker)) return {};
+  return make_error(Error::Kind::bad_input, dir.string(),
+                    "is a non-empty directory that is not a penumbra " + std::string(kind.what) +
+                        " (no " + std::string(kind.marker) +
+                        " whose \"generator\" is penumbra); refusing to replace it; " + allowed);
+}
+
+Status check_output_directory(const fs::path& out) {
+  return check_replaceable_directory(out, {"library", "index.json", "penumbra build or merge"});
 }
 
 }  // namespace penumbra

@@ -64,10 +64,21 @@ struct BuildSummary {
   std::vector<std::string> inputs;
 };
 
-// OK when `out` may be replaced by a library: it is missing, an empty
-// directory, or a library that build or merge wrote (its index.json says
-// "generator": "penumbra ..."); never a user's file or folder. Errors
-// (bad_input) name `out` and say what is allowed.
+// A kind of folder that penumbra replaces whole, for the messages and the
+// file that marks it as penumbra's.
+struct OutputKind {
+  std::string_view what;     // "library": "... is not a penumbra library"
+  std::string_view marker;   // the JSON file whose top-level "generator" is "penumbra ..."
+  std::string_view writers;  // "penumbra build or merge": "a library that ... wrote"
+};
+
+// OK when `dir` may be replaced by a folder of `kind`: it is missing, an
+// empty directory, or one that penumbra wrote (its marker says "generator":
+// "penumbra ..."); never a user's file or folder. Errors (bad_input) name
+// `dir` and say what is allowed.
+Status check_replaceable_directory(const std::filesystem::path& dir, const OutputKind& kind);
+
+// check_replaceable_directory() for a library (index.json, by build or merge).
 Status check_output_directory(const std::filesystem::path& out);
 
 // Compiles everything into a staging directory and swaps it into `out_dir`
