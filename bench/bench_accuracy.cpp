@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <iostream>
 #include <map>
 #include <string>
@@ -95,50 +96,65 @@ void print(const Results& results) {
   }
 }
 
-// docs/accuracy.md's goals, checked on this run: one pcss-family variant
-// at most half the whitepaper's penumbra error on every scene, reading no
-// more than the budget on any; and back-projection's error beside the
-// 0.006 its bitmask form is to reach.
-void print_goals(const Results& results) {
-  std::string best;
-  double best_worst = 0.0;
+// The variant of `techniques` within the read budget on every scene whose
+// worst score over the scenes is least; empty when none is eligible.
+struct Best {
+  std::string name;
+  double worst = 0.0;
+};
+template <typename Score>
+Best best_of(const Results& results, std::initializer_list<Technique> techniques, Score score) {
+  Best best;
   for (const std::string& name : results.variants) {
     double worst = 0.0;
     bool eligible = true;
     for (const auto& [scene, measured] : results.scenes) {
       const Measured& m = measured.at(name);
-      eligible = eligible &&
-                 (m.technique == Technique::pcss || m.technique == Technique::pcss_minmax) &&
+      eligible = eligible && std::ranges::find(techniques, m.technique) != techniques.end() &&
                  m.reads <= measured.at(kReadsBudget).reads;
-      worst = std::max(worst, m.mae / measured.at(kWhitepaper).mae);
+      worst = std::max(worst, score(m, measured));
     }
-    if (eligible && (best.empty() || worst < best_worst)) {
-      best = name;
-      best_worst = worst;
-    }
+    if (eligible && (best.name.empty() || worst < best.worst)) best = {name, worst};
   }
+  return best;
+}
+
+// One goal's verdict and the best variant's score on each scene.
+template <typename Score>
+void print_goal(const Results& results, const Best& best, double goal, const char* unit,
+                Score score) {
+  if (best.name.empty()) {
+    std::cout << "  no variant of it within the read budget\n";
+    return;
+  }
+  std::cout << "  best " << best.name << ": at worst " << format("%.4f", best.worst) << unit << ": "
+            << (best.worst <= goal ? "met" : "not met") << "\n";
+  for (const auto& [scene, measured] : results.scenes) {
+    const double value = score(measured.at(best.name), measured);
+    std::printf("    %-12s %.4f%s%s\n", scene.c_str(), value, unit,
+                value <= goal ? "" : "  (over the goal)");
+  }
+}
+
+// docs/accuracy.md's goals, checked on this run: one pcss-family variant at
+// most half the whitepaper's penumbra error on every scene, and one bitmask
+// back-projection variant at most 0.006, each reading no more than the
+// budget on any scene.
+void print_goals(const Results& results) {
+  const auto ratio = [](const Measured& m, const auto& measured) {
+    return m.mae / measured.at(kWhitepaper).mae;
+  };
+  const auto error = [](const Measured& m, const auto&) { return m.mae; };
   std::cout << "\ngoal: a pcss-family variant at most 0.5x the whitepaper's penumbra error on "
                "every scene, reading no more than "
             << kReadsBudget << " on any\n";
-  if (best.empty()) {
-    std::cout << "  no pcss-family variant within the read budget\n";
-  } else {
-    std::cout << "  best " << best << ": at worst " << format("%.2f", best_worst)
-              << "x the whitepaper's error: " << (best_worst <= 0.5 ? "met" : "not met") << "\n";
-    for (const auto& [scene, measured] : results.scenes) {
-      std::printf("    %-12s %.2fx\n", scene.c_str(),
-                  measured.at(best).mae / measured.at(kWhitepaper).mae);
-    }
-  }
-  if (results.scenes.begin()->second.contains("backprojection")) {
-    double worst = 0.0;
-    for (const auto& [scene, measured] : results.scenes) {
-      worst = std::max(worst, measured.at("backprojection").mae);
-    }
-    std::cout << "goal: bitmask back-projection at most 0.006 on every scene: not built; "
-                 "backprojection reaches "
-              << format("%.4f", worst) << " at worst\n";
-  }
+  print_goal(results, best_of(results, {Technique::pcss, Technique::pcss_minmax}, ratio), 0.5, "x",
+             ratio);
+  std::cout << "goal: a bitmask_backprojection variant at most 0.006 on every scene, reading no "
+               "more than "
+            << kReadsBudget << " on any\n";
+  print_goal(results, best_of(results, {Technique::bitmask_backprojection}, error), 0.006, "",
+             error);
 }
 
 Status run(const std::string& manifest, const std::string& device) {

@@ -39,6 +39,23 @@ std::string allowed_techniques() {
   return out;
 }
 
+SampleShape sample_shape(std::string_view method) {
+  return method == kSquareStratified || method == kSquareR2 ? SampleShape::square
+                                                            : SampleShape::disk;
+}
+
+std::string allowed_light_bits() {
+  std::string out;
+  for (int bits : kAllowedLightBits) out += (out.empty() ? "" : ", ") + std::to_string(bits);
+  return out;
+}
+
+int light_grid_side(int light_bits) {
+  int side = 1;
+  while (side * side < light_bits) ++side;
+  return side;
+}
+
 std::string allowed_targets() {
   std::string out;
   for (Target target : kAllTargets) {
@@ -78,7 +95,8 @@ std::optional<int> walk_step_bound(const Variant& variant, int limit) {
     const int kernel = *variant.keys.kernel;
     own = brute_force ? kernel * kernel : minmax_max_steps(kernel);
   }
-  if (variant.technique == Technique::backprojection) {
+  if (variant.technique == Technique::backprojection ||
+      variant.technique == Technique::bitmask_backprojection) {
     // A walk steps at most twice per visit (a visit, and the rise from the
     // children of a visited node); brute force reads a texel a step.
     const int nodes = variant.keys.max_nodes.value_or(kDefaultMaxNodes);
@@ -101,9 +119,9 @@ std::vector<float> gaussian_weights(int radius) {
   return out;
 }
 
-// Keys are appended in a fixed order (k, b, p, disk, traversal, n, r, depth_aware) and only
-// when set (depth_aware only when true), so the
-// name is total over any VariantKeys and stays stable across runs.
+// Keys are appended in a fixed order (k, b, p, disk, traversal, n, r, depth_aware, bits, rotation,
+// receiver_plane) and only when set (depth_aware only when true), so the name is total over any
+// VariantKeys and stays stable across runs.
 std::string variant_name(Technique technique, const VariantKeys& keys) {
   std::string name(to_string(technique));
   if (keys.kernel) name += "_k" + std::to_string(*keys.kernel);
@@ -114,6 +132,9 @@ std::string variant_name(Technique technique, const VariantKeys& keys) {
   if (keys.max_nodes) name += "_n" + std::to_string(*keys.max_nodes);
   if (keys.blur_radius) name += "_r" + std::to_string(*keys.blur_radius);
   if (keys.depth_aware.value_or(false)) name += "_depth_aware";
+  if (keys.light_bits) name += "_bits" + std::to_string(*keys.light_bits);
+  if (keys.rotation) name += "_" + *keys.rotation;
+  if (keys.receiver_plane.value_or(false)) name += "_receiver_plane";
   return name;
 }
 
@@ -121,7 +142,8 @@ bool variant_less(const Variant& a, const Variant& b) {
   const auto key = [](const Variant& v) {
     const VariantKeys& k = v.keys;
     return std::tie(v.technique, k.kernel, k.blocker_samples, k.pcf_samples, k.disk, k.traversal,
-                    k.max_nodes, k.blur_radius, k.depth_aware);
+                    k.max_nodes, k.blur_radius, k.depth_aware, k.light_bits, k.rotation,
+                    k.receiver_plane);
   };
   return key(a) < key(b);
 }

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 
+#include "penumbra/model/target_traits.hpp"
+
 namespace penumbra {
 namespace {
 
@@ -130,25 +132,32 @@ constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, Pass
                                           PassKind::blur_v, PassKind::composite};
 
 constexpr std::string_view kGridKeys[] = {"kernel"};
-constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk"};
-constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples", "disk"};
+constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk", "rotation", "receiver_plane"};
+constexpr std::string_view kMinmaxPoissonKeys[] = {"pcf_samples", "disk", "rotation"};
+constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples", "disk", "rotation",
+                                          "receiver_plane"};
 constexpr std::string_view kMinmaxPcfKeys[] = {"kernel", "traversal"};
 constexpr std::string_view kBackprojectionKeys[] = {"traversal", "max_nodes"};
 constexpr std::string_view kScreenBlurKeys[] = {"blur_radius", "depth_aware"};
+constexpr std::string_view kBitmaskKeys[] = {"traversal", "max_nodes", "light_bits"};
 constexpr std::string_view kTraversal[] = {"traversal"};
 constexpr std::string_view kDepthAware[] = {"depth_aware"};
+constexpr std::string_view kRotation[] = {"rotation"};
+constexpr std::string_view kRotationAndPlane[] = {"rotation", "receiver_plane"};
 
 // Indexed by Technique.
 constexpr TechniqueDescription kTechniques[] = {
     {Technique::hard, "hard", {}, {}, kSinglePass, false},
     {Technique::pcf_grid, "pcf_grid", kGridKeys, {}, kSinglePass, false},
-    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, {}, kSinglePass, false},
-    {Technique::pcss, "pcss", kPcssKeys, {}, kSinglePass, false},
+    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, kRotationAndPlane, kSinglePass, false},
+    {Technique::pcss, "pcss", kPcssKeys, kRotationAndPlane, kSinglePass, false},
     {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversal, kMinmaxPasses, true},
     {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
      kMinmaxPasses, true},
-    {Technique::pcss_minmax, "pcss_minmax", kPoissonKeys, {}, kMinmaxPasses, true},
+    {Technique::pcss_minmax, "pcss_minmax", kMinmaxPoissonKeys, kRotation, kMinmaxPasses, true},
     {Technique::screen_blur, "screen_blur", kScreenBlurKeys, kDepthAware, kScreenBlurPasses, false},
+    {Technique::bitmask_backprojection, "bitmask_backprojection", kBitmaskKeys, kBackprojectionKeys,
+     kMinmaxPasses, true, true},
 };
 
 // The tables are indexed by their enums: each row's enum must be its index.
@@ -225,6 +234,10 @@ const PassDescription& describe(PassKind pass) {
 
 const TechniqueDescription& describe(Technique technique) {
   return kTechniques[static_cast<std::size_t>(technique)];
+}
+
+bool can_emit(Technique technique, Target target) {
+  return !describe(technique).integer_ops || traits(target).integer_ops;
 }
 
 bool runs_pass(PassKind pass, const Variant& variant) {

@@ -32,7 +32,8 @@ constexpr TargetTraits kTraits[] = {
      .shader_model = 3,
      .disk_textures = true,
      .rolled_sample_loops = true,
-     .walk_step_limit = 224},
+     .walk_step_limit = 224,
+     .integer_ops = false},
 };
 static_assert(std::size(kTraits) == kAllTargets.size());
 

@@ -56,10 +56,21 @@ Scene large_light() {
   return scene;
 }
 
+// A receiver sloping away from the light (dz/dx = 0.3, bias 0.05): the
+// parallel-plane estimate of PCSS assumes a receiver facing the light. (The
+// maps hold the occluders only, so no receiver here shadows itself.)
+Scene slope() {
+  Scene scene = suite_scene("slope");
+  scene.light.bias = 0.05;
+  scene.plane_dzdx = 0.3;
+  scene.occluders = {{-1.2, -1.0, 0.4, 0.6, 11.5}, {0.6, -1.6, 1.8, 1.4, 13.0}};
+  return scene;
+}
+
 }  // namespace
 
 std::vector<Scene> accuracy_scenes() {
-  return {contact(), overlap(), thin(), large_light()};
+  return {contact(), overlap(), thin(), large_light(), slope()};
 }
 
 }  // namespace penumbra::reference

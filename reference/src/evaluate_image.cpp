@@ -1,4 +1,5 @@
 // Whole-image evaluation, with the input checks a CLI user's files need.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -6,10 +7,39 @@
 #include <utility>
 #include <vector>
 
+#include "penumbra/reference/receiver_plane.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "technique_table.hpp"
 
 namespace penumbra::reference {
+namespace {
+
+// A receiver_plane variant's receiver under every depth slope a GPU may
+// derive for pixel (i, j): the first candidate's result, ambiguous where
+// the candidates' results differ by more than `tol`.
+template <typename Evaluate>
+Sample with_depth_slope(Evaluate evaluate_at, const Query& query, const FloatImage& receivers,
+                        int i, int j, double tol) {
+  Sample first;
+  double lo = 0.0, hi = 0.0;
+  bool ambiguous = false;
+  bool any = false;
+  for (const auto& [dz_du, dz_dv] : depth_slope_candidates(receivers, i, j)) {
+    Query q = query;
+    q.dz_du = dz_du;
+    q.dz_dv = dz_dv;
+    const Sample s = evaluate_at(q);
+    if (!any) first = s;
+    lo = any ? std::min(lo, s.visibility) : s.visibility;
+    hi = any ? std::max(hi, s.visibility) : s.visibility;
+    ambiguous = ambiguous || s.ambiguous;
+    any = true;
+  }
+  first.ambiguous = ambiguous || hi - lo > tol;
+  return first;
+}
+
+}  // namespace
 
 Status check_variant(const Variant& variant) {
   return detail::reference_for(variant.technique).check(variant);
@@ -35,13 +65,19 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
   // Built once for the image, and only for a technique whose reference reads it.
   std::optional<MinMaxMip> mip;
   if (reference_reads_mip(variant.technique)) mip.emplace(map);
+  const bool plane = variant.keys.receiver_plane.value_or(false);
+  const double tol = tolerance(variant.technique, precision);
   ReferenceImage result{FloatImage(receivers.width, receivers.height, 1),
                         FloatImage(receivers.width, receivers.height, 1)};
   for (int j = 0; j < receivers.height; ++j) {
     for (int i = 0; i < receivers.width; ++i) {
-      const Query query{receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2)};
-      const Sample sample = mip ? evaluate(variant, map, *mip, light, query, precision, limits)
-                                : evaluate(variant, map, light, query, precision, limits);
+      const Query query{receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2), i, j};
+      const auto evaluate_at = [&](const Query& q) {
+        return mip ? evaluate(variant, map, *mip, light, q, precision, limits)
+                   : evaluate(variant, map, light, q, precision, limits);
+      };
+      const Sample sample =
+          plane ? with_depth_slope(evaluate_at, query, receivers, i, j, tol) : evaluate_at(query);
       result.visibility.at(i, j) = float(sample.visibility);
       result.ambiguous.at(i, j) = sample.ambiguous ? 1.0f : 0.0f;
     }

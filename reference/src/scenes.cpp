@@ -24,9 +24,9 @@ Scene steps() {
 }
 
 // A receiver tilted in x and y (z ~ 16.3 to 17.8), two occluders whose
-// footprints overlap (the nearer one wins in the map), and one that leaves
-// the map across a corner. Its map is neither square nor a power of two, so
-// the min-max mip's partial nodes at the right and top edges are exercised.
+// footprints overlap (the nearer one wins in the map), one that leaves the
+// map across a corner, and one that crosses the receiver. Its map is neither square nor a power of
+// two, so the min-max mip's partial nodes at the right and top edges are exercised.
 Scene tilted_overlap() {
   Scene scene;
   scene.name = "tilted_overlap";
@@ -36,6 +36,10 @@ Scene tilted_overlap() {
       {-3.5, 0.8, -1.0, 2.2, 10.5},  // u ~ [-0.34, 0.26], v ~ [0.69, 1.03]: a corner
       {1.0, -2.5, 2.5, -1.0, 15.0},  // u, v ~ [0.67, 0.92] x [0.08, 0.33]
       {-0.6, 1.8, 0.6, 2.3, 14.0},   // a thin bar: u, v ~ [0.39, 0.61] x [0.83, 0.92]
+      // Crossing the receiver (z = 17 + 0.12 x + 0.08 y) along x ~ 2.2 to
+      // 2.6: near the crossing only a receiver-plane depth bias tells the
+      // filter's samples in front of the receiver from those behind it.
+      {2.0, 0.4, 2.8, 1.0, 17.34},  // u, v ~ [0.79, 0.91] x [0.56, 0.62]
   };
   scene.plane_z0 = 17.0;
   scene.plane_dzdx = 0.12;

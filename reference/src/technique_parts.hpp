@@ -2,12 +2,15 @@
 // technique, and the point and PCF steps several of them share.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
 #include "penumbra/reference/light.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/sample_rotation.hpp"
+#include "penumbra/reference/sampling.hpp"
 #include "penumbra/reference/shadow_map.hpp"
 #include "penumbra/reference/techniques.hpp"
 
@@ -51,6 +54,25 @@ Sample backprojection_capped(const ShadowMapView& map, const MinMaxMip& mip,
                              const LightParams& light, const Query& q, const TexelRect& window,
                              const VariantKeys& keys, int steps);
 
+// What a back-projection walk takes as occluders: texels whose float depth
+// is below the biased reference and in front of the receiver.
+inline float occluder_limit(const LightParams& light, const Query& q) {
+  return std::min(float_reference(q.z, light.bias), float(q.z));
+}
+
+// Whether an edge of backprojection_window() lies so close to a texel
+// boundary that the shader's float32 floor may fall on the other side.
+bool window_edges_close(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
+                        const Query& q);
+
+// bitmask_backprojection: the shader's walk (backprojection_walk.hpp) sets
+// the bits of the light samples each patch covers; 1 - set / N, ambiguous
+// where a sample centre lies too close to a patch's edge to call and no
+// other patch covers it, or where a close decision met a truncated walk.
+Sample bitmask_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
+                              const LightParams& light, const Query& q, const VariantKeys& keys,
+                              int steps);
+
 // screen_blur's factor: the mean of 9 point_compare()s at (u + i / W,
 // v + j / H), i, j in -1..1, ambiguous when any of them is.
 Sample screen_blur_factor(const ShadowMapView& map, const Query& q, double z_ref,
@@ -67,5 +89,7 @@ Status check_kernel(const Variant& variant, int max_kernel, bool odd);
 Status check_traversal(const Variant& variant);
 Status check_max_nodes(const Variant& variant);
 Status check_blur(const Variant& variant);
+Status check_light_bits(const Variant& variant);
+Status check_rotation(const Variant& variant);
 
 }  // namespace penumbra::reference::detail

@@ -38,7 +38,14 @@ Status needs_nothing(const Variant&) {
 }
 
 Status needs_pcf_disk(const Variant& v) {
+  PENUMBRA_TRY(check_rotation(v));
   return check_disk(v, v.pcf_disk, "pcf", v.keys.pcf_samples, "pcf_samples");
+}
+
+// A sample with `ambiguous` also set where a placed point was.
+Sample with_seam(Sample sample, bool seam) {
+  sample.ambiguous = sample.ambiguous || seam;
+  return sample;
 }
 
 // Indexed by Technique.
@@ -56,9 +63,11 @@ constexpr TechniqueReference kReferences[] = {
      bilinear_tolerance},
     {Technique::pcf_poisson, false, needs_pcf_disk,
      [](const ReceiverInputs& in) {
-       return Sample{poisson_pcf(in.map, in.query, in.z_ref, in.variant.pcf_disk.value().points,
+       bool seam = false;
+       const Disk pcf = placed_disk(in.variant.pcf_disk.value(), in.variant.keys, in.query, seam);
+       return Sample{poisson_pcf(in.map, in.query, in.z_ref, pcf.points,
                                  in.light.filter_radius(in.map.width())),
-                     false};
+                     seam};
      },
      bilinear_tolerance},
     {Technique::pcss, false,
@@ -68,8 +77,12 @@ constexpr TechniqueReference kReferences[] = {
        return needs_pcf_disk(v);
      },
      [](const ReceiverInputs& in) {
-       return pcss(in.map, in.light, in.query, in.z_ref, in.variant.blocker_disk.value(),
-                   in.variant.pcf_disk.value(), in.precision);
+       bool seam = false;
+       const VariantKeys& keys = in.variant.keys;
+       const Disk blocker = placed_disk(in.variant.blocker_disk.value(), keys, in.query, seam);
+       const Disk pcf = placed_disk(in.variant.pcf_disk.value(), keys, in.query, seam);
+       return with_seam(pcss(in.map, in.light, in.query, in.z_ref, blocker, pcf, in.precision),
+                        seam);
      },
      bilinear_tolerance},
     // Its reference counts texel by texel, or walks the mip where a cap stops the walk.
@@ -102,8 +115,9 @@ constexpr TechniqueReference kReferences[] = {
      [](const SamplingPrecision&) { return 1e-4; }},
     {Technique::pcss_minmax, true, needs_pcf_disk,
      [](const ReceiverInputs& in) {
-       return pcss_minmax(in.map, *in.mip, in.light, in.query, in.variant.pcf_disk.value(),
-                          in.precision);
+       bool seam = false;
+       const Disk pcf = placed_disk(in.variant.pcf_disk.value(), in.variant.keys, in.query, seam);
+       return with_seam(pcss_minmax(in.map, *in.mip, in.light, in.query, pcf, in.precision), seam);
      },
      bilinear_tolerance},
     // The factor: a mean of 9 point samples, n / 9 for an integer n, as exact
@@ -115,6 +129,21 @@ constexpr TechniqueReference kReferences[] = {
        return screen_blur_factor(in.map, in.query, in.z_ref, in.precision);
      },
      point_tolerance},
+    {Technique::bitmask_backprojection, true,
+     [](const Variant& v) -> Status {
+       PENUMBRA_TRY(check_light_bits(v));
+       PENUMBRA_TRY(check_max_nodes(v));
+       return check_traversal(v);
+     },
+     [](const ReceiverInputs& in) {
+       if (!(in.light.light_world_size > 0.0)) {
+         return point_compare(in.map, in.query.u, in.query.v, in.z_ref, in.precision);
+       }
+       return bitmask_backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
+                                     *walk_step_bound(in.variant, in.limits.walk_steps));
+     },
+     // Whole bits over a power-of-two N: exact, undecided bits aside.
+     [](const SamplingPrecision&) { return 0.0; }},
 };
 
 constexpr bool rows_in_enum_order() {

@@ -45,18 +45,25 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   // near plane, seen from the receiver (similar triangles).
   const double light_size_uv = light.light_size_uv();
   const double search_width = light_size_uv * (q.z - light.near_plane) / q.z;
-  // What one blocker sample contributes: its depth when it occludes.
-  auto blocker_at = [&](Texel t) -> std::optional<double> {
-    const double depth = map.depth(t.i, t.j);
-    if (lit(z_ref, depth)) return std::nullopt;
-    return depth;
+  // What one blocker sample contributes against reference `z`: its depth
+  // when it occludes.
+  auto blocker_against = [&](double z) {
+    return [&map, z](Texel t) -> std::optional<double> {
+      const double depth = map.depth(t.i, t.j);
+      if (lit(z, depth)) return std::nullopt;
+      return depth;
+    };
   };
   double blocker_sum = 0.0;
   int blockers = 0;
   bool ambiguous = false;
   for (const Point2& d : blocker_disk.points) {
-    const TexelCandidates texels = candidate_texels(
-        map, q.u + d[0] * search_width, q.v + d[1] * search_width, precision.point_window());
+    const double du = d[0] * search_width;
+    const double dv = d[1] * search_width;
+    // Along the receiver's plane where the variant has receiver_plane.
+    const auto blocker_at = blocker_against(z_ref + q.dz_du * du + q.dz_dv * dv);
+    const TexelCandidates texels =
+        candidate_texels(map, q.u + du, q.v + dv, precision.point_window());
     ambiguous = ambiguous || varies(texels, blocker_at);
     if (const auto depth = blocker_at(texels.texels[0])) {
       blocker_sum += *depth;

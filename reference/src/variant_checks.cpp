@@ -1,5 +1,6 @@
 // The checks of a variant's parts that check_variant() runs per technique
 // (technique_table.cpp): what a variant read from index.json must carry.
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -82,6 +83,24 @@ Status check_max_nodes(const Variant& variant) {
   if (max_nodes && (*max_nodes < 1 || *max_nodes > kMaxMaxNodes)) {
     return bad_variant(variant, "max_nodes is " + std::to_string(*max_nodes) +
                                     " but must be from 1 to " + std::to_string(kMaxMaxNodes));
+  }
+  return {};
+}
+
+Status check_light_bits(const Variant& variant) {
+  const auto& bits = variant.keys.light_bits;
+  if (!bits || std::ranges::find(kAllowedLightBits, *bits) == kAllowedLightBits.end()) {
+    return bad_variant(variant,
+                       "bitmask_backprojection needs light_bits, one of " + allowed_light_bits());
+  }
+  return {};
+}
+
+Status check_rotation(const Variant& variant) {
+  const auto& rotation = variant.keys.rotation;
+  if (rotation && *rotation != kIgnRotation) {
+    return bad_variant(variant, "rotation is \"" + *rotation + "\" but must be \"" +
+                                    std::string(kIgnRotation) + "\"");
   }
   return {};
 }

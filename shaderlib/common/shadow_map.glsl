@@ -16,6 +16,32 @@ layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_CMP) uniform sampler2DShadow shad
 // query pass zeroes it first.
 float penumbra_texel_reads;
 
+#if PENUMBRA_RECEIVER_PLANE
+// The `receiver_plane` key (receiver-plane depth bias, Schuler 2006): the
+// receiver's depth slope (dz/du, dz/dv), set by the query pass, moves each
+// sample's reference along the receiver's plane, so a sloped receiver does
+// not shadow itself across a wide filter.
+vec2 penumbra_depth_slope;
+
+// Slopes at or beyond this (z per unit of uv) are taken as no plane.
+#define PENUMBRA_MAX_DEPTH_SLOPE 1000000.0
+
+// (dz/du, dz/dv) from the screen derivatives of (u, v, z): the inverse
+// Jacobian of (u, v) times (dz/dx, dz/dy); (0, 0) where that is singular,
+// not finite (`!(<)` takes NaN) or too steep.
+vec2 receiver_depth_slope(vec3 dx, vec3 dy) {
+  float det = dx.x * dy.y - dy.x * dx.y;
+  vec2 slope = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+  bool planar = abs(slope.x) < PENUMBRA_MAX_DEPTH_SLOPE && abs(slope.y) < PENUMBRA_MAX_DEPTH_SLOPE;
+  return planar ? slope : vec2(0.0);
+}
+
+// z_r moved along the receiver's plane to a sample at uv offset `offset`.
+#define PENUMBRA_PLANE_Z(z, offset) ((z) + dot(penumbra_depth_slope, offset))
+#else
+#define PENUMBRA_PLANE_Z(z, offset) (z)
+#endif
+
 // Linear light-view z of the texel nearest to uv (point sampling).
 float shadow_depth_point(vec2 uv) {
   penumbra_texel_reads += 1.0;

@@ -14,6 +14,12 @@ layout(location = 0) out vec4 visibility;
 void main() {
   penumbra_texel_reads = 0.0;
   vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
-  float visible = receiver_visibility(query);
+#if PENUMBRA_RECEIVER_PLANE
+  penumbra_depth_slope = receiver_depth_slope(dFdx(query), dFdy(query));
+#endif
+  // The receiver's pixel, counted as the receivers image counts it on every
+  // API (gl_FragCoord's rows run the other way on OpenGL, and Direct3D 9's
+  // VPOS is not what a translator of its bytecode reads).
+  float visible = receiver_visibility(query, floor(screen_uv * params.screen_size.xy));
   visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }

@@ -11,10 +11,11 @@ void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, floa
   float blockerSum = 0.0;
   numBlockers = 0.0;
   PENUMBRA_SAMPLE_LOOP for (int i = 0; i < BLOCKER_SEARCH_NUM_SAMPLES; ++i) {
-    float shadowMapDepth = shadow_depth_point(uv + BLOCKER_DISK_POINT(i) * searchWidth);
+    vec2 offset = BLOCKER_DISK_POINT(i) * searchWidth;
+    float shadowMapDepth = shadow_depth_point(uv + offset);
     // Selects, not a branch: an `if` in this loop's body makes Direct3D
     // compilers' unrolling grow with each sample (vkd3d: minutes at 25).
-    bool blocks = shadowMapDepth < zReceiver - DEPTH_BIAS;
+    bool blocks = shadowMapDepth < PENUMBRA_PLANE_Z(zReceiver, offset) - DEPTH_BIAS;
     blockerSum += blocks ? shadowMapDepth : 0.0;
     numBlockers += blocks ? 1.0 : 0.0;
   }

@@ -14,7 +14,7 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV) {
   float sum = 0.0;
   PENUMBRA_SAMPLE_LOOP for (int i = 0; i < PCF_NUM_SAMPLES; ++i) {
     vec2 offset = PCF_DISK_POINT(i) * filterRadiusUV;
-    sum += shadow_compare_bilinear(uv + offset, zReceiver);
+    sum += shadow_compare_bilinear(uv + offset, PENUMBRA_PLANE_Z(zReceiver, offset));
   }
   return sum / float(PCF_NUM_SAMPLES);
 }

@@ -17,6 +17,8 @@
 #include "techniques/pcss_minmax.glsl"
 #elif defined(PENUMBRA_TECHNIQUE_SCREEN_BLUR)
 #include "techniques/screen_blur.glsl"
+#elif defined(PENUMBRA_TECHNIQUE_BITMASK_BACKPROJECTION)
+#include "techniques/bitmask_backprojection.glsl"
 #else
 #error "no PENUMBRA_TECHNIQUE_* defined"
 #endif
@@ -27,7 +29,12 @@
 
 // The technique's visibility for any receiver (docs/robustness.md): one at
 // or behind the light is lit, as is a NaN depth (`!(>)` holds for it).
-float receiver_visibility(vec3 query) {
+// `pixel` (integer column and row of the receiver) places the samples of a
+// variant with the `rotation` key.
+float receiver_visibility(vec3 query, vec2 pixel) {
+#if PENUMBRA_ROTATION_IGN
+  penumbra_begin_pixel(pixel);
+#endif
   if (!(query.z > 0.0)) return 1.0;
   return shadow_visibility(vec3(query.xy, min(query.z, PENUMBRA_MAX_RECEIVER_DEPTH)));
 }

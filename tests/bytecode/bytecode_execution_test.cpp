@@ -5,9 +5,12 @@
 // failing on bytecode or reflection that is not the variant's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "default_library.hpp"
 #include "hlsl_compiler.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
@@ -61,7 +64,10 @@ TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
   ASSERT_TRUE(built) << built.error().to_string();
   auto runs = bytecode_runs((*built)->library(), GetParam());
   ASSERT_TRUE(runs) << runs.error().to_string();
-  ASSERT_EQ(runs->size(), bytecode_targets().size());
+  const Technique technique = find_default_variant(GetParam())->technique;
+  ASSERT_EQ(runs->size(), std::ranges::count_if(bytecode_targets(), [&](Target target) {
+              return can_emit(technique, target);
+            }));
   for (const TargetRun& run : *runs) {
     const std::string label(to_string(run.target));
     ASSERT_TRUE(run.executed) << label << ": " << run.not_executed;

@@ -56,14 +56,14 @@ TEST(ManifestErrors, UnknownKeyInASet) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
                    "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
                    "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, "
-                   "blur_radius, depth_aware, target");
+                   "blur_radius, depth_aware, light_bits, rotation, receiver_plane, target");
 }
 
 TEST(ManifestErrors, UnknownTechnique) {
   expect_bad_input(manifest_error(with_set(R"({"technique": ["pcss", "vsm"]})")),
                    "perms.json: /sets/1/technique/1: unknown technique 'vsm'; allowed "
                    "techniques: hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, "
-                   "pcss_minmax, screen_blur");
+                   "pcss_minmax, screen_blur, bitmask_backprojection");
 }
 
 TEST(ManifestErrors, UnknownTarget) {
@@ -136,6 +136,47 @@ TEST(ManifestErrors, MaxNodesOutOfRange) {
       "perms.json: /sets/1/max_nodes: max_nodes 1048577" + allowed);
 }
 
+TEST(ManifestErrors, LightBitsAreASquareGrid) {
+  expect_bad_input(
+      manifest_error(with_set(
+          R"({"technique": "bitmask_backprojection", "light_bits": [64, 100], "target": "spirv"})")),
+      "perms.json: /sets/1/light_bits/1: light_bits 100 is not allowed; allowed 16, 64, 256, 1024 "
+      "(a square grid of light samples)");
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "bitmask_backprojection", "target": "spirv"})")),
+      "perms.json: /sets/1: technique bitmask_backprojection needs key 'light_bits'; "
+      "bitmask_backprojection uses traversal (optional), max_nodes (optional), light_bits");
+}
+
+// Shader Model 3 has no integer bit operations: the set is refused where the
+// target comes from, never silently narrowed.
+TEST(ManifestErrors, BitmaskIsRefusedForDirect3D9) {
+  const std::string refused =
+      "technique bitmask_backprojection cannot be emitted for hlsl_dx9 (Shader Model 3 has no "
+      "integer bit operations); allowed targets: spirv, glsl450, glsl330, essl300, hlsl_dx11, "
+      "hlsl_dx10";
+  expect_bad_input(manifest_error(with_set(R"({"technique": "bitmask_backprojection",
+                                              "light_bits": 64,
+                                              "target": ["spirv", "hlsl_dx9"]})")),
+                   "perms.json: /sets/1/target: " + refused);
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "bitmask_backprojection", "light_bits": 64})")),
+      "perms.json: /sets/1: " + refused +
+          " (this set takes the top-level targets; give it a 'target' list)");
+}
+
+TEST(ManifestErrors, RotationIsIgnWhereSamplesAreBaked) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": "pcss", "blocker_samples": 16,
+                                              "pcf_samples": 16, "disk": "poisson",
+                                              "rotation": ["ign", "random"]})")),
+                   "perms.json: /sets/1/rotation/1: unknown rotation 'random'; allowed rotations: "
+                   "ign (leave the key out for the same samples at every pixel)");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": 3,
+                                              "rotation": "ign"})")),
+                   "perms.json: /sets/1/rotation: key 'rotation' is used by none of this set's "
+                   "techniques");
+}
+
 TEST(ManifestErrors, TraversalAndMaxNodesOnlyWhereUsed) {
   expect_bad_input(
       manifest_error(
@@ -186,11 +227,11 @@ TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "pcss", "pcf_samples": 16, "disk": "poisson"})")),
       "perms.json: /sets/1: technique pcss needs key 'blocker_samples'; pcss uses "
-      "blocker_samples, pcf_samples, disk");
+      "blocker_samples, pcf_samples, disk, rotation (optional), receiver_plane (optional)");
   expect_bad_input(manifest_error(with_set(R"({"kernel": 3})")),
                    "perms.json: /sets/1: missing key 'technique'; allowed techniques: hard, "
                    "pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
-                   "screen_blur");
+                   "screen_blur, bitmask_backprojection");
 }
 
 TEST(ManifestErrors, KeyNoTechniqueUses) {
@@ -211,7 +252,7 @@ TEST(ManifestErrors, SetsAndExclusions) {
       manifest_error(R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{}]})"),
       "perms.json: /exclude/0: an exclusion needs at least one key; allowed keys: technique, "
       "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, blur_radius, "
-      "depth_aware, target");
+      "depth_aware, light_bits, rotation, receiver_plane, target");
   expect_bad_input(
       manifest_error(
           R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 0}]})"),

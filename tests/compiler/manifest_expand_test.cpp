@@ -6,6 +6,7 @@
 
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra {
 namespace {
@@ -49,12 +50,16 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "pcf_grid_k5",
                                   "pcf_grid_k7",
                                   "pcf_poisson_p16_poisson",
+                                  "pcf_poisson_p16_poisson_receiver_plane",
+                                  "pcf_poisson_p16_poisson_ign",
                                   "pcf_poisson_p16_square",
                                   "pcf_poisson_p16_whitepaper16",
                                   "pcf_poisson_p25_poisson",
                                   "pcf_poisson_p32_poisson",
                                   "pcf_poisson_p64_poisson",
                                   "pcss_b16_p16_poisson",
+                                  "pcss_b16_p16_poisson_receiver_plane",
+                                  "pcss_b16_p16_poisson_ign",
                                   "pcss_b16_p16_square",
                                   "pcss_b16_p16_whitepaper16",
                                   "pcss_b16_p25_poisson",
@@ -69,6 +74,8 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "pcss_b25_p32_square",
                                   "pcss_b25_p64_poisson",
                                   "pcss_b25_p64_square",
+                                  "pcss_b25_p64_square_receiver_plane",
+                                  "pcss_b25_p64_square_ign",
                                   "pcss_b32_p16_poisson",
                                   "pcss_b32_p25_poisson",
                                   "pcss_b32_p32_poisson",
@@ -80,13 +87,23 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "backprojection",
                                   "pcss_minmax_p16_poisson",
                                   "pcss_minmax_p32_poisson",
+                                  "pcss_minmax_p32_poisson_ign",
                                   "pcss_minmax_p32_square",
+                                  "pcss_minmax_p32_square_ign",
                                   "screen_blur_r2",
                                   "screen_blur_r4",
                                   "screen_blur_r4_depth_aware",
                                   "screen_blur_r8",
+                                  "bitmask_backprojection_bits64",
+                                  "bitmask_backprojection_bits256",
+                                  "bitmask_backprojection_bits1024",
                               }));
-  for (const Variant& variant : *variants) EXPECT_EQ(variant.targets, kEveryTarget) << variant.name;
+  // Every target, but hlsl_dx9 has no integer bit operations for the bitmask.
+  for (const Variant& variant : *variants) {
+    std::vector<Target> expected = kEveryTarget;
+    std::erase_if(expected, [&](Target target) { return !can_emit(variant.technique, target); });
+    EXPECT_EQ(variant.targets, expected) << variant.name;
+  }
 
   const Variant* whitepaper = find(*variants, "pcss_b16_p16_whitepaper16");
   ASSERT_TRUE(whitepaper && whitepaper->blocker_disk && whitepaper->pcf_disk);
@@ -315,6 +332,22 @@ TEST(ManifestExpand, ExclusionsMatchBlurRadiusAndDepthAware) {
   EXPECT_EQ(variants[1].targets, no_dx9);
   EXPECT_EQ(variants[2].targets, no_dx9);
   EXPECT_EQ(variants[3].targets, kEveryTarget);
+}
+
+// receiver_plane is a flag like depth_aware: false leaves the key unset, and
+// an exclusion's false matches the variants without it.
+TEST(ManifestExpand, ReceiverPlaneFalseIsTheDefault) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": "pcf_poisson", "pcf_samples": 16, "disk": "whitepaper16",
+              "receiver_plane": [false, true], "rotation": "ign"}],
+    "exclude": [{"receiver_plane": false, "target": "hlsl_dx9"}]})");
+  ASSERT_EQ(names(variants),
+            (std::vector<std::string>{"pcf_poisson_p16_whitepaper16_ign",
+                                      "pcf_poisson_p16_whitepaper16_ign_receiver_plane"}));
+  EXPECT_FALSE(variants[0].keys.receiver_plane.has_value());
+  EXPECT_EQ(variants[0].targets.size(), kEveryTarget.size() - 1);
+  EXPECT_EQ(variants[1].keys.receiver_plane, true);
+  EXPECT_EQ(variants[1].targets, kEveryTarget);
 }
 
 TEST(ManifestExpand, LoadedManifestNamesItsFile) {

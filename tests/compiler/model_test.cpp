@@ -46,7 +46,8 @@ TEST(Model, Direct3D11BindsAsDirect3D10) {
 TEST(Model, AllowedListsNameEveryValueInOrder) {
   EXPECT_EQ(allowed_techniques(),
             "hard, pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
-            "screen_blur");
+            "screen_blur, bitmask_backprojection");
+  EXPECT_EQ(allowed_light_bits(), "16, 64, 256, 1024");
   EXPECT_EQ(allowed_targets(), "spirv, glsl450, glsl330, essl300, hlsl_dx11, hlsl_dx10, hlsl_dx9");
 }
 
@@ -85,6 +86,20 @@ TEST(Model, VariantNames) {
                            k.depth_aware = true;
                          })),
             "screen_blur_r16_depth_aware");
+  EXPECT_EQ(variant_name(Technique::bitmask_backprojection, keys([](VariantKeys& k) {
+                           k.max_nodes = 4096;
+                           k.light_bits = 256;
+                         })),
+            "bitmask_backprojection_n4096_bits256");
+  EXPECT_EQ(variant_name(Technique::pcss, keys([](VariantKeys& k) {
+                           k.blocker_samples = 16;
+                           k.pcf_samples = 16;
+                           k.disk = "poisson";
+                           k.rotation = "ign";
+                           k.receiver_plane = true;
+                         })),
+            "pcss_b16_p16_poisson_ign_receiver_plane");
+  EXPECT_EQ(light_grid_side(1024), 32);
 }
 
 TEST(Model, GaussianWeightsAreNormalizedSymmetricAndPeaked) {

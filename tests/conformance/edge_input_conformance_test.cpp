@@ -10,6 +10,7 @@
 
 #include "default_library.hpp"
 #include "edge_inputs.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/eval.hpp"
@@ -36,7 +37,11 @@ FloatImage edge_receivers(const reference::LightParams& light) {
 class EdgeInputsOnDevice : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EdgeInputsOnDevice, EveryTargetMatchesTheReference) {
-  const std::vector<Target> targets = {Target::spirv, Target::hlsl_dx9};
+  // hlsl_dx9 where the technique has a form for it (docs/targets.md).
+  std::vector<Target> targets = {Target::spirv, Target::hlsl_dx9};
+  const Variant* wanted = find_default_variant(GetParam());
+  ASSERT_NE(wanted, nullptr);
+  std::erase_if(targets, [&](Target target) { return !can_emit(wanted->technique, target); });
   auto built = build_default_variant(GetParam(), targets);
   ASSERT_TRUE(built) << built.error().to_string();
   const LibraryVariant* variant = (*built)->library().find(GetParam());

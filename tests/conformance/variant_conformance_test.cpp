@@ -4,9 +4,11 @@
 // the project's scenes and checked against the CPU reference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "default_library.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "penumbra/vulkan/engine.hpp"
@@ -33,9 +35,10 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
   ASSERT_EQ(report->variants.size(), 1u);
   const Technique technique = report->variants[0].technique;
   // Every target's own minmax passes build a mip equal to the CPU mip on every scene.
+  const auto emitted = static_cast<std::size_t>(std::ranges::count_if(
+      kAllTargets, [&](Target target) { return can_emit(technique, target); }));
   if (uses_minmax_mip(technique)) {
-    EXPECT_EQ(report->minmax_checks.size(),
-              kAllTargets.size() * reference::builtin_scenes().size());
+    EXPECT_EQ(report->minmax_checks.size(), emitted * reference::builtin_scenes().size());
   } else {
     EXPECT_TRUE(report->minmax_checks.empty());
   }
@@ -94,7 +97,7 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
       }
     }
   }
-  EXPECT_EQ(on_vulkan.size(), kAllTargets.size()) << "every target's own shaders must execute";
+  EXPECT_EQ(on_vulkan.size(), emitted) << "every target's own shaders must execute";
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, VariantConformance, ::testing::ValuesIn(default_variant_names()),

@@ -12,18 +12,6 @@
 namespace penumbra::reference {
 namespace {
 
-// n = 1, Fw = 2, L = 0.5: a texel's slopes are (u - 0.5) * 2, and from a
-// receiver at z_r = 2 straight below the light a patch at z = 1 projects with
-// g(1) = 1 * 2 / (2 - 1) = 2, so texels 3..4 of 8 (slopes -0.25..0.25) cover
-// the light's [-0.5, 0.5] exactly.
-LightParams unit_light() {
-  LightParams light;
-  light.near_plane = 1.0;
-  light.frustum_width = 2.0;
-  light.light_world_size = 0.5;
-  return light;
-}
-
 FloatImage patch_map(int x0, int y0, int x1, int y1, float depth) {
   FloatImage map(8, 8, 1, 10.0f);
   for (int j = y0; j <= y1; ++j) {
@@ -32,7 +20,8 @@ FloatImage patch_map(int x0, int y0, int x1, int y1, float depth) {
   return map;
 }
 
-double visibility(const FloatImage& map, const Query& q, const LightParams& light = unit_light()) {
+double visibility(const FloatImage& map, const Query& q,
+                  const LightParams& light = testing::unit_backprojection_light()) {
   return evaluate(testing::backprojection_variant(), ShadowMapView(map), light, q).visibility;
 }
 
@@ -63,7 +52,7 @@ TEST(Backprojection, OverlappingProjectionsClampAtZero) {
 
 TEST(Backprojection, OnlyOccludingTexelsInFrontOfTheReceiverCount) {
   // The bias keeps z = 1.95 from occluding z_r = 2.
-  LightParams light = unit_light();
+  LightParams light = testing::unit_backprojection_light();
   light.bias = 0.1;
   EXPECT_EQ(visibility(patch_map(3, 3, 4, 4, 1.95f), {0.5, 0.5, 2.0}, light), 1.0);
   // A negative bias makes a texel behind the receiver "occlude"; it cannot
@@ -84,7 +73,7 @@ TEST(Backprojection, OnlyOccludingTexelsInFrontOfTheReceiverCount) {
 class BackprojectionWindow : public ::testing::TestWithParam<double> {};
 
 TEST_P(BackprojectionWindow, CullsOnlyTexelsThatMissTheLight) {
-  LightParams light = unit_light();
+  LightParams light = testing::unit_backprojection_light();
   light.light_world_size = GetParam();
   std::mt19937 generator(17);
   std::uniform_real_distribution<double> uv(-0.1, 1.1), depth(2.0, 3.0);
@@ -125,7 +114,7 @@ INSTANTIATE_TEST_SUITE_P(LightSizes, BackprojectionWindow, ::testing::Values(0.0
 // reaches gives the texel-by-texel sum; a small one stops it short, so
 // less area is summed and more light seen.
 TEST(BackprojectionCapped, WalkEqualsTheSumUnlessTheCapStopsIt) {
-  LightParams light = unit_light();
+  LightParams light = testing::unit_backprojection_light();
   light.light_world_size = 0.3;
   std::mt19937 generator(5);
   std::uniform_real_distribution<double> uv(0.0, 1.0), depth(2.0, 3.0);

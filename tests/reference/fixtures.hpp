@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "penumbra/model/model.hpp"
+#include "penumbra/reference/light.hpp"
 #include "penumbra/support/image.hpp"
 
 namespace penumbra::testing {
@@ -50,6 +51,30 @@ inline Variant minmax_pcf_variant(int kernel) {
 
 inline Variant backprojection_variant() {
   return Variant{"backprojection", Technique::backprojection, {}, {}, {}, {}, {}};
+}
+
+inline Variant bitmask_backprojection_variant(int light_bits) {
+  VariantKeys keys;
+  keys.light_bits = light_bits;
+  return Variant{variant_name(Technique::bitmask_backprojection, keys),
+                 Technique::bitmask_backprojection,
+                 keys,
+                 {},
+                 {},
+                 {},
+                 {}};
+}
+
+// The back-projection tests' light: n = 1, Fw = 2, L = 0.5, so a texel's
+// slopes are (u - 0.5) * 2, and from a receiver at z_r = 2 straight below the
+// light a patch at z = 1 projects with g(1) = 1 * 2 / (2 - 1) = 2: texels
+// 3..4 of 8 (slopes -0.25..0.25) cover the light's [-0.5, 0.5] exactly.
+inline reference::LightParams unit_backprojection_light() {
+  reference::LightParams light;
+  light.near_plane = 1.0;
+  light.frustum_width = 2.0;
+  light.light_world_size = 0.5;
+  return light;
 }
 
 inline Variant pcss_minmax_variant(std::vector<Point2> pcf) {

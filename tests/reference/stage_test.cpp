@@ -189,7 +189,8 @@ TEST(AccuracyScenes, LieInsideTheirMapsAndHavePenumbrae) {
     for (float e : exact.data) penumbra += e > 0.0f && e < 1.0f ? 1 : 0;
     EXPECT_GT(penumbra, 200) << scene.name;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"contact", "overlap", "thin", "large_light"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"contact", "overlap", "thin", "large_light", "slope"}));
 }
 
 }  // namespace

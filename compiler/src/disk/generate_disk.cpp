@@ -11,19 +11,12 @@ namespace {
 
 constexpr std::string_view kBestCandidate = "best_candidate";
 constexpr std::string_view kSampleElimination = "sample_elimination";
-constexpr std::string_view kSquareStratified = "square_stratified";
-constexpr std::string_view kSquareR2 = "square_r2";
 
 }  // namespace
 
 std::string allowed_disk_methods() {
   return std::string(kBestCandidate) + ", " + std::string(kSampleElimination) + ", " +
          std::string(kSquareStratified) + ", " + std::string(kSquareR2);
-}
-
-SampleShape sample_shape(std::string_view method) {
-  return method == kSquareStratified || method == kSquareR2 ? SampleShape::square
-                                                            : SampleShape::disk;
 }
 
 Status check_sample_count(int count) {

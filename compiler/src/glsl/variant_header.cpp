@@ -78,10 +78,22 @@ std::string variant_header(const Variant* variant, Target target) {
     if (steps) out += "#define MINMAX_MAX_STEPS " + std::to_string(*steps) + "\n";
     out += "#define MINMAX_PCF_INV_AREA " + glsl_float(minmax_pcf_inv_area(*keys.kernel)) + "\n";
   }
-  if (variant->technique == Technique::backprojection) {
+  if (variant->technique == Technique::backprojection ||
+      variant->technique == Technique::bitmask_backprojection) {
     out += "#define BACKPROJECTION_MAX_NODES " +
            std::to_string(keys.max_nodes.value_or(kDefaultMaxNodes)) + "\n";
     out += "#define BACKPROJECTION_MAX_STEPS " + std::to_string(*steps) + "\n";
+  }
+  if (keys.rotation == kIgnRotation) {
+    out += "#define PENUMBRA_ROTATION_IGN 1\n";
+    // Square sets shift on the square's torus instead of turning.
+    if (variant->pcf_disk && sample_shape(variant->pcf_disk->method) == SampleShape::square) {
+      out += "#define PENUMBRA_SQUARE_SAMPLES 1\n";
+    }
+  }
+  if (keys.receiver_plane.value_or(false)) out += "#define PENUMBRA_RECEIVER_PLANE 1\n";
+  if (keys.light_bits) {
+    out += "#define LIGHT_GRID " + std::to_string(light_grid_side(*keys.light_bits)) + "\n";
   }
   if (keys.blur_radius) {
     out += "#define BLUR_RADIUS " + std::to_string(*keys.blur_radius) + "\n";

@@ -74,7 +74,8 @@ Result<int> count_at(const std::filesystem::path& file, const json& value, const
 int max_count(std::string_view key) {
   if (key == "max_nodes") return kMaxMaxNodes;
   if (key == "blur_radius") return kMaxBlurRadius;
-  return kMaxSamples;  // kernel, blocker_samples, pcf_samples
+  if (key == "light_bits") return kAllowedLightBits.back();  // a square count: check_variant()
+  return kMaxSamples;                                        // kernel, blocker_samples, pcf_samples
 }
 
 // The variant's keys, typed and range-checked like a manifest's.

@@ -69,6 +69,15 @@ Result<std::string> read_traversal(const JsonNode& node) {
                     " (leave the key out for the min-max traversal)");
 }
 
+Result<std::string> read_rotation(const JsonNode& node) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (*name == kIgnRotation) return name;
+  return node.error("unknown rotation '" + shorten(*name) +
+                    "'; allowed rotations: " + std::string(kIgnRotation) +
+                    " (leave the key out for the same samples at every pixel)");
+}
+
 Result<int> read_max_nodes(const JsonNode& node) {
   Result<int> count = node.integer();
   if (!count) return count.error();
@@ -85,7 +94,16 @@ Result<int> read_blur_radius(const JsonNode& node) {
                     std::to_string(kMaxBlurRadius));
 }
 
-Result<bool> read_depth_aware(const JsonNode& node) {
+Result<int> read_light_bits(const JsonNode& node) {
+  Result<int> bits = node.integer();
+  if (!bits) return bits.error();
+  if (std::ranges::find(kAllowedLightBits, *bits) != kAllowedLightBits.end()) return *bits;
+  return node.error("light_bits " + std::to_string(*bits) + " is not allowed; allowed " +
+                    allowed_light_bits() + " (a square grid of light samples)");
+}
+
+// depth_aware and receiver_plane: JSON booleans.
+Result<bool> read_flag(const JsonNode& node) {
   return node.boolean();
 }
 
@@ -135,6 +153,12 @@ bool is_given(const AxisValues& values, Axis axis) {
       return !values.blur_radius.empty();
     case Axis::depth_aware:
       return !values.depth_aware.empty();
+    case Axis::light_bits:
+      return !values.light_bits.empty();
+    case Axis::rotation:
+      return !values.rotation.empty();
+    case Axis::receiver_plane:
+      return !values.receiver_plane.empty();
   }
   return false;
 }
@@ -174,7 +198,16 @@ Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& 
     PENUMBRA_TRY(read_list(node.member("blur_radius"), read_blur_radius, out.blur_radius));
   }
   if (node.has("depth_aware")) {
-    PENUMBRA_TRY(read_list(node.member("depth_aware"), read_depth_aware, out.depth_aware));
+    PENUMBRA_TRY(read_list(node.member("depth_aware"), read_flag, out.depth_aware));
+  }
+  if (node.has("light_bits")) {
+    PENUMBRA_TRY(read_list(node.member("light_bits"), read_light_bits, out.light_bits));
+  }
+  if (node.has("rotation")) {
+    PENUMBRA_TRY(read_list(node.member("rotation"), read_rotation, out.rotation));
+  }
+  if (node.has("receiver_plane")) {
+    PENUMBRA_TRY(read_list(node.member("receiver_plane"), read_flag, out.receiver_plane));
   }
   if (node.has("target")) PENUMBRA_TRY(read_targets(node.member("target"), out.target));
   return {};

@@ -14,9 +14,10 @@
 namespace penumbra::manifest_detail {
 
 // The keys of a set or an exclusion.
-inline constexpr std::array<std::string_view, 10> kAxisKeys = {
+inline constexpr std::array<std::string_view, 13> kAxisKeys = {
     "technique", "blocker_samples", "pcf_samples", "kernel",      "disk",
-    "traversal", "max_nodes",       "blur_radius", "depth_aware", "target"};
+    "traversal", "max_nodes",       "blur_radius", "depth_aware", "light_bits",
+    "rotation",  "receiver_plane",  "target"};
 
 // The keys a technique may take, in kVariantKeyNames order; every variant has
 // targets.
@@ -28,18 +29,23 @@ enum class Axis {
   traversal,
   max_nodes,
   blur_radius,
-  depth_aware
+  depth_aware,
+  light_bits,
+  rotation,
+  receiver_plane
 };
 inline constexpr std::array kKeyAxes = {Axis::kernel,      Axis::blocker_samples, Axis::pcf_samples,
                                         Axis::disk,        Axis::traversal,       Axis::max_nodes,
-                                        Axis::blur_radius, Axis::depth_aware};
+                                        Axis::blur_radius, Axis::depth_aware,     Axis::light_bits,
+                                        Axis::rotation,    Axis::receiver_plane};
 
 std::string_view axis_name(Axis axis);
 // Whether `technique` takes the key (its TechniqueDescription's keys); it
 // ignores the keys it does not take.
 bool uses(Technique technique, Axis axis);
 // Whether a set may leave the key out for `technique` (its description's
-// optional_keys: traversal, max_nodes and depth_aware have defaults).
+// optional_keys: traversal, max_nodes, depth_aware, rotation and receiver_plane have
+// defaults).
 bool is_optional(Technique technique, Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
 // "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or
@@ -50,7 +56,8 @@ std::string describe_axes(Technique technique);
 // known, sample counts 1..kMaxSamples, kernels 1..kMaxSamples (odd ones only
 // for pcf_grid: check_kernels), disks built in or declared in `disks`,
 // traversal kBruteForceTraversal, max_nodes 1..kMaxMaxNodes, blur_radius
-// 1..kMaxBlurRadius, depth_aware true or false.
+// 1..kMaxBlurRadius, depth_aware true or false, light_bits in kAllowedLightBits,
+// rotation kIgnRotation, receiver_plane true or false.
 Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& disks,
                  AxisValues& out);
 

@@ -18,40 +18,42 @@ namespace {
 using manifest_detail::Axis;
 using manifest_detail::uses;
 
-// The axis's values when the technique uses it, else one empty value, so the
-// product below skips unused axes.
+// Multiplies every keys of `out` by the axis's values when the technique
+// uses the axis and the set gives it (an optional key left out stays unset).
 template <typename T>
-std::vector<std::optional<T>> axis_values(Technique technique, Axis axis,
-                                          const std::vector<T>& values) {
-  if (!uses(technique, axis) || values.empty()) return {std::nullopt};  // empty: optional, unset
-  return {values.begin(), values.end()};
+void multiply(std::vector<VariantKeys>& out, Technique technique, Axis axis,
+              const std::vector<T>& values, std::optional<T> VariantKeys::*member) {
+  if (!uses(technique, axis) || values.empty()) return;
+  std::vector<VariantKeys> product;
+  product.reserve(out.size() * values.size());
+  for (const VariantKeys& keys : out) {
+    for (const T& value : values) {
+      product.push_back(keys);
+      product.back().*member = value;
+    }
+  }
+  out = std::move(product);
 }
 
+// The set's cartesian product for one technique, kernel varying slowest.
+// The flags' false is their default, so the key stays unset.
 std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes) {
-  std::vector<VariantKeys> out;
-  for (const auto& kernel : axis_values(technique, Axis::kernel, axes.kernel)) {
-    for (const auto& blocker :
-         axis_values(technique, Axis::blocker_samples, axes.blocker_samples)) {
-      for (const auto& pcf : axis_values(technique, Axis::pcf_samples, axes.pcf_samples)) {
-        for (const auto& disk : axis_values(technique, Axis::disk, axes.disk)) {
-          for (const auto& traversal : axis_values(technique, Axis::traversal, axes.traversal)) {
-            for (const auto& nodes : axis_values(technique, Axis::max_nodes, axes.max_nodes)) {
-              for (const auto& radius :
-                   axis_values(technique, Axis::blur_radius, axes.blur_radius)) {
-                for (const auto& aware :
-                     axis_values(technique, Axis::depth_aware, axes.depth_aware)) {
-                  // depth_aware false is the default: the key stays unset.
-                  const std::optional<bool> depth_aware =
-                      aware.value_or(false) ? aware : std::nullopt;
-                  out.push_back(
-                      {kernel, blocker, pcf, disk, traversal, nodes, radius, depth_aware});
-                }
-              }
-            }
-          }
-        }
-      }
-    }
+  std::vector<VariantKeys> out(1);
+  multiply(out, technique, Axis::kernel, axes.kernel, &VariantKeys::kernel);
+  multiply(out, technique, Axis::blocker_samples, axes.blocker_samples,
+           &VariantKeys::blocker_samples);
+  multiply(out, technique, Axis::pcf_samples, axes.pcf_samples, &VariantKeys::pcf_samples);
+  multiply(out, technique, Axis::disk, axes.disk, &VariantKeys::disk);
+  multiply(out, technique, Axis::traversal, axes.traversal, &VariantKeys::traversal);
+  multiply(out, technique, Axis::max_nodes, axes.max_nodes, &VariantKeys::max_nodes);
+  multiply(out, technique, Axis::blur_radius, axes.blur_radius, &VariantKeys::blur_radius);
+  multiply(out, technique, Axis::depth_aware, axes.depth_aware, &VariantKeys::depth_aware);
+  multiply(out, technique, Axis::light_bits, axes.light_bits, &VariantKeys::light_bits);
+  multiply(out, technique, Axis::rotation, axes.rotation, &VariantKeys::rotation);
+  multiply(out, technique, Axis::receiver_plane, axes.receiver_plane, &VariantKeys::receiver_plane);
+  for (VariantKeys& keys : out) {
+    if (!keys.depth_aware.value_or(true)) keys.depth_aware.reset();
+    if (!keys.receiver_plane.value_or(true)) keys.receiver_plane.reset();
   }
   return out;
 }
@@ -93,6 +95,15 @@ std::uint64_t product_size(Technique technique, const AxisValues& axes) {
         break;
       case Axis::depth_aware:
         count = axes.depth_aware.size();
+        break;
+      case Axis::light_bits:
+        count = axes.light_bits.size();
+        break;
+      case Axis::rotation:
+        count = axes.rotation.size();
+        break;
+      case Axis::receiver_plane:
+        count = axes.receiver_plane.size();
         break;
     }
     size = saturating_multiply(size, std::max<std::size_t>(count, 1));
@@ -181,12 +192,13 @@ bool allows(const std::vector<T>& values, const std::optional<T>& value) {
   return values.empty() || (value && contains(values, *value));
 }
 
-// depth_aware is unset for false, so a technique that takes the key matches
-// `false` without it; the others never have it.
-bool allows_depth_aware(const std::vector<bool>& values, const Variant& variant) {
+// A flag (depth_aware, receiver_plane) is unset for false, so a technique
+// that takes the key matches `false` without it; the others never have it.
+bool allows_flag(const std::vector<bool>& values, const Variant& variant, Axis axis,
+                 const std::optional<bool>& flag) {
   if (values.empty()) return true;
-  if (!uses(variant.technique, Axis::depth_aware)) return false;
-  return contains(values, variant.keys.depth_aware.value_or(false));
+  if (!uses(variant.technique, axis)) return false;
+  return contains(values, flag.value_or(false));
 }
 
 bool matches(const AxisValues& match, const Variant& variant) {
@@ -197,7 +209,11 @@ bool matches(const AxisValues& match, const Variant& variant) {
          allows(match.disk, variant.keys.disk) && allows(match.traversal, variant.keys.traversal) &&
          allows(match.max_nodes, variant.keys.max_nodes) &&
          allows(match.blur_radius, variant.keys.blur_radius) &&
-         allows_depth_aware(match.depth_aware, variant);
+         allows_flag(match.depth_aware, variant, Axis::depth_aware, variant.keys.depth_aware) &&
+         allows(match.light_bits, variant.keys.light_bits) &&
+         allows(match.rotation, variant.keys.rotation) &&
+         allows_flag(match.receiver_plane, variant, Axis::receiver_plane,
+                     variant.keys.receiver_plane);
 }
 
 void apply(const Exclusion& exclusion, Variant& variant) {

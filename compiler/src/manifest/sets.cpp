@@ -2,6 +2,7 @@
 
 #include "manifest/axes.hpp"
 #include "manifest/sections.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/text.hpp"
 
 namespace penumbra::manifest_detail {
@@ -32,6 +33,30 @@ Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
   return {};
 }
 
+// A technique whose shader keeps integer bits cannot be emitted for a target
+// without integers (hlsl_dx9): the set is refused, naming where its targets
+// came from, rather than a target silently dropped.
+Status check_set_targets(const JsonNode& node, const AxisValues& axes) {
+  for (Technique technique : axes.technique) {
+    std::string allowed;
+    for (Target target : kAllTargets) {
+      if (can_emit(technique, target)) {
+        allowed += (allowed.empty() ? "" : ", ") + std::string(to_string(target));
+      }
+    }
+    for (Target target : axes.target) {
+      if (can_emit(technique, target)) continue;
+      const std::string what = "technique " + std::string(to_string(technique)) +
+                               " cannot be emitted for " + std::string(to_string(target)) +
+                               " (Shader Model 3 has no integer bit operations); allowed " +
+                               "targets: " + allowed;
+      if (node.has("target")) return node.member("target").error(what);
+      return node.error(what + " (this set takes the top-level targets; give it a 'target' list)");
+    }
+  }
+  return {};
+}
+
 Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
   PENUMBRA_TRY(node.expect_keys(kAxisKeys));
   VariantSet set{.json_path = node.path(), .axes = {}};
@@ -39,6 +64,7 @@ Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
   PENUMBRA_TRY(check_set_keys(node, set.axes));
   PENUMBRA_TRY(check_kernels(node, set.axes));
   if (set.axes.target.empty()) set.axes.target = manifest.targets;
+  PENUMBRA_TRY(check_set_targets(node, set.axes));
   return set;
 }
 

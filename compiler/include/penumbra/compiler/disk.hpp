@@ -22,10 +22,6 @@ struct DiskOptions {
   std::string method = "sample_elimination";
 };
 
-// Where a method's points lie: the unit disk or the square [-1, 1]^2.
-enum class SampleShape { disk, square };
-SampleShape sample_shape(std::string_view method);
-
 // Generates a set: bit-identical on every platform for the same options.
 // Points lie in the method's shape, are float32 values and come in
 // generation order. The set's name is its method's name (a manifest renames

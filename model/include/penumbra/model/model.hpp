@@ -24,13 +24,14 @@ enum class Technique {
   backprojection,
   pcss_minmax,
   screen_blur,
+  bitmask_backprojection,
 };
 enum class Target { spirv, glsl450, glsl330, essl300, hlsl_dx11, hlsl_dx10, hlsl_dx9 };
 
-inline constexpr std::array kAllTechniques = {Technique::hard,        Technique::pcf_grid,
-                                              Technique::pcf_poisson, Technique::pcss,
-                                              Technique::minmax_pcf,  Technique::backprojection,
-                                              Technique::pcss_minmax, Technique::screen_blur};
+inline constexpr std::array kAllTechniques = {
+    Technique::hard,        Technique::pcf_grid,    Technique::pcf_poisson,
+    Technique::pcss,        Technique::minmax_pcf,  Technique::backprojection,
+    Technique::pcss_minmax, Technique::screen_blur, Technique::bitmask_backprojection};
 inline constexpr std::array kAllTargets = {Target::spirv,   Target::glsl450,   Target::glsl330,
                                            Target::essl300, Target::hlsl_dx11, Target::hlsl_dx10,
                                            Target::hlsl_dx9};
@@ -54,6 +55,14 @@ inline constexpr int kMaxSamples = 128;
 // instead of descending the min-max mip (minmax_pcf, backprojection).
 inline constexpr std::string_view kBruteForceTraversal = "brute_force";
 
+// bitmask_backprojection's `light_bits` N: the light is sampled by a
+// sqrt(N) x sqrt(N) grid, one bit per sample, at most 32 bits per row.
+inline constexpr std::array kAllowedLightBits = {16, 64, 256, 1024};
+// "16, 64, 256, 1024" for messages.
+std::string allowed_light_bits();
+// sqrt(N) for an allowed N.
+int light_grid_side(int light_bits);
+
 // backprojection's `max_nodes`: the most nodes one query visits.
 inline constexpr int kDefaultMaxNodes = 16384;  // when the key is unset
 inline constexpr int kMaxMaxNodes = 1048576;
@@ -65,6 +74,20 @@ inline constexpr int kMaxBlurRadius = 32;
 inline constexpr float kBlurDepthTolerance = 0.02f;
 
 using Point2 = std::array<float, 2>;
+
+// The square sample sets' methods; every other method's points lie in the
+// unit disk (docs/disks.md).
+inline constexpr std::string_view kSquareStratified = "square_stratified";
+inline constexpr std::string_view kSquareR2 = "square_r2";
+
+// Where a method's points lie: the unit disk or the square [-1, 1]^2.
+enum class SampleShape { disk, square };
+SampleShape sample_shape(std::string_view method);
+
+// The one value of the `rotation` key: each pixel turns its round disk by
+// interleaved gradient noise, or shifts its square set on the square's torus
+// (pcf_poisson, pcss, pcss_minmax).
+inline constexpr std::string_view kIgnRotation = "ign";
 
 // A Poisson disk exactly as baked into shaders (float32 values).
 struct Disk {
@@ -84,15 +107,18 @@ struct VariantKeys {
   std::optional<int> pcf_samples = std::nullopt;      // pcf_poisson, pcss, pcss_minmax
   std::optional<std::string> disk = std::nullopt;     // disk family: pcf_poisson, pcss, pcss_minmax
   std::optional<std::string> traversal = std::nullopt;  // minmax_pcf, backprojection: "brute_force"
-  std::optional<int> max_nodes = std::nullopt;     // backprojection: work bound; unset = default
+  std::optional<int> max_nodes = std::nullopt;          // (bitmask_)backprojection: work bound
   std::optional<int> blur_radius = std::nullopt;   // screen_blur: taps each side (sigma = R / 2)
   std::optional<bool> depth_aware = std::nullopt;  // screen_blur: true, or unset for false
+  std::optional<int> light_bits = std::nullopt;    // bitmask_backprojection: N light samples
+  std::optional<std::string> rotation = std::nullopt;  // disk techniques: "ign" per pixel
+  std::optional<bool> receiver_plane = std::nullopt;   // pcf_poisson, pcss: true, or unset
 };
 
 // The keys' names, in the one order every listing of keys follows.
-inline constexpr std::array<std::string_view, 8> kVariantKeyNames = {
-    "kernel",    "blocker_samples", "pcf_samples", "disk",
-    "traversal", "max_nodes",       "blur_radius", "depth_aware"};
+inline constexpr std::array<std::string_view, 11> kVariantKeyNames = {
+    "kernel",      "blocker_samples", "pcf_samples", "disk",     "traversal",     "max_nodes",
+    "blur_radius", "depth_aware",     "light_bits",  "rotation", "receiver_plane"};
 
 // Calls f(name, key) for each key in kVariantKeyNames order, set or not; `key`
 // is the std::optional member, const when `keys` is.
@@ -107,6 +133,9 @@ void for_each_key(Keys& keys, F&& f) {
   f(kVariantKeyNames[5], keys.max_nodes);
   f(kVariantKeyNames[6], keys.blur_radius);
   f(kVariantKeyNames[7], keys.depth_aware);
+  f(kVariantKeyNames[8], keys.light_bits);
+  f(kVariantKeyNames[9], keys.rotation);
+  f(kVariantKeyNames[10], keys.receiver_plane);
 }
 
 // minmax_pcf's baked 1 / K^2 (MINMAX_PCF_INV_AREA), rounded to float. The
@@ -149,7 +178,8 @@ struct Variant {
 
 // Builds the stable variant name from technique and keys:
 // hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16,
-// minmax_pcf_k16_brute_force, backprojection_n4096, screen_blur_r4_depth_aware.
+// minmax_pcf_k16_brute_force, backprojection_n4096, screen_blur_r4_depth_aware,
+// bitmask_backprojection_bits256, pcss_b16_p16_poisson_ign_receiver_plane.
 std::string variant_name(Technique technique, const VariantKeys& keys);
 
 // A library's order of variants: technique order, then keys ascending (a

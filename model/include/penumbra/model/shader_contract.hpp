@@ -148,8 +148,8 @@ struct PassDescription {
 const PassDescription& describe(PassKind pass);
 
 // A technique: its name, the keys that select its variants, the passes it
-// runs, in order, and whether it reads the min-max mip. Its CPU reference is
-// reference/'s evaluate().
+// runs, in order, whether it reads the min-max mip and whether its shader needs
+// integer bit operations. Its CPU reference is reference/'s evaluate().
 struct TechniqueDescription {
   Technique technique;
   std::string_view name;                            // in manifests and index.json
@@ -157,9 +157,16 @@ struct TechniqueDescription {
   std::span<const std::string_view> optional_keys;  // keys with a default a manifest may omit
   std::span<const PassKind> passes;
   bool reads_minmax;
+  // Keeps its state in integer bits, so only targets with integer_ops
+  // (target_traits.hpp) can emit it; manifests asking others are refused.
+  bool integer_ops = false;
 };
 
 const TechniqueDescription& describe(Technique technique);
+
+// Whether `technique`'s shaders can be emitted for `target`: all but an
+// integer_ops technique on a target without integers (hlsl_dx9).
+bool can_emit(Technique technique, Target target);
 
 // True when `variant`'s technique runs `pass`.
 bool runs_pass(PassKind pass, const Variant& variant);

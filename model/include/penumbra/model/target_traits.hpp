@@ -39,6 +39,9 @@ struct TargetTraits {
   // within the executed instructions every device runs: hlsl_dx9, for
   // ps_3_0's 65,535. At most 255, one ps_3_0 loop, so that the cap is exact.
   int walk_step_limit = 0;
+  // Has integers and bit operations (false for hlsl_dx9: Shader Model 3
+  // computes in floats only), which bitmask_backprojection needs.
+  bool integer_ops = true;
 };
 
 TargetTraits traits(Target target);

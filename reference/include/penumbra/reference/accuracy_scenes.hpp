@@ -9,7 +9,7 @@
 
 namespace penumbra::reference {
 
-// "contact", "overlap", "thin" and "large_light"; names are unique and
+// "contact", "overlap", "thin", "large_light" and "slope"; names are unique and
 // stable. Every occluder lies inside its map's frustum, so the exact truth
 // depends on nothing a map cannot see. Maps are 512^2, receivers 96^2 over
 // the receiver plane.

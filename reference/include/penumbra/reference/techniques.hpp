@@ -17,11 +17,18 @@ namespace penumbra::reference {
 // float32 products of two depths stay finite (docs/robustness.md).
 inline constexpr double kMaxReceiverDepth = 1152921504606846976.0;
 
-// A receiver: its shadow-map coordinates and linear light-view z.
+// A receiver: its shadow-map coordinates and linear light-view z; the pixel
+// of the receivers image it is (column, row), by which a variant with the
+// `rotation` key places its samples; and its plane's depth slope dz/du,
+// dz/dv, which a `receiver_plane` variant adds to each sample's reference.
 struct Query {
   double u = 0.0;
   double v = 0.0;
   double z = 0.0;
+  int pixel_x = 0;
+  int pixel_y = 0;
+  double dz_du = 0.0;
+  double dz_dv = 0.0;
 };
 
 // What one target's shader is held to where it changes results.

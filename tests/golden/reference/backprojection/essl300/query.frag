@@ -43,6 +43,12 @@ float shadow_compare_point(vec2 uv, float z_receiver)
     return float(shadow_reference(param) <= textureLod(shadow_depth, uv, 0.0).x);
 }
 
+float backprojection_limit(vec3 query)
+{
+    float param = query.z;
+    return min(shadow_reference(param), query.z * params.sampling.z);
+}
+
 vec2 minmax_top_node()
 {
     penumbra_texel_reads += 1.0;
@@ -68,14 +74,23 @@ bool minmax_window_empty(vec4 window)
     return any(greaterThan(window.xy, window.zw));
 }
 
+bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
+{
+    vec3 param = query;
+    limit = backprojection_limit(param);
+    vec2 _847 = minmax_top_node();
+    float map_min = _847.x;
+    vec3 param_1 = query;
+    float param_2 = map_min * params.sampling.w;
+    window = backprojection_window(param_1, param_2);
+    vec4 param_3 = window;
+    bool empty = minmax_window_empty(param_3);
+    return (map_min < limit) && (!empty);
+}
+
 vec2 backprojection_slope(vec2 uv)
 {
     return (uv - vec2(0.5)) * (params.light.y / params.light.z);
-}
-
-float backprojection_whole_light_area()
-{
-    return (4.0 * params.light.x) * params.light.x;
 }
 
 float minmax_level_spanning(vec4 window, float nodes)
@@ -127,8 +142,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _188 = shadow_texel(param);
-        float depth = _188;
+        float _246 = shadow_texel(param);
+        float depth = _246;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -140,8 +155,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _383 = minmax_node(param, param_1);
-    return _383;
+    vec2 _439 = minmax_node(param, param_1);
+    return _439;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -174,23 +189,23 @@ bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receive
     vec3 param_2 = query;
     vec2 param_3 = receiver_slope;
     vec4 rect = backprojection_project(param, param_1, param_2, param_3);
-    bool _575 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _586;
-    if (_575)
+    bool _599 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _610;
+    if (_599)
     {
-        _586 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _610 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _586 = _575;
+        _610 = _599;
     }
-    return _586;
+    return _610;
 }
 
-float backprojection_light_area(vec4 rect)
+float backprojection_add(float area, vec4 rect)
 {
     vec2 size = max(min(rect.zw, vec2(params.light.x)) - max(rect.xy, vec2(-params.light.x)), vec2(0.0));
-    return size.x * size.y;
+    return area + (size.x * size.y);
 }
 
 void minmax_descend(inout MinmaxCursor cursor)
@@ -203,16 +218,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _406;
+    vec2 _462;
     if (root)
     {
-        _406 = cursor.first_root;
+        _462 = cursor.first_root;
     }
     else
     {
-        _406 = floor(cursor.node * 0.5) * 2.0;
+        _462 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _406;
+    vec2 first_sibling = _462;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -242,12 +257,20 @@ void minmax_next(inout MinmaxCursor cursor)
     }
 }
 
-float backprojection_area(vec3 query, vec4 window, float limit)
+float backprojection_whole_light_area()
+{
+    return (4.0 * params.light.x) * params.light.x;
+}
+
+bool backprojection_covered(float area)
+{
+    return area >= backprojection_whole_light_area();
+}
+
+float backprojection_walk(vec3 query, vec4 window, float limit, inout float state)
 {
     vec2 param = query.xy;
     vec2 receiver_slope = backprojection_slope(param);
-    float light_area = backprojection_whole_light_area();
-    float area = 0.0;
     float visits = 0.0;
     vec4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -262,61 +285,62 @@ float backprojection_area(vec3 query, vec4 window, float limit)
                 {
                     visits += 1.0;
                 }
-                bool _699 = !cursor.climbed;
-                bool _710;
-                if (_699)
+                bool _720 = !cursor.climbed;
+                bool _731;
+                if (_720)
                 {
                     MinmaxCursor param_2 = cursor;
                     vec4 param_3 = window;
                     vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _710 = !minmax_window_empty(param_4);
+                    _731 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _710 = _699;
+                    _731 = _720;
                 }
-                if (_710)
+                if (_731)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _716 = minmax_cursor_read(param_5);
-                    vec2 range = _716;
+                    vec2 _737 = minmax_cursor_read(param_5);
+                    vec2 range = _737;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params.sampling.w;
-                    bool _730 = range.x < limit;
-                    bool _742;
-                    if (_730)
+                    bool _751 = range.x < limit;
+                    bool _763;
+                    if (_751)
                     {
                         vec4 param_7 = texels;
                         float param_8 = z_min;
                         vec3 param_9 = query;
                         vec2 param_10 = receiver_slope;
-                        _742 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _763 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _742 = _730;
+                        _763 = _751;
                     }
-                    if (_742)
+                    if (_763)
                     {
-                        bool _748 = range.y < limit;
-                        bool _756;
-                        if (_748)
+                        bool _769 = range.y < limit;
+                        bool _777;
+                        if (_769)
                         {
-                            _756 = range.x == range.y;
+                            _777 = range.x == range.y;
                         }
                         else
                         {
-                            _756 = _748;
+                            _777 = _769;
                         }
-                        if (_756)
+                        if (_777)
                         {
                             vec4 param_11 = texels;
                             float param_12 = z_min;
                             vec3 param_13 = query;
                             vec2 param_14 = receiver_slope;
-                            vec4 param_15 = backprojection_project(param_11, param_12, param_13, param_14);
-                            area += backprojection_light_area(param_15);
+                            float param_15 = state;
+                            vec4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
+                            state = backprojection_add(param_15, param_16);
                         }
                         else
                         {
@@ -326,21 +350,23 @@ float backprojection_area(vec3 query, vec4 window, float limit)
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_16 = cursor;
-                    minmax_descend(param_16);
-                    cursor = param_16;
+                    MinmaxCursor param_17 = cursor;
+                    minmax_descend(param_17);
+                    cursor = param_17;
                 }
                 else
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_next(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_18 = cursor;
+                    minmax_next(param_18);
+                    cursor = param_18;
                 }
-                cursor.done = (cursor.done || (area >= light_area)) || (visits >= 16384.0);
+                float param_19 = state;
+                bool covered = backprojection_covered(param_19);
+                cursor.done = (cursor.done || covered) || (visits >= 16384.0);
             }
         }
     }
-    return area;
+    return state;
 }
 
 float shadow_visibility(vec3 query)
@@ -349,41 +375,37 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _820 = shadow_compare_point(param, param_1);
-        return _820;
+        float _881 = shadow_compare_point(param, param_1);
+        return _881;
     }
-    float param_2 = query.z;
-    float limit = min(shadow_reference(param_2), query.z * params.sampling.z);
-    vec2 _834 = minmax_top_node();
-    float map_min = _834.x;
-    if (!(map_min < limit))
+    vec3 param_2 = query;
+    float param_3;
+    vec4 param_4;
+    bool _889 = backprojection_start(param_2, param_3, param_4);
+    float limit = param_3;
+    vec4 window = param_4;
+    if (!_889)
     {
         return 1.0;
     }
-    vec3 param_3 = query;
-    float param_4 = map_min * params.sampling.w;
-    vec4 window = backprojection_window(param_3, param_4);
-    vec4 param_5 = window;
-    if (minmax_window_empty(param_5))
-    {
-        return 1.0;
-    }
-    vec3 param_6 = query;
-    vec4 param_7 = window;
-    float param_8 = limit;
-    float _864 = backprojection_area(param_6, param_7, param_8);
-    return max(0.0, 1.0 - (_864 / backprojection_whole_light_area()));
+    vec3 param_5 = query;
+    vec4 param_6 = window;
+    float param_7 = limit;
+    float param_8 = 0.0;
+    float _904 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _904;
+    return max(0.0, 1.0 - (area / backprojection_whole_light_area()));
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _888 = shadow_visibility(param);
-    return _888;
+    float _929 = shadow_visibility(param);
+    return _929;
 }
 
 void main()
@@ -391,8 +413,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _902 = receiver_visibility(param);
-    float visible = _902;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _950 = receiver_visibility(param, param_1);
+    float visible = _950;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -53,6 +53,12 @@ float shadow_compare_point(float2 uv, float z_receiver)
     return float(shadow_reference(param) <= shadow_depth.SampleLevel(_shadow_depth_sampler, uv, 0.0f).x);
 }
 
+float backprojection_limit(float3 query)
+{
+    float param = query.z;
+    return min(shadow_reference(param), query.z * params_sampling.z);
+}
+
 float2 minmax_top_node()
 {
     penumbra_texel_reads += 1.0f;
@@ -78,14 +84,23 @@ bool minmax_window_empty(float4 window)
     return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
 }
 
+bool backprojection_start(float3 query, inout float limit, inout float4 window)
+{
+    float3 param = query;
+    limit = backprojection_limit(param);
+    float2 _847 = minmax_top_node();
+    float map_min = _847.x;
+    float3 param_1 = query;
+    float param_2 = map_min * params_sampling.w;
+    window = backprojection_window(param_1, param_2);
+    float4 param_3 = window;
+    bool empty = minmax_window_empty(param_3);
+    return (map_min < limit) && (!empty);
+}
+
 float2 backprojection_slope(float2 uv)
 {
     return (uv - 0.5f.xx) * (params_light.y / params_light.z);
-}
-
-float backprojection_whole_light_area()
-{
-    return (4.0f * params_light.x) * params_light.x;
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -138,8 +153,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _188 = shadow_texel(param);
-        float depth = _188;
+        float _246 = shadow_texel(param);
+        float depth = _246;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -151,8 +166,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _383 = minmax_node(param, param_1);
-    return _383;
+    float2 _439 = minmax_node(param, param_1);
+    return _439;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -185,25 +200,25 @@ bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 r
     float3 param_2 = query;
     float2 param_3 = receiver_slope;
     float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _573 = params_light.x.xx;
-    bool _575 = all(bool2(rect.xy.x <= _573.x, rect.xy.y <= _573.y));
-    bool _586;
-    if (_575)
+    float2 _597 = params_light.x.xx;
+    bool _599 = all(bool2(rect.xy.x <= _597.x, rect.xy.y <= _597.y));
+    bool _610;
+    if (_599)
     {
-        float2 _583 = (-params_light.x).xx;
-        _586 = all(bool2(rect.zw.x >= _583.x, rect.zw.y >= _583.y));
+        float2 _607 = (-params_light.x).xx;
+        _610 = all(bool2(rect.zw.x >= _607.x, rect.zw.y >= _607.y));
     }
     else
     {
-        _586 = _575;
+        _610 = _599;
     }
-    return _586;
+    return _610;
 }
 
-float backprojection_light_area(float4 rect)
+float backprojection_add(float area, float4 rect)
 {
     float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
-    return size.x * size.y;
+    return area + (size.x * size.y);
 }
 
 void minmax_descend(inout MinmaxCursor cursor)
@@ -216,16 +231,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _406;
+    float2 _462;
     if (root)
     {
-        _406 = cursor.first_root;
+        _462 = cursor.first_root;
     }
     else
     {
-        _406 = floor(cursor.node * 0.5f) * 2.0f;
+        _462 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _406;
+    float2 first_sibling = _462;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -255,12 +270,20 @@ void minmax_next(inout MinmaxCursor cursor)
     }
 }
 
-float backprojection_area(float3 query, float4 window, float limit)
+float backprojection_whole_light_area()
+{
+    return (4.0f * params_light.x) * params_light.x;
+}
+
+bool backprojection_covered(float area)
+{
+    return area >= backprojection_whole_light_area();
+}
+
+float backprojection_walk(float3 query, float4 window, float limit, inout float state)
 {
     float2 param = query.xy;
     float2 receiver_slope = backprojection_slope(param);
-    float light_area = backprojection_whole_light_area();
-    float area = 0.0f;
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -278,61 +301,62 @@ float backprojection_area(float3 query, float4 window, float limit)
                 {
                     visits += 1.0f;
                 }
-                bool _699 = !cursor.climbed;
-                bool _710;
-                if (_699)
+                bool _720 = !cursor.climbed;
+                bool _731;
+                if (_720)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _710 = !minmax_window_empty(param_4);
+                    _731 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _710 = _699;
+                    _731 = _720;
                 }
-                if (_710)
+                if (_731)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _716 = minmax_cursor_read(param_5);
-                    float2 range = _716;
+                    float2 _737 = minmax_cursor_read(param_5);
+                    float2 range = _737;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params_sampling.w;
-                    bool _730 = range.x < limit;
-                    bool _742;
-                    if (_730)
+                    bool _751 = range.x < limit;
+                    bool _763;
+                    if (_751)
                     {
                         float4 param_7 = texels;
                         float param_8 = z_min;
                         float3 param_9 = query;
                         float2 param_10 = receiver_slope;
-                        _742 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _763 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _742 = _730;
+                        _763 = _751;
                     }
-                    if (_742)
+                    if (_763)
                     {
-                        bool _748 = range.y < limit;
-                        bool _756;
-                        if (_748)
+                        bool _769 = range.y < limit;
+                        bool _777;
+                        if (_769)
                         {
-                            _756 = range.x == range.y;
+                            _777 = range.x == range.y;
                         }
                         else
                         {
-                            _756 = _748;
+                            _777 = _769;
                         }
-                        if (_756)
+                        if (_777)
                         {
                             float4 param_11 = texels;
                             float param_12 = z_min;
                             float3 param_13 = query;
                             float2 param_14 = receiver_slope;
-                            float4 param_15 = backprojection_project(param_11, param_12, param_13, param_14);
-                            area += backprojection_light_area(param_15);
+                            float param_15 = state;
+                            float4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
+                            state = backprojection_add(param_15, param_16);
                         }
                         else
                         {
@@ -342,21 +366,23 @@ float backprojection_area(float3 query, float4 window, float limit)
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_16 = cursor;
-                    minmax_descend(param_16);
-                    cursor = param_16;
+                    MinmaxCursor param_17 = cursor;
+                    minmax_descend(param_17);
+                    cursor = param_17;
                 }
                 else
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_next(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_18 = cursor;
+                    minmax_next(param_18);
+                    cursor = param_18;
                 }
-                cursor.done = (cursor.done || (area >= light_area)) || (visits >= 16384.0f);
+                float param_19 = state;
+                bool covered = backprojection_covered(param_19);
+                cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
     }
-    return area;
+    return state;
 }
 
 float shadow_visibility(float3 query)
@@ -365,41 +391,37 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _820 = shadow_compare_point(param, param_1);
-        return _820;
+        float _881 = shadow_compare_point(param, param_1);
+        return _881;
     }
-    float param_2 = query.z;
-    float limit = min(shadow_reference(param_2), query.z * params_sampling.z);
-    float2 _834 = minmax_top_node();
-    float map_min = _834.x;
-    if (!(map_min < limit))
+    float3 param_2 = query;
+    float param_3;
+    float4 param_4;
+    bool _889 = backprojection_start(param_2, param_3, param_4);
+    float limit = param_3;
+    float4 window = param_4;
+    if (!_889)
     {
         return 1.0f;
     }
-    float3 param_3 = query;
-    float param_4 = map_min * params_sampling.w;
-    float4 window = backprojection_window(param_3, param_4);
-    float4 param_5 = window;
-    if (minmax_window_empty(param_5))
-    {
-        return 1.0f;
-    }
-    float3 param_6 = query;
-    float4 param_7 = window;
-    float param_8 = limit;
-    float _864 = backprojection_area(param_6, param_7, param_8);
-    return max(0.0f, 1.0f - (_864 / backprojection_whole_light_area()));
+    float3 param_5 = query;
+    float4 param_6 = window;
+    float param_7 = limit;
+    float param_8 = 0.0f;
+    float _904 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _904;
+    return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _888 = shadow_visibility(param);
-    return _888;
+    float _929 = shadow_visibility(param);
+    return _929;
 }
 
 void frag_main()
@@ -407,8 +429,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _902 = receiver_visibility(param);
-    float visible = _902;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _950 = receiver_visibility(param, param_1);
+    float visible = _950;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

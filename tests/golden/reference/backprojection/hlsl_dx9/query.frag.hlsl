@@ -49,6 +49,12 @@ float shadow_compare_point(float2 uv, float z_receiver)
     return float(shadow_reference(param) <= tex2Dlod(shadow_depth, float4(uv, 0.0, 0.0f)).x);
 }
 
+float backprojection_limit(float3 query)
+{
+    float param = query.z;
+    return min(shadow_reference(param), query.z * params_sampling.z);
+}
+
 float2 minmax_top_node()
 {
     penumbra_texel_reads += 1.0f;
@@ -74,14 +80,23 @@ bool minmax_window_empty(float4 window)
     return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
 }
 
+bool backprojection_start(float3 query, inout float limit, inout float4 window)
+{
+    float3 param = query;
+    limit = backprojection_limit(param);
+    float2 _846 = minmax_top_node();
+    float map_min = _846.x;
+    float3 param_1 = query;
+    float param_2 = map_min * params_sampling.w;
+    window = backprojection_window(param_1, param_2);
+    float4 param_3 = window;
+    bool empty = minmax_window_empty(param_3);
+    return (map_min < limit) && (!empty);
+}
+
 float2 backprojection_slope(float2 uv)
 {
     return (uv - 0.5f.xx) * (params_light.y / params_light.z);
-}
-
-float backprojection_whole_light_area()
-{
-    return (4.0f * params_light.x) * params_light.x;
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -134,8 +149,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _188 = shadow_texel(param);
-        float depth = _188;
+        float _246 = shadow_texel(param);
+        float depth = _246;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -147,8 +162,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _383 = minmax_node(param, param_1);
-    return _383;
+    float2 _439 = minmax_node(param, param_1);
+    return _439;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -181,25 +196,25 @@ bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 r
     float3 param_2 = query;
     float2 param_3 = receiver_slope;
     float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _573 = params_light.x.xx;
-    bool _575 = all(bool2(rect.xy.x <= _573.x, rect.xy.y <= _573.y));
-    bool _586;
-    if (_575)
+    float2 _597 = params_light.x.xx;
+    bool _599 = all(bool2(rect.xy.x <= _597.x, rect.xy.y <= _597.y));
+    bool _610;
+    if (_599)
     {
-        float2 _583 = (-params_light.x).xx;
-        _586 = all(bool2(rect.zw.x >= _583.x, rect.zw.y >= _583.y));
+        float2 _607 = (-params_light.x).xx;
+        _610 = all(bool2(rect.zw.x >= _607.x, rect.zw.y >= _607.y));
     }
     else
     {
-        _586 = _575;
+        _610 = _599;
     }
-    return _586;
+    return _610;
 }
 
-float backprojection_light_area(float4 rect)
+float backprojection_add(float area, float4 rect)
 {
     float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
-    return size.x * size.y;
+    return area + (size.x * size.y);
 }
 
 void minmax_descend(inout MinmaxCursor cursor)
@@ -212,16 +227,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _406;
+    float2 _462;
     if (root)
     {
-        _406 = cursor.first_root;
+        _462 = cursor.first_root;
     }
     else
     {
-        _406 = floor(cursor.node * 0.5f) * 2.0f;
+        _462 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _406;
+    float2 first_sibling = _462;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -251,12 +266,20 @@ void minmax_next(inout MinmaxCursor cursor)
     }
 }
 
-float backprojection_area(float3 query, float4 window, float limit)
+float backprojection_whole_light_area()
+{
+    return (4.0f * params_light.x) * params_light.x;
+}
+
+bool backprojection_covered(float area)
+{
+    return area >= backprojection_whole_light_area();
+}
+
+float backprojection_walk(float3 query, float4 window, float limit, inout float state)
 {
     float2 param = query.xy;
     float2 receiver_slope = backprojection_slope(param);
-    float light_area = backprojection_whole_light_area();
-    float area = 0.0f;
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -274,61 +297,62 @@ float backprojection_area(float3 query, float4 window, float limit)
                 {
                     visits += 1.0f;
                 }
-                bool _698 = !cursor.climbed;
-                bool _709;
-                if (_698)
+                bool _719 = !cursor.climbed;
+                bool _730;
+                if (_719)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _709 = !minmax_window_empty(param_4);
+                    _730 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _709 = _698;
+                    _730 = _719;
                 }
-                if (_709)
+                if (_730)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _715 = minmax_cursor_read(param_5);
-                    float2 range = _715;
+                    float2 _736 = minmax_cursor_read(param_5);
+                    float2 range = _736;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float z_min = range.x * params_sampling.w;
-                    bool _729 = range.x < limit;
-                    bool _741;
-                    if (_729)
+                    bool _750 = range.x < limit;
+                    bool _762;
+                    if (_750)
                     {
                         float4 param_7 = texels;
                         float param_8 = z_min;
                         float3 param_9 = query;
                         float2 param_10 = receiver_slope;
-                        _741 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                        _762 = backprojection_can_touch(param_7, param_8, param_9, param_10);
                     }
                     else
                     {
-                        _741 = _729;
+                        _762 = _750;
                     }
-                    if (_741)
+                    if (_762)
                     {
-                        bool _747 = range.y < limit;
-                        bool _755;
-                        if (_747)
+                        bool _768 = range.y < limit;
+                        bool _776;
+                        if (_768)
                         {
-                            _755 = range.x == range.y;
+                            _776 = range.x == range.y;
                         }
                         else
                         {
-                            _755 = _747;
+                            _776 = _768;
                         }
-                        if (_755)
+                        if (_776)
                         {
                             float4 param_11 = texels;
                             float param_12 = z_min;
                             float3 param_13 = query;
                             float2 param_14 = receiver_slope;
-                            float4 param_15 = backprojection_project(param_11, param_12, param_13, param_14);
-                            area += backprojection_light_area(param_15);
+                            float param_15 = state;
+                            float4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
+                            state = backprojection_add(param_15, param_16);
                         }
                         else
                         {
@@ -338,21 +362,23 @@ float backprojection_area(float3 query, float4 window, float limit)
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_16 = cursor;
-                    minmax_descend(param_16);
-                    cursor = param_16;
+                    MinmaxCursor param_17 = cursor;
+                    minmax_descend(param_17);
+                    cursor = param_17;
                 }
                 else
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_next(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_18 = cursor;
+                    minmax_next(param_18);
+                    cursor = param_18;
                 }
-                cursor.done = (cursor.done || (area >= light_area)) || (visits >= 16384.0f);
+                float param_19 = state;
+                bool covered = backprojection_covered(param_19);
+                cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
     }
-    return area;
+    return state;
 }
 
 float shadow_visibility(float3 query)
@@ -361,41 +387,37 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _819 = shadow_compare_point(param, param_1);
-        return _819;
+        float _880 = shadow_compare_point(param, param_1);
+        return _880;
     }
-    float param_2 = query.z;
-    float limit = min(shadow_reference(param_2), query.z * params_sampling.z);
-    float2 _833 = minmax_top_node();
-    float map_min = _833.x;
-    if (!(map_min < limit))
+    float3 param_2 = query;
+    float param_3;
+    float4 param_4;
+    bool _888 = backprojection_start(param_2, param_3, param_4);
+    float limit = param_3;
+    float4 window = param_4;
+    if (!_888)
     {
         return 1.0f;
     }
-    float3 param_3 = query;
-    float param_4 = map_min * params_sampling.w;
-    float4 window = backprojection_window(param_3, param_4);
-    float4 param_5 = window;
-    if (minmax_window_empty(param_5))
-    {
-        return 1.0f;
-    }
-    float3 param_6 = query;
-    float4 param_7 = window;
-    float param_8 = limit;
-    float _863 = backprojection_area(param_6, param_7, param_8);
-    return max(0.0f, 1.0f - (_863 / backprojection_whole_light_area()));
+    float3 param_5 = query;
+    float4 param_6 = window;
+    float param_7 = limit;
+    float param_8 = 0.0f;
+    float _903 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _903;
+    return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _887 = shadow_visibility(param);
-    return _887;
+    float _928 = shadow_visibility(param);
+    return _928;
 }
 
 void frag_main()
@@ -403,8 +425,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _901 = receiver_visibility(param);
-    float visible = _901;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _949 = receiver_visibility(param, param_1);
+    float visible = _949;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

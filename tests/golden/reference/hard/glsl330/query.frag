@@ -35,19 +35,19 @@ float shadow_visibility(vec3 query)
 {
     vec2 param = query.xy;
     float param_1 = query.z;
-    float _76 = shadow_compare_point(param, param_1);
-    return _76;
+    float _78 = shadow_compare_point(param, param_1);
+    return _78;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _96 = shadow_visibility(param);
-    return _96;
+    float _98 = shadow_visibility(param);
+    return _98;
 }
 
 void main()
@@ -55,8 +55,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _110 = receiver_visibility(param);
-    float visible = _110;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _121 = receiver_visibility(param, param_1);
+    float visible = _121;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

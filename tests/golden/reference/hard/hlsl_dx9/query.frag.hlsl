@@ -41,19 +41,19 @@ float shadow_visibility(float3 query)
 {
     float2 param = query.xy;
     float param_1 = query.z;
-    float _76 = shadow_compare_point(param, param_1);
-    return _76;
+    float _78 = shadow_compare_point(param, param_1);
+    return _78;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _96 = shadow_visibility(param);
-    return _96;
+    float _98 = shadow_visibility(param);
+    return _98;
 }
 
 void frag_main()
@@ -61,8 +61,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _110 = receiver_visibility(param);
-    float visible = _110;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _121 = receiver_visibility(param, param_1);
+    float visible = _121;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -106,8 +106,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _131 = shadow_texel(param);
-        float depth = _131;
+        float _133 = shadow_texel(param);
+        float depth = _133;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -119,8 +119,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _312 = minmax_node(param, param_1);
-    return _312;
+    vec2 _314 = minmax_node(param, param_1);
+    return _314;
 }
 
 float minmax_texel_count(vec4 part)
@@ -138,16 +138,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _335;
+    vec2 _337;
     if (root)
     {
-        _335 = cursor.first_root;
+        _337 = cursor.first_root;
     }
     else
     {
-        _335 = floor(cursor.node * 0.5) * 2.0;
+        _337 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _335;
+    vec2 first_sibling = _337;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -203,22 +203,22 @@ float minmax_pcf_count(vec2 first, float reference)
                 vec4 param_5 = window;
                 vec4 part = minmax_node_part(param_4, param_5);
                 bool descend = false;
-                bool _465 = !cursor.climbed;
-                bool _472;
-                if (_465)
+                bool _467 = !cursor.climbed;
+                bool _474;
+                if (_467)
                 {
                     vec4 param_6 = part;
-                    _472 = !minmax_window_empty(param_6);
+                    _474 = !minmax_window_empty(param_6);
                 }
                 else
                 {
-                    _472 = _465;
+                    _474 = _467;
                 }
-                if (_472)
+                if (_474)
                 {
                     MinmaxCursor param_7 = cursor;
-                    vec2 _478 = minmax_cursor_read(param_7);
-                    vec2 range = _478;
+                    vec2 _480 = minmax_cursor_read(param_7);
+                    vec2 range = _480;
                     if (range.y < reference)
                     {
                         vec4 param_8 = part;
@@ -226,17 +226,17 @@ float minmax_pcf_count(vec2 first, float reference)
                     }
                     else
                     {
-                        bool _494 = reference > range.x;
-                        bool _500;
-                        if (_494)
+                        bool _496 = reference > range.x;
+                        bool _502;
+                        if (_496)
                         {
-                            _500 = cursor.level > 0.5;
+                            _502 = cursor.level > 0.5;
                         }
                         else
                         {
-                            _500 = _494;
+                            _502 = _496;
                         }
-                        descend = _500;
+                        descend = _502;
                     }
                 }
                 if (descend)
@@ -263,29 +263,29 @@ float shadow_visibility(vec3 query)
     float param = query.z;
     vec2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _541 = minmax_pcf_count(param_1, param_2);
-    float count = _541;
-    float _544;
+    float _543 = minmax_pcf_count(param_1, param_2);
+    float count = _543;
+    float _546;
     if (count > 0.0)
     {
-        _544 = (144.0 - count) * 0.0069444444961845874786376953125;
+        _546 = (144.0 - count) * 0.0069444444961845874786376953125;
     }
     else
     {
-        _544 = 1.0;
+        _546 = 1.0;
     }
-    return _544;
+    return _546;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _573 = shadow_visibility(param);
-    return _573;
+    float _575 = shadow_visibility(param);
+    return _575;
 }
 
 void main()
@@ -293,8 +293,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _587 = receiver_visibility(param);
-    float visible = _587;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _596 = receiver_visibility(param, param_1);
+    float visible = _596;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -106,8 +106,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _131 = shadow_texel(param);
-        float depth = _131;
+        float _133 = shadow_texel(param);
+        float depth = _133;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -119,8 +119,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _312 = minmax_node(param, param_1);
-    return _312;
+    float2 _314 = minmax_node(param, param_1);
+    return _314;
 }
 
 float minmax_texel_count(float4 part)
@@ -138,16 +138,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _335;
+    float2 _337;
     if (root)
     {
-        _335 = cursor.first_root;
+        _337 = cursor.first_root;
     }
     else
     {
-        _335 = floor(cursor.node * 0.5f) * 2.0f;
+        _337 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _335;
+    float2 first_sibling = _337;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -203,22 +203,22 @@ float minmax_pcf_count(float2 first, float reference)
                 float4 param_5 = window;
                 float4 part = minmax_node_part(param_4, param_5);
                 bool descend = false;
-                bool _465 = !cursor.climbed;
-                bool _472;
-                if (_465)
+                bool _467 = !cursor.climbed;
+                bool _474;
+                if (_467)
                 {
                     float4 param_6 = part;
-                    _472 = !minmax_window_empty(param_6);
+                    _474 = !minmax_window_empty(param_6);
                 }
                 else
                 {
-                    _472 = _465;
+                    _474 = _467;
                 }
-                if (_472)
+                if (_474)
                 {
                     MinmaxCursor param_7 = cursor;
-                    float2 _478 = minmax_cursor_read(param_7);
-                    float2 range = _478;
+                    float2 _480 = minmax_cursor_read(param_7);
+                    float2 range = _480;
                     if (range.y < reference)
                     {
                         float4 param_8 = part;
@@ -226,17 +226,17 @@ float minmax_pcf_count(float2 first, float reference)
                     }
                     else
                     {
-                        bool _494 = reference > range.x;
-                        bool _500;
-                        if (_494)
+                        bool _496 = reference > range.x;
+                        bool _502;
+                        if (_496)
                         {
-                            _500 = cursor.level > 0.5f;
+                            _502 = cursor.level > 0.5f;
                         }
                         else
                         {
-                            _500 = _494;
+                            _502 = _496;
                         }
-                        descend = _500;
+                        descend = _502;
                     }
                 }
                 if (descend)
@@ -263,29 +263,29 @@ float shadow_visibility(float3 query)
     float param = query.z;
     float2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _541 = minmax_pcf_count(param_1, param_2);
-    float count = _541;
-    float _544;
+    float _543 = minmax_pcf_count(param_1, param_2);
+    float count = _543;
+    float _546;
     if (count > 0.0f)
     {
-        _544 = (144.0f - count) * 0.0069444444961845874786376953125f;
+        _546 = (144.0f - count) * 0.0069444444961845874786376953125f;
     }
     else
     {
-        _544 = 1.0f;
+        _546 = 1.0f;
     }
-    return _544;
+    return _546;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _573 = shadow_visibility(param);
-    return _573;
+    float _575 = shadow_visibility(param);
+    return _575;
 }
 
 void frag_main()
@@ -293,8 +293,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _587 = receiver_visibility(param);
-    float visible = _587;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _596 = receiver_visibility(param, param_1);
+    float visible = _596;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

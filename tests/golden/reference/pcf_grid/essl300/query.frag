@@ -29,8 +29,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _65 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_65.xy, _65.z), 0.0);
+    vec3 _67 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_67.xy, _67.z), 0.0);
 }
 
 float shadow_visibility(vec3 query)
@@ -42,22 +42,22 @@ float shadow_visibility(vec3 query)
         {
             vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
             float param_1 = query.z;
-            float _110 = shadow_compare_bilinear(param, param_1);
-            sum += _110;
+            float _112 = shadow_compare_bilinear(param, param_1);
+            sum += _112;
         }
     }
     return sum / 9.0;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _140 = shadow_visibility(param);
-    return _140;
+    float _142 = shadow_visibility(param);
+    return _142;
 }
 
 void main()
@@ -65,8 +65,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _157 = receiver_visibility(param);
-    float visible = _157;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _167 = receiver_visibility(param, param_1);
+    float visible = _167;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -38,8 +38,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _65 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _65.xy, _65.z);
+    float3 _67 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _67.xy, _67.z);
 }
 
 float shadow_visibility(float3 query)
@@ -53,22 +53,22 @@ float shadow_visibility(float3 query)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
             float param_1 = query.z;
-            float _110 = shadow_compare_bilinear(param, param_1);
-            sum += _110;
+            float _112 = shadow_compare_bilinear(param, param_1);
+            sum += _112;
         }
     }
     return sum / 9.0f;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _140 = shadow_visibility(param);
-    return _140;
+    float _142 = shadow_visibility(param);
+    return _142;
 }
 
 void frag_main()
@@ -76,8 +76,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _157 = receiver_visibility(param);
-    float visible = _157;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _167 = receiver_visibility(param, param_1);
+    float visible = _167;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

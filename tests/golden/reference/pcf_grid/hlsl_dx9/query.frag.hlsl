@@ -58,22 +58,22 @@ float shadow_visibility(float3 query)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
             float param_1 = query.z;
-            float _187 = shadow_compare_bilinear(param, param_1);
-            sum += _187;
+            float _189 = shadow_compare_bilinear(param, param_1);
+            sum += _189;
         }
     }
     return sum / 9.0f;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _216 = shadow_visibility(param);
-    return _216;
+    float _218 = shadow_visibility(param);
+    return _218;
 }
 
 void frag_main()
@@ -81,8 +81,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _230 = receiver_visibility(param);
-    float visible = _230;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _240 = receiver_visibility(param, param_1);
+    float visible = _240;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

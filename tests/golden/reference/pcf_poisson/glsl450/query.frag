@@ -29,8 +29,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _65 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_65.xy, _65.z), 0.0);
+    vec3 _67 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_67.xy, _67.z), 0.0);
 }
 
 float shadow_visibility(vec3 query)
@@ -38,23 +38,24 @@ float shadow_visibility(vec3 query)
     float sum = 0.0;
     for (int i = 0; i < 16; i++)
     {
-        vec2 param = query.xy + (PCF_DISK[i] * params.sampling.x);
+        vec2 offset = PCF_DISK[i] * params.sampling.x;
+        vec2 param = query.xy + offset;
         float param_1 = query.z;
-        float _151 = shadow_compare_bilinear(param, param_1);
-        sum += _151;
+        float _155 = shadow_compare_bilinear(param, param_1);
+        sum += _155;
     }
     return sum / 16.0;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _180 = shadow_visibility(param);
-    return _180;
+    float _184 = shadow_visibility(param);
+    return _184;
 }
 
 void main()
@@ -62,8 +63,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _197 = receiver_visibility(param);
-    float visible = _197;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _210 = receiver_visibility(param, param_1);
+    float visible = _210;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

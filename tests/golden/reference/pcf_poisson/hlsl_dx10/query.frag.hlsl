@@ -40,8 +40,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _65 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _65.xy, _65.z);
+    float3 _67 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _67.xy, _67.z);
 }
 
 float shadow_visibility(float3 query)
@@ -50,23 +50,24 @@ float shadow_visibility(float3 query)
     [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 param = query.xy + (PCF_DISK[i] * params_sampling.x);
+        float2 offset = PCF_DISK[i] * params_sampling.x;
+        float2 param = query.xy + offset;
         float param_1 = query.z;
-        float _151 = shadow_compare_bilinear(param, param_1);
-        sum += _151;
+        float _155 = shadow_compare_bilinear(param, param_1);
+        sum += _155;
     }
     return sum / 16.0f;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _180 = shadow_visibility(param);
-    return _180;
+    float _184 = shadow_visibility(param);
+    return _184;
 }
 
 void frag_main()
@@ -74,8 +75,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _197 = receiver_visibility(param);
-    float visible = _197;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _210 = receiver_visibility(param, param_1);
+    float visible = _210;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -54,23 +54,24 @@ float shadow_visibility(float3 query)
     [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 param = query.xy + (tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * params_sampling.x);
+        float2 offset = tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * params_sampling.x;
+        float2 param = query.xy + offset;
         float param_1 = query.z;
-        float _182 = shadow_compare_bilinear(param, param_1);
-        sum += _182;
+        float _186 = shadow_compare_bilinear(param, param_1);
+        sum += _186;
     }
     return sum / 16.0f;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _209 = shadow_visibility(param);
-    return _209;
+    float _213 = shadow_visibility(param);
+    return _213;
 }
 
 void frag_main()
@@ -78,8 +79,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _223 = receiver_visibility(param);
-    float visible = _223;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _235 = receiver_visibility(param, param_1);
+    float visible = _235;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

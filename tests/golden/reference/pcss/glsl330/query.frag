@@ -35,23 +35,24 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, vec2 uv, 
     numBlockers = 0.0;
     for (int i = 0; i < 16; i++)
     {
-        vec2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float _239 = shadow_depth_point(param);
-        float shadowMapDepth = _239;
+        vec2 offset = POISSON_DISK[i] * searchWidth;
+        vec2 param = uv + offset;
+        float _243 = shadow_depth_point(param);
+        float shadowMapDepth = _243;
         bool blocks = shadowMapDepth < (zReceiver - params.sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0);
         numBlockers += float(blocks);
     }
-    float _261;
+    float _265;
     if (numBlockers > 0.0)
     {
-        _261 = blockerSum / numBlockers;
+        _265 = blockerSum / numBlockers;
     }
     else
     {
-        _261 = zReceiver;
+        _265 = zReceiver;
     }
-    avgBlockerDepth = _261;
+    avgBlockerDepth = _265;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -69,8 +70,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _109 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_109.xy, _109.z), 0.0);
+    vec3 _111 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_111.xy, _111.z), 0.0);
 }
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
@@ -81,8 +82,8 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
         vec2 offset = POISSON_DISK[i] * filterRadiusUV;
         vec2 param = uv + offset;
         float param_1 = zReceiver;
-        float _199 = shadow_compare_bilinear(param, param_1);
-        sum += _199;
+        float _201 = shadow_compare_bilinear(param, param_1);
+        sum += _201;
     }
     return sum / 16.0;
 }
@@ -115,26 +116,26 @@ float PCSS(vec3 coords)
     vec2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _326 = PCF_Filter(param_6, param_7, param_8);
-    return _326;
+    float _330 = PCF_Filter(param_6, param_7, param_8);
+    return _330;
 }
 
 float shadow_visibility(vec3 query)
 {
     vec3 param = query;
-    float _331 = PCSS(param);
-    return _331;
+    float _335 = PCSS(param);
+    return _335;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _351 = shadow_visibility(param);
-    return _351;
+    float _355 = shadow_visibility(param);
+    return _355;
 }
 
 void main()
@@ -142,8 +143,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _365 = receiver_visibility(param);
-    float visible = _365;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _378 = receiver_visibility(param, param_1);
+    float visible = _378;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -46,23 +46,24 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 param = uv + (POISSON_DISK[i] * searchWidth);
-        float _239 = shadow_depth_point(param);
-        float shadowMapDepth = _239;
+        float2 offset = POISSON_DISK[i] * searchWidth;
+        float2 param = uv + offset;
+        float _243 = shadow_depth_point(param);
+        float shadowMapDepth = _243;
         bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0f);
         numBlockers += float(blocks);
     }
-    float _261;
+    float _265;
     if (numBlockers > 0.0f)
     {
-        _261 = blockerSum / numBlockers;
+        _265 = blockerSum / numBlockers;
     }
     else
     {
-        _261 = zReceiver;
+        _265 = zReceiver;
     }
-    avgBlockerDepth = _261;
+    avgBlockerDepth = _265;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -80,8 +81,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _109 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _109.xy, _109.z);
+    float3 _111 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _111.xy, _111.z);
 }
 
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
@@ -93,8 +94,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = POISSON_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _199 = shadow_compare_bilinear(param, param_1);
-        sum += _199;
+        float _201 = shadow_compare_bilinear(param, param_1);
+        sum += _201;
     }
     return sum / 16.0f;
 }
@@ -127,26 +128,26 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _326 = PCF_Filter(param_6, param_7, param_8);
-    return _326;
+    float _330 = PCF_Filter(param_6, param_7, param_8);
+    return _330;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _331 = PCSS(param);
-    return _331;
+    float _335 = PCSS(param);
+    return _335;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _351 = shadow_visibility(param);
-    return _351;
+    float _355 = shadow_visibility(param);
+    return _355;
 }
 
 void frag_main()
@@ -154,8 +155,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _365 = receiver_visibility(param);
-    float visible = _365;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _378 = receiver_visibility(param, param_1);
+    float visible = _378;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

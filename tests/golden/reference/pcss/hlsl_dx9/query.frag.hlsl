@@ -41,23 +41,24 @@ void FindBlocker(inout float avgBlockerDepth, inout float numBlockers, float2 uv
     [loop]
     for (int i = 0; i < 16; i++)
     {
-        float2 param = uv + (tex2Dlod(blocker_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * searchWidth);
-        float _269 = shadow_depth_point(param);
-        float shadowMapDepth = _269;
+        float2 offset = tex2Dlod(blocker_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * searchWidth;
+        float2 param = uv + offset;
+        float _273 = shadow_depth_point(param);
+        float shadowMapDepth = _273;
         bool blocks = shadowMapDepth < (zReceiver - params_sampling.y);
         blockerSum += (blocks ? shadowMapDepth : 0.0f);
         numBlockers += float(blocks);
     }
-    float _291;
+    float _295;
     if (numBlockers > 0.0f)
     {
-        _291 = blockerSum / numBlockers;
+        _295 = blockerSum / numBlockers;
     }
     else
     {
-        _291 = zReceiver;
+        _295 = zReceiver;
     }
-    avgBlockerDepth = _291;
+    avgBlockerDepth = _295;
 }
 
 float PenumbraSize(float zReceiver, float zBlocker)
@@ -96,8 +97,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _225 = shadow_compare_bilinear(param, param_1);
-        sum += _225;
+        float _227 = shadow_compare_bilinear(param, param_1);
+        sum += _227;
     }
     return sum / 16.0f;
 }
@@ -130,26 +131,26 @@ float PCSS(float3 coords)
     float2 param_6 = uv;
     float param_7 = zReceiver;
     float param_8 = filterRadiusUV;
-    float _356 = PCF_Filter(param_6, param_7, param_8);
-    return _356;
+    float _360 = PCF_Filter(param_6, param_7, param_8);
+    return _360;
 }
 
 float shadow_visibility(float3 query)
 {
     float3 param = query;
-    float _361 = PCSS(param);
-    return _361;
+    float _365 = PCSS(param);
+    return _365;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _381 = shadow_visibility(param);
-    return _381;
+    float _385 = shadow_visibility(param);
+    return _385;
 }
 
 void frag_main()
@@ -157,8 +158,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _395 = receiver_visibility(param);
-    float visible = _395;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _407 = receiver_visibility(param, param_1);
+    float visible = _407;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -77,8 +77,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _148 = shadow_texel(param);
-        float depth = _148;
+        float _150 = shadow_texel(param);
+        float depth = _150;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -122,8 +122,8 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
             {
                 float param_6 = level;
                 vec2 param_7 = node;
-                vec2 _469 = minmax_node(param_6, param_7);
-                float node_min = _469.x;
+                vec2 _471 = minmax_node(param_6, param_7);
+                float node_min = _471.x;
                 if (node_min < reference)
                 {
                     vec4 param_8 = part;
@@ -152,8 +152,8 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver)
     penumbra_texel_reads += 4.0;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    vec3 _112 = vec3(uv, reference);
-    return textureLod(shadow_cmp, vec3(_112.xy, _112.z), 0.0);
+    vec3 _114 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_114.xy, _114.z), 0.0);
 }
 
 float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
@@ -164,8 +164,8 @@ float PCF_Filter(vec2 uv, float zReceiver, float filterRadiusUV)
         vec2 offset = PCF_DISK[i] * filterRadiusUV;
         vec2 param = uv + offset;
         float param_1 = zReceiver;
-        float _342 = shadow_compare_bilinear(param, param_1);
-        sum += _342;
+        float _344 = shadow_compare_bilinear(param, param_1);
+        sum += _344;
     }
     return sum / 16.0;
 }
@@ -182,9 +182,9 @@ float shadow_visibility(vec3 query)
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _528 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _530 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_528)
+    if (!_530)
     {
         return 1.0;
     }
@@ -195,19 +195,19 @@ float shadow_visibility(vec3 query)
     vec2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _562 = PCF_Filter(param_7, param_8, param_9);
-    return _562;
+    float _564 = PCF_Filter(param_7, param_8, param_9);
+    return _564;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _582 = shadow_visibility(param);
-    return _582;
+    float _584 = shadow_visibility(param);
+    return _584;
 }
 
 void main()
@@ -215,8 +215,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _596 = receiver_visibility(param);
-    float visible = _596;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _605 = receiver_visibility(param, param_1);
+    float visible = _605;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

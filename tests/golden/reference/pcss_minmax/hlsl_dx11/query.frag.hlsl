@@ -78,8 +78,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _148 = shadow_texel(param);
-        float depth = _148;
+        float _150 = shadow_texel(param);
+        float depth = _150;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -125,8 +125,8 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
             {
                 float param_6 = level;
                 float2 param_7 = node;
-                float2 _469 = minmax_node(param_6, param_7);
-                float node_min = _469.x;
+                float2 _471 = minmax_node(param_6, param_7);
+                float node_min = _471.x;
                 if (node_min < reference)
                 {
                     float4 param_8 = part;
@@ -155,8 +155,8 @@ float shadow_compare_bilinear(float2 uv, float z_receiver)
     penumbra_texel_reads += 4.0f;
     float param = z_receiver;
     float reference = shadow_reference(param);
-    float3 _112 = float3(uv, reference);
-    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _112.xy, _112.z);
+    float3 _114 = float3(uv, reference);
+    return shadow_cmp.SampleCmpLevelZero(_shadow_cmp_sampler, _114.xy, _114.z);
 }
 
 float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
@@ -168,8 +168,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = PCF_DISK[i] * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _342 = shadow_compare_bilinear(param, param_1);
-        sum += _342;
+        float _344 = shadow_compare_bilinear(param, param_1);
+        sum += _344;
     }
     return sum / 16.0f;
 }
@@ -186,9 +186,9 @@ float shadow_visibility(float3 query)
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _528 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _530 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_528)
+    if (!_530)
     {
         return 1.0f;
     }
@@ -199,19 +199,19 @@ float shadow_visibility(float3 query)
     float2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _562 = PCF_Filter(param_7, param_8, param_9);
-    return _562;
+    float _564 = PCF_Filter(param_7, param_8, param_9);
+    return _564;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _582 = shadow_visibility(param);
-    return _582;
+    float _584 = shadow_visibility(param);
+    return _584;
 }
 
 void frag_main()
@@ -219,8 +219,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _596 = receiver_visibility(param);
-    float visible = _596;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _605 = receiver_visibility(param, param_1);
+    float visible = _605;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -71,8 +71,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _218 = shadow_texel(param);
-        float depth = _218;
+        float _220 = shadow_texel(param);
+        float depth = _220;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -118,8 +118,8 @@ bool minmax_find_blocker(out float zBlocker, float2 uv, float zReceiver, float r
             {
                 float param_6 = level;
                 float2 param_7 = node;
-                float2 _492 = minmax_node(param_6, param_7);
-                float node_min = _492.x;
+                float2 _494 = minmax_node(param_6, param_7);
+                float node_min = _494.x;
                 if (node_min < reference)
                 {
                     float4 param_8 = part;
@@ -169,8 +169,8 @@ float PCF_Filter(float2 uv, float zReceiver, float filterRadiusUV)
         float2 offset = tex2Dlod(pcf_disk, float4(float2((float(i) + 0.5f) / 16.0f, 0.5f), 0.0, 0.0f)).xy * filterRadiusUV;
         float2 param = uv + offset;
         float param_1 = zReceiver;
-        float _366 = shadow_compare_bilinear(param, param_1);
-        sum += _366;
+        float _368 = shadow_compare_bilinear(param, param_1);
+        sum += _368;
     }
     return sum / 16.0f;
 }
@@ -187,9 +187,9 @@ float shadow_visibility(float3 query)
     float param_3 = query.z;
     float param_4 = shadow_reference(param);
     float param_1;
-    bool _551 = minmax_find_blocker(param_1, param_2, param_3, param_4);
+    bool _553 = minmax_find_blocker(param_1, param_2, param_3, param_4);
     zBlocker = param_1;
-    if (!_551)
+    if (!_553)
     {
         return 1.0f;
     }
@@ -200,19 +200,19 @@ float shadow_visibility(float3 query)
     float2 param_7 = query.xy;
     float param_8 = query.z;
     float param_9 = filterRadiusUV;
-    float _585 = PCF_Filter(param_7, param_8, param_9);
-    return _585;
+    float _587 = PCF_Filter(param_7, param_8, param_9);
+    return _587;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _605 = shadow_visibility(param);
-    return _605;
+    float _607 = shadow_visibility(param);
+    return _607;
 }
 
 void frag_main()
@@ -220,8 +220,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
-    float _619 = receiver_visibility(param);
-    float visible = _619;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _628 = receiver_visibility(param, param_1);
+    float visible = _628;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -38,22 +38,22 @@ float shadow_visibility(vec3 query)
         {
             vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
             float param_1 = query.z;
-            float _108 = shadow_compare_point(param, param_1);
-            sum += _108;
+            float _110 = shadow_compare_point(param, param_1);
+            sum += _110;
         }
     }
     return sum / 9.0;
 }
 
-float receiver_visibility(vec3 query)
+float receiver_visibility(vec3 query, vec2 pixel)
 {
     if (!(query.z > 0.0))
     {
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _137 = shadow_visibility(param);
-    return _137;
+    float _139 = shadow_visibility(param);
+    return _139;
 }
 
 void main()
@@ -61,8 +61,9 @@ void main()
     penumbra_texel_reads = 0.0;
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
-    float _151 = receiver_visibility(param);
-    float visible = _151;
+    vec2 param_1 = floor(screen_uv * params.screen_size.xy);
+    float _161 = receiver_visibility(param, param_1);
+    float visible = _161;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -49,22 +49,22 @@ float shadow_visibility(float3 query)
         {
             float2 param = query.xy + (float2(float(i), float(j)) * params_shadow_map_size.zw);
             float param_1 = query.z;
-            float _108 = shadow_compare_point(param, param_1);
-            sum += _108;
+            float _110 = shadow_compare_point(param, param_1);
+            sum += _110;
         }
     }
     return sum / 9.0f;
 }
 
-float receiver_visibility(float3 query)
+float receiver_visibility(float3 query, float2 pixel)
 {
     if (!(query.z > 0.0f))
     {
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _137 = shadow_visibility(param);
-    return _137;
+    float _139 = shadow_visibility(param);
+    return _139;
 }
 
 void frag_main()
@@ -72,8 +72,9 @@ void frag_main()
     penumbra_texel_reads = 0.0f;
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
-    float _151 = receiver_visibility(param);
-    float visible = _151;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _161 = receiver_visibility(param, param_1);
+    float visible = _161;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

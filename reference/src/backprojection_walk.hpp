@@ -1,0 +1,120 @@
+// The shaders' back-projection walk (shaderlib/common/backprojection_walk.glsl)
+// step for step, shared by backprojection where a target caps it and by
+// bitmask_backprojection: which patches a receiver's walk hands over, and
+// whether one of its float32 decisions was too close to call.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/model/model.hpp"
+#include "penumbra/reference/light.hpp"
+#include "penumbra/reference/minmax_cursor.hpp"
+#include "penumbra/reference/sampling.hpp"
+#include "penumbra/reference/techniques.hpp"
+
+namespace penumbra::reference::detail {
+
+// A light-plane rectangle (X0, Y0, X1, Y1).
+struct PlaneRect {
+  double x0, y0, x1, y1;
+};
+
+class Projector {
+ public:
+  Projector(const ShadowMapView& map, const LightParams& light, const Query& q)
+      : map_(map),
+        q_(q),
+        to_slope_(light.frustum_width / light.near_plane),
+        half_(light.light_world_size) {}
+
+  // g(z), from slope difference to light-plane distance.
+  double gain(double z) const { return z * q_.z / (q_.z - z); }
+  // The patch of `texels` at linear depth z projected from the receiver.
+  PlaneRect project(const TexelRect& texels, double z) const {
+    const double g = gain(z);
+    auto slope = [&](int texel, int size, double receiver) {
+      return ((double(texel) / size - 0.5) - (receiver - 0.5)) * to_slope_ * g;
+    };
+    return {slope(texels.x0, map_.width(), q_.u), slope(texels.y0, map_.height(), q_.v),
+            slope(texels.x1 + 1, map_.width(), q_.u), slope(texels.y1 + 1, map_.height(), q_.v)};
+  }
+  // How far float32 may put an edge of a patch at depth z: a few ulps of
+  // the slopes it subtracts, scaled by g(z), and of the edge itself.
+  double edge_error(double edge, double z) const {
+    const double slopes = (0.5 + std::abs(q_.u - 0.5) + std::abs(q_.v - 0.5)) * to_slope_;
+    return 2.5e-7 * (std::abs(edge) + half_ + slopes * gain(z));
+  }
+  // Whether it reaches the light, and whether float32 might say otherwise.
+  bool touches(const PlaneRect& r, bool& close) const {
+    auto near = [&](double edge, double bound) {
+      return std::abs(edge - bound) <= 1e-6 * (std::abs(edge) + half_);
+    };
+    close =
+        close || near(r.x0, half_) || near(r.y0, half_) || near(r.x1, -half_) || near(r.y1, -half_);
+    return r.x0 <= half_ && r.y0 <= half_ && r.x1 >= -half_ && r.y1 >= -half_;
+  }
+  double half() const { return half_; }
+
+ private:
+  const ShadowMapView& map_;
+  const Query& q_;
+  double to_slope_;
+  double half_;
+};
+
+struct WalkEnd {
+  bool truncated = false;  // stopped by `steps` or max_nodes, not by the walk's own end
+  bool close = false;      // a float32 decision steering the walk was too close to call
+};
+
+// Walks `window` (non-empty, inside the map) for at most `steps` steps as
+// the shader does, calling add(texels, z) for each patch it hands over
+// (texels at linear depth z) and stopping once covered() holds.
+template <typename Add, typename Covered>
+WalkEnd walk_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
+                            const Projector& projector, float limit, const TexelRect& window,
+                            const VariantKeys& keys, int steps, Add add, Covered covered) {
+  const int max_nodes = keys.max_nodes.value_or(kDefaultMaxNodes);
+  WalkEnd end;
+  if (keys.traversal == kBruteForceTraversal) {
+    const long long width = window.x1 - window.x0 + 1;
+    long long n = 0;
+    for (; n < std::min<long long>(window.count(), std::min(steps, max_nodes)) && !covered(); ++n) {
+      const int i = window.x0 + int(n % width);
+      const int j = window.y0 + int(n / width);
+      const float depth = float(map.depth(i, j));
+      if (depth < limit) add(TexelRect{i, j, i, j}, double(depth));
+    }
+    end.truncated = n < window.count() && !covered();
+    return end;
+  }
+  MinmaxCursor cursor(window);
+  int visits = 0;
+  bool done = false;
+  for (int step = 0; step < steps && !done; ++step) {
+    bool descend = false;
+    if (!cursor.climbed()) ++visits;
+    if (!cursor.climbed() && !intersect(cursor.texels(), window).empty()) {
+      const MinMax range = mip.node(cursor.level(), cursor.x(), cursor.y());
+      const TexelRect texels = clip(cursor.texels(), map.width(), map.height());
+      if (range.min < limit && projector.touches(projector.project(texels, range.min), end.close)) {
+        if (range.max < limit && range.min == range.max) {
+          add(texels, double(range.min));
+        } else {
+          descend = cursor.level() > 0;
+        }
+      }
+    }
+    if (descend) {
+      cursor.descend();
+    } else {
+      cursor.next();
+    }
+    done = cursor.done() || covered() || visits >= max_nodes;
+  }
+  end.truncated = !cursor.done() && !covered();
+  return end;
+}
+
+}  // namespace penumbra::reference::detail

@@ -1,0 +1,130 @@
+// bitmask_backprojection's reference ("Bitmask Soft Shadows", Schwarz &
+// Stamminger 2007): the shader's walk, setting the bits of the light
+// samples each patch covers; sample (c, r) of the G x G bits lies at
+// (c G + r + 0.5, r G + c + 0.5) / N of the light's side (the Hammersley set
+// in base G). A sample lies in a patch when it is within the patch's edges
+// on both axes; the shader decides that in float32, so where a sample lies
+// within an edge's float error its bit is undecided, and a receiver with an
+// undecided bit that no other patch surely sets is ambiguous. An edge shared
+// with occluding texels of the same depth is computed from the same
+// operands by both patches, so a sample near it is covered by one of the
+// two: there the sure side reaches the edge itself.
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include "backprojection_walk.hpp"
+#include "penumbra/reference/backprojection.hpp"
+#include "technique_parts.hpp"
+
+namespace penumbra::reference::detail {
+namespace {
+
+// Which edges of a patch (x0, y0, x1, y1) the occluding texels beyond it,
+// at the same depth, share.
+struct SharedEdges {
+  bool x0 = false, y0 = false, x1 = false, y1 = false;
+};
+
+// Whether every texel of `strip` lies inside the map at depth z (as float).
+bool strip_at_depth(const ShadowMapView& map, const TexelRect& strip, double z) {
+  if (strip.x0 < 0 || strip.y0 < 0 || strip.x1 >= map.width() || strip.y1 >= map.height()) {
+    return false;
+  }
+  for (int j = strip.y0; j <= strip.y1; ++j) {
+    for (int i = strip.x0; i <= strip.x1; ++i) {
+      if (float(map.depth(i, j)) != float(z)) return false;
+    }
+  }
+  return true;
+}
+
+SharedEdges shared_edges(const ShadowMapView& map, const TexelRect& t, double z) {
+  return {strip_at_depth(map, {t.x0 - 1, t.y0, t.x0 - 1, t.y1}, z),
+          strip_at_depth(map, {t.x0, t.y0 - 1, t.x1, t.y0 - 1}, z),
+          strip_at_depth(map, {t.x1 + 1, t.y0, t.x1 + 1, t.y1}, z),
+          strip_at_depth(map, {t.x0, t.y1 + 1, t.x1, t.y1 + 1}, z)};
+}
+
+class LightSamples {
+ public:
+  LightSamples(int side, double half)
+      : side_(side), half_(half), sure_(std::size_t(side), 0u), maybe_(std::size_t(side), 0u) {}
+
+  // Sets the bits of the samples inside `r`, a patch at depth z.
+  void cover(const PlaneRect& r, const Projector& projector, double z, const SharedEdges& shared) {
+    // Edges in units of 1 / N of the light's side, less half a unit, and
+    // their float error in those units (shared edges: none on the sure side).
+    const double scale = double(side_) * side_ / (2.0 * half_);
+    auto unit = [&](double edge) { return (edge + half_) * scale - 0.5; };
+    auto error = [&](double edge) {
+      return projector.edge_error(edge, z) * scale + 1e-6 * (std::abs(unit(edge)) + 1.0);
+    };
+    const double e[4] = {error(r.x0), error(r.y0), error(r.x1), error(r.y1)};
+    const double t[4] = {unit(r.x0), unit(r.y0), unit(r.x1), unit(r.y1)};
+    const double maybe[4] = {t[0] - e[0], t[1] - e[1], t[2] + e[2], t[3] + e[3]};
+    const double sure[4] = {t[0] + (shared.x0 ? 0.0 : e[0]), t[1] + (shared.y0 ? 0.0 : e[1]),
+                            t[2] - (shared.x1 ? 0.0 : e[2]), t[3] - (shared.y1 ? 0.0 : e[3])};
+    for (int row = 0; row < side_; ++row) {
+      maybe_[std::size_t(row)] |= row_mask(maybe, row);
+      sure_[std::size_t(row)] |= row_mask(sure, row);
+    }
+  }
+  int set() const {
+    int count = 0;
+    for (std::uint32_t row : sure_) count += std::popcount(row);
+    return count;
+  }
+  bool full() const { return set() == side_ * side_; }
+  // Some bit may be set by the shader that the reference leaves clear.
+  bool undecided() const {
+    for (std::size_t row = 0; row < sure_.size(); ++row) {
+      if (maybe_[row] & ~sure_[row]) return true;
+    }
+    return false;
+  }
+
+ private:
+  // The bits of row `row` whose samples (c G + row, row G + c) lie in the
+  // rectangle `t` (x0, y0, x1, y1) of sample units.
+  std::uint32_t row_mask(const double (&t)[4], int row) const {
+    const double g = side_;
+    const double first = std::max(std::ceil((t[0] - row) / g), std::ceil(t[1] - row * g));
+    const double last = std::min(std::floor((t[2] - row) / g), std::floor(t[3] - row * g));
+    const int lo = int(std::clamp(first, 0.0, g));
+    const int hi = int(std::clamp(last, -1.0, g - 1.0));
+    if (lo > hi) return 0u;
+    return std::uint32_t((std::uint64_t{2} << hi) - (std::uint64_t{1} << lo));
+  }
+
+  int side_;
+  double half_;
+  std::vector<std::uint32_t> sure_;
+  std::vector<std::uint32_t> maybe_;
+};
+
+}  // namespace
+
+Sample bitmask_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
+                              const LightParams& light, const Query& q, const VariantKeys& keys,
+                              int steps) {
+  const MinMax top = mip.node(mip.top_level(), 0, 0);
+  const float limit = occluder_limit(light, q);
+  if (!(top.min < limit)) return {1.0, false};
+  const TexelRect window = backprojection_window(map, light, q, top.min);
+  if (window.empty()) return {1.0, false};
+  const Projector projector(map, light, q);
+  const int side = light_grid_side(keys.light_bits.value());
+  LightSamples samples(side, light.light_world_size);
+  const WalkEnd end = walk_backprojection(
+      map, mip, projector, limit, window, keys, steps,
+      [&](const TexelRect& texels, double z) {
+        samples.cover(projector.project(texels, z), projector, z, shared_edges(map, texels, z));
+      },
+      [&] { return samples.full(); });
+  // A walk stopped short by its bound may not reach a shared edge's other
+  // patch, and where it stops depends on decisions too close to call.
+  return {1.0 - double(samples.set()) / (side * side), samples.undecided() || end.truncated};
+}
+
+}  // namespace penumbra::reference::detail

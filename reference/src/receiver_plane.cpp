@@ -1,0 +1,53 @@
+// The receiver-plane depth slope (Schuler 2006) of a receivers-image pixel,
+// as the query pass computes it from dFdx and dFdy of (u, v, z_r).
+#include "penumbra/reference/receiver_plane.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::reference {
+namespace {
+
+struct Texel3 {
+  double u, v, z;
+};
+
+Texel3 at(const FloatImage& receivers, int i, int j) {
+  // A quad's helper pixel past the image reads the clamped edge.
+  i = std::clamp(i, 0, receivers.width - 1);
+  j = std::clamp(j, 0, receivers.height - 1);
+  return {receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2)};
+}
+
+Texel3 minus(const Texel3& a, const Texel3& b) {
+  return {a.u - b.u, a.v - b.v, a.z - b.z};
+}
+
+}  // namespace
+
+std::array<double, 2> depth_slope(double du_dx, double dv_dx, double dz_dx, double du_dy,
+                                  double dv_dy, double dz_dy) {
+  const double det = du_dx * dv_dy - du_dy * dv_dx;
+  const double dz_du = (dv_dy * dz_dx - dv_dx * dz_dy) / det;
+  const double dz_dv = (du_dx * dz_dy - du_dy * dz_dx) / det;
+  // `!(<)` also takes NaN: a singular or degenerate quad has no plane.
+  if (!(std::abs(dz_du) < kMaxDepthSlope) || !(std::abs(dz_dv) < kMaxDepthSlope)) return {0, 0};
+  return {dz_du, dz_dv};
+}
+
+std::vector<std::array<double, 2>> depth_slope_candidates(const FloatImage& receivers, int i,
+                                                          int j) {
+  const int x0 = i & ~1;
+  const int y0 = j & ~1;
+  std::vector<std::array<double, 2>> out;
+  for (int row : {y0, y0 + 1}) {
+    const Texel3 dx = minus(at(receivers, x0 + 1, row), at(receivers, x0, row));
+    for (int column : {x0, x0 + 1}) {
+      const Texel3 dy = minus(at(receivers, column, y0 + 1), at(receivers, column, y0));
+      out.push_back(depth_slope(dx.u, dx.v, dx.z, dy.u, dy.v, dy.z));
+    }
+  }
+  return out;
+}
+
+}  // namespace penumbra::reference

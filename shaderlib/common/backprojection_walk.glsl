@@ -1,0 +1,134 @@
+// The back-projection of Guennebaud et al. 2006 as Dmitriev 2007 ("Soft
+// Shadows", NVIDIA) walks it, shared by backprojection (sums areas) and
+// bitmask_backprojection (sets light-sample bits).
+// Each occluding texel is the square patch of its frustum footprint at its
+// depth; projected from the receiver P onto the light plane z = 0 it covers
+// [(a0 - a_r) g(z), (a1 - a_r) g(z)] per axis, where a is the slope
+// (u - 0.5) Fw / n and g(z) = z z_r / (z_r - z). Texels at or behind the
+// receiver are skipped. The min-max walk skips nodes that cannot touch the
+// light and hands flat nodes over whole; BACKPROJECTION_MAX_NODES bounds
+// the nodes it visits (brute force: the texels it reads) and
+// BACKPROJECTION_MAX_STEPS its steps, which a target may cap lower.
+// The including technique defines, before including this file, its
+// BackprojectionState, backprojection_add(state, rect), which returns the
+// state after one projected rectangle, and backprojection_covered(state), true once the
+// light is covered.
+#ifndef PENUMBRA_BACKPROJECTION_WALK_GLSL
+#define PENUMBRA_BACKPROJECTION_WALK_GLSL
+
+#include "common/minmax_traversal.glsl"
+
+// Slopes (u - 0.5) Fw / n of map coordinates `uv`.
+vec2 backprojection_slope(vec2 uv) {
+  return (uv - 0.5) * (LIGHT_FRUSTUM_WIDTH / NEAR_PLANE);
+}
+
+// g(z): the factor from slope difference to light-plane distance.
+float backprojection_gain(float z, float z_receiver) {
+  return z * z_receiver / (z_receiver - z);
+}
+
+// Light-plane extent of texels `texels` (x0, y0, x1, y1) at linear depth z
+// seen from the receiver with slopes `receiver_slope`: (X0, Y0, X1, Y1).
+vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slope) {
+  float gain = backprojection_gain(z, query.z);
+  return vec4((backprojection_slope(texels.xy * TEXEL_SIZE) - receiver_slope) * gain,
+              (backprojection_slope((texels.zw + 1.0) * TEXEL_SIZE) - receiver_slope) * gain);
+}
+
+// Whether texels at linear depth >= z_min can touch the light at all.
+bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receiver_slope) {
+  vec4 rect = backprojection_project(texels, z_min, query, receiver_slope);
+  return all(lessThanEqual(rect.xy, vec2(LIGHT_WORLD_SIZE))) &&
+         all(greaterThanEqual(rect.zw, vec2(-LIGHT_WORLD_SIZE)));
+}
+
+// The texels whose patches can reach the light from the receiver when no
+// occluder is nearer than z_min, plus one texel, clipped to the map.
+vec4 backprojection_window(vec3 query, float z_min) {
+  float half_width = LIGHT_SIZE_UV * NEAR_PLANE * (query.z - z_min) / (query.z * z_min);
+  vec2 map_size = params.shadow_map_size.xy;
+  return minmax_clip_window(floor((query.xy - half_width) * map_size) - 1.0,
+                            floor((query.xy + half_width) * map_size) + 1.0);
+}
+
+// Returns `state` after handing backprojection_add() the projection of every texel of `window` with
+// normalized depth below `limit` (it occludes and lies in front of the
+// receiver), flat nodes whole, until backprojection_covered(), after
+// BACKPROJECTION_MAX_NODES nodes or texels, or after
+// BACKPROJECTION_MAX_STEPS steps.
+BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
+                                        BackprojectionState state) {
+  vec2 receiver_slope = backprojection_slope(query.xy);
+  float visits = 0.0;
+#if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
+  vec2 texel = window.xy;
+  bool done = false;
+  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, done) {
+    visits += 1.0;
+    float depth = shadow_texel(texel);
+    if (depth < limit) {
+      state = backprojection_add(
+          state,
+          backprojection_project(texel.xyxy, depth * INV_DEPTH_SCALE, query, receiver_slope));
+    }
+    texel.x += 1.0;
+    if (texel.x > window.z) texel = vec2(window.x, texel.y + 1.0);
+    // MINMAX_FOR_BOUNDED rounds its bound up: stop at exactly the bound.
+    done = texel.y > window.w || visits >= float(BACKPROJECTION_MAX_NODES);
+  }
+#else
+  MinmaxCursor cursor = minmax_begin(window);
+  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, cursor.done) {
+    bool descend = false;
+    if (!cursor.climbed) visits += 1.0;
+    if (!cursor.climbed && !minmax_window_empty(minmax_node_part(cursor, window))) {
+      vec2 range = minmax_cursor_read(cursor);
+      vec4 texels = minmax_node_texels(cursor);
+      float z_min = range.x * INV_DEPTH_SCALE;
+      if (range.x < limit && backprojection_can_touch(texels, z_min, query, receiver_slope)) {
+        if (range.y < limit && range.x == range.y) {
+          state = backprojection_add(
+              state, backprojection_project(texels, z_min, query, receiver_slope));
+        } else {
+          descend = cursor.level > 0.5;
+        }
+      }
+    }
+    if (descend) {
+      minmax_descend(cursor);
+    } else {
+      minmax_next(cursor);
+    }
+    // Stop when the light is covered or the work bound is reached. (A call
+    // inside || would be a branch: Shader Model 3 slots are counted.)
+    bool covered = backprojection_covered(state);
+    cursor.done = cursor.done || covered || visits >= float(BACKPROJECTION_MAX_NODES);
+  }
+#endif
+  return state;
+}
+
+// The normalized depth below which a texel occludes the receiver and lies
+// in front of it. A texel occludes when d < reference; one at or behind
+// the receiver (a negative bias lets it pass) cannot be projected towards
+// the light (g(z) is infinite or negative) and is skipped, as the reference
+// does. DEPTH_SCALE is a power of two, so d < z_r DEPTH_SCALE is exactly
+// z < z_r.
+float backprojection_limit(vec3 query) {
+  return min(shadow_reference(query.z), query.z * DEPTH_SCALE);
+}
+
+// Whether any texel can occlude the receiver; `limit` and `window` are then
+// backprojection_walk()'s arguments.
+bool backprojection_start(vec3 query, out float limit, out vec4 window) {
+  limit = backprojection_limit(query);
+  // The top node (1x1) holds the map's minimum: nothing nearer can occlude.
+  float map_min = minmax_top_node().x;
+  window = backprojection_window(query, map_min * INV_DEPTH_SCALE);
+  // A call inside && would be a branch (Shader Model 3 slots are counted).
+  bool empty = minmax_window_empty(window);
+  return map_min < limit && !empty;
+}
+
+#endif

@@ -1,0 +1,484 @@
+struct BackprojectionState
+{
+    uint rows[8];
+    int set;
+};
+
+struct MinmaxCursor
+{
+    float2 node;
+    float level;
+    float span;
+    float2 first_root;
+    float start;
+    bool climbed;
+    bool done;
+};
+
+cbuffer ShadowParams : register(b0)
+{
+    float4 params_shadow_map_size : packoffset(c0);
+    float4 params_light : packoffset(c1);
+    float4 params_sampling : packoffset(c2);
+    float4 params_screen_size : packoffset(c3);
+    float4 params_source_size : packoffset(c4);
+    float4 params_minmax_info : packoffset(c5);
+};
+
+Texture2D<float4> shadow_depth : register(t1);
+SamplerState _shadow_depth_sampler : register(s1);
+Texture2D<float4> shadow_minmax : register(t4);
+SamplerState _shadow_minmax_sampler : register(s4);
+Texture2D<float4> receivers : register(t3);
+SamplerState _receivers_sampler : register(s3);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : SV_Target0;
+};
+
+static float penumbra_texel_reads;
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float shadow_compare_point(float2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 1.0f;
+    float param = z_receiver;
+    return float(shadow_reference(param) <= shadow_depth.SampleLevel(_shadow_depth_sampler, uv, 0.0f).x);
+}
+
+float backprojection_limit(float3 query)
+{
+    float param = query.z;
+    return min(shadow_reference(param), query.z * params_sampling.z);
+}
+
+float2 minmax_top_node()
+{
+    penumbra_texel_reads += 1.0f;
+    return shadow_minmax.SampleLevel(_shadow_minmax_sampler, 0.5f.xx, params_minmax_info.x - 1.0f).xy;
+}
+
+float4 minmax_clip_window(float2 first, float2 last)
+{
+    return float4(max(first, 0.0f.xx), min(last, params_shadow_map_size.xy - 1.0f.xx));
+}
+
+float4 backprojection_window(float3 query, float z_min)
+{
+    float half_width = ((params_light.w * params_light.z) * (query.z - z_min)) / (query.z * z_min);
+    float2 map_size = params_shadow_map_size.xy;
+    float2 param = floor((query.xy - half_width.xx) * map_size) - 1.0f.xx;
+    float2 param_1 = floor((query.xy + half_width.xx) * map_size) + 1.0f.xx;
+    return minmax_clip_window(param, param_1);
+}
+
+bool minmax_window_empty(float4 window)
+{
+    return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
+}
+
+bool backprojection_start(float3 query, inout float limit, inout float4 window)
+{
+    float3 param = query;
+    limit = backprojection_limit(param);
+    float2 _980 = minmax_top_node();
+    float map_min = _980.x;
+    float3 param_1 = query;
+    float param_2 = map_min * params_sampling.w;
+    window = backprojection_window(param_1, param_2);
+    float4 param_3 = window;
+    bool empty = minmax_window_empty(param_3);
+    return (map_min < limit) && (!empty);
+}
+
+float2 backprojection_slope(float2 uv)
+{
+    return (uv - 0.5f.xx) * (params_light.y / params_light.z);
+}
+
+float minmax_level_spanning(float4 window, float nodes)
+{
+    float level = 0.0f;
+    float inv_span = 1.0f;
+    [loop]
+    for (int k = 0; k < 16; k++)
+    {
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
+        {
+            break;
+        }
+        level += 1.0f;
+        inv_span *= 0.5f;
+    }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy / cursor.span.xx);
+    cursor.node = cursor.first_root;
+    cursor.climbed = false;
+    cursor.done = false;
+    return cursor;
+}
+
+float4 minmax_node_part(MinmaxCursor cursor, float4 window)
+{
+    float2 first = cursor.node * cursor.span;
+    return float4(max(first, window.xy), min((first + cursor.span.xx) - 1.0f.xx, window.zw));
+}
+
+float shadow_texel(float2 texel)
+{
+    penumbra_texel_reads += 1.0f;
+    return shadow_depth.SampleLevel(_shadow_depth_sampler, (texel + 0.5f.xx) * params_shadow_map_size.zw, 0.0f).x;
+}
+
+float2 minmax_node(float level, float2 node)
+{
+    if (level < 0.5f)
+    {
+        float2 param = node;
+        float _381 = shadow_texel(param);
+        float depth = _381;
+        return float2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0f;
+    float2 uv = (node + 0.5f.xx) * exp2(level - params_minmax_info.x);
+    return shadow_minmax.SampleLevel(_shadow_minmax_sampler, uv, level - 1.0f).xy;
+}
+
+float2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    float2 param_1 = cursor.node;
+    float2 _573 = minmax_node(param, param_1);
+    return _573;
+}
+
+float4 minmax_node_texels(MinmaxCursor cursor)
+{
+    float2 first = cursor.node * cursor.span;
+    float2 param = first;
+    float2 param_1 = (first + cursor.span.xx) - 1.0f.xx;
+    return minmax_clip_window(param, param_1);
+}
+
+float backprojection_gain(float z, float z_receiver)
+{
+    return (z * z_receiver) / (z_receiver - z);
+}
+
+float4 backprojection_project(float4 texels, float z, float3 query, float2 receiver_slope)
+{
+    float param = z;
+    float param_1 = query.z;
+    float gain = backprojection_gain(param, param_1);
+    float2 param_2 = texels.xy * params_shadow_map_size.zw;
+    float2 param_3 = (texels.zw + 1.0f.xx) * params_shadow_map_size.zw;
+    return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+}
+
+bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 receiver_slope)
+{
+    float4 param = texels;
+    float param_1 = z_min;
+    float3 param_2 = query;
+    float2 param_3 = receiver_slope;
+    float4 rect = backprojection_project(param, param_1, param_2, param_3);
+    float2 _731 = params_light.x.xx;
+    bool _733 = all(bool2(rect.xy.x <= _731.x, rect.xy.y <= _731.y));
+    bool _744;
+    if (_733)
+    {
+        float2 _741 = (-params_light.x).xx;
+        _744 = all(bool2(rect.zw.x >= _741.x, rect.zw.y >= _741.y));
+    }
+    else
+    {
+        _744 = _733;
+    }
+    return _744;
+}
+
+int bitmask_popcount(inout uint x)
+{
+    x -= ((x >> 1u) & 1431655765u);
+    x = (x & 858993459u) + ((x >> 2u) & 858993459u);
+    x = (x + (x >> 4u)) & 252645135u;
+    return int((x * 16843009u) >> 24u);
+}
+
+BackprojectionState backprojection_add(inout BackprojectionState state, float4 rect)
+{
+    float g = 8.0f;
+    float4 t = ((rect + params_light.x.xxxx) * ((g * g) / (2.0f * params_light.x))) - 0.5f.xxxx;
+    int first_row = int(clamp(ceil((t.y - (g - 1.0f)) / g), 0.0f, g));
+    int last_row = int(clamp(floor(t.w / g), -1.0f, g - 1.0f));
+    [loop]
+    for (int r = first_row; r <= last_row; r++)
+    {
+        float row = float(r);
+        float first = max(ceil((t.x - row) / g), ceil(t.y - (row * g)));
+        float last = min(floor((t.z - row) / g), floor(t.w - (row * g)));
+        first = clamp(first, 0.0f, g);
+        last = clamp(last, -1.0f, g - 1.0f);
+        if (first > last)
+        {
+            continue;
+        }
+        uint mask = (2u << uint(last)) - (1u << uint(first));
+        uint fresh = mask & (~state.rows[r]);
+        state.rows[r] |= fresh;
+        uint param = fresh;
+        int _358 = bitmask_popcount(param);
+        state.set += _358;
+    }
+    return state;
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0f;
+    cursor.level -= 1.0f;
+    cursor.span *= 0.5f;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    bool root = cursor.level >= cursor.start;
+    float2 _596;
+    if (root)
+    {
+        _596 = cursor.first_root;
+    }
+    else
+    {
+        _596 = floor(cursor.node * 0.5f) * 2.0f;
+    }
+    float2 first_sibling = _596;
+    float2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5f)
+    {
+        cursor.node.x += 1.0f;
+    }
+    else
+    {
+        if (offset.y < 0.5f)
+        {
+            cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
+        }
+        else
+        {
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5f);
+                cursor.level += 1.0f;
+                cursor.span *= 2.0f;
+                cursor.climbed = true;
+            }
+        }
+    }
+}
+
+bool backprojection_covered(BackprojectionState state)
+{
+    return state.set >= 64;
+}
+
+BackprojectionState backprojection_walk(float3 query, float4 window, float limit, inout BackprojectionState state)
+{
+    float2 param = query.xy;
+    float2 receiver_slope = backprojection_slope(param);
+    float visits = 0.0f;
+    float4 param_1 = window;
+    MinmaxCursor cursor = minmax_begin(param_1);
+    [loop]
+    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    {
+        [loop]
+        for (int loop_middle = 0; all(bool2(loop_middle < 129, !cursor.done)); loop_middle++)
+        {
+            [loop]
+            for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
+            {
+                bool descend = false;
+                if (!cursor.climbed)
+                {
+                    visits += 1.0f;
+                }
+                bool _853 = !cursor.climbed;
+                bool _864;
+                if (_853)
+                {
+                    MinmaxCursor param_2 = cursor;
+                    float4 param_3 = window;
+                    float4 param_4 = minmax_node_part(param_2, param_3);
+                    _864 = !minmax_window_empty(param_4);
+                }
+                else
+                {
+                    _864 = _853;
+                }
+                if (_864)
+                {
+                    MinmaxCursor param_5 = cursor;
+                    float2 _870 = minmax_cursor_read(param_5);
+                    float2 range = _870;
+                    MinmaxCursor param_6 = cursor;
+                    float4 texels = minmax_node_texels(param_6);
+                    float z_min = range.x * params_sampling.w;
+                    bool _884 = range.x < limit;
+                    bool _896;
+                    if (_884)
+                    {
+                        float4 param_7 = texels;
+                        float param_8 = z_min;
+                        float3 param_9 = query;
+                        float2 param_10 = receiver_slope;
+                        _896 = backprojection_can_touch(param_7, param_8, param_9, param_10);
+                    }
+                    else
+                    {
+                        _896 = _884;
+                    }
+                    if (_896)
+                    {
+                        bool _902 = range.y < limit;
+                        bool _910;
+                        if (_902)
+                        {
+                            _910 = range.x == range.y;
+                        }
+                        else
+                        {
+                            _910 = _902;
+                        }
+                        if (_910)
+                        {
+                            float4 param_11 = texels;
+                            float param_12 = z_min;
+                            float3 param_13 = query;
+                            float2 param_14 = receiver_slope;
+                            BackprojectionState param_15 = state;
+                            float4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
+                            BackprojectionState _925 = backprojection_add(param_15, param_16);
+                            state = _925;
+                        }
+                        else
+                        {
+                            descend = cursor.level > 0.5f;
+                        }
+                    }
+                }
+                if (descend)
+                {
+                    MinmaxCursor param_17 = cursor;
+                    minmax_descend(param_17);
+                    cursor = param_17;
+                }
+                else
+                {
+                    MinmaxCursor param_18 = cursor;
+                    minmax_next(param_18);
+                    cursor = param_18;
+                }
+                BackprojectionState param_19 = state;
+                bool covered = backprojection_covered(param_19);
+                cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
+            }
+        }
+    }
+    return state;
+}
+
+float shadow_visibility(float3 query)
+{
+    if (!(params_light.x > 0.0f))
+    {
+        float2 param = query.xy;
+        float param_1 = query.z;
+        float _1014 = shadow_compare_point(param, param_1);
+        return _1014;
+    }
+    float3 param_2 = query;
+    float param_3;
+    float4 param_4;
+    bool _1022 = backprojection_start(param_2, param_3, param_4);
+    float limit = param_3;
+    float4 window = param_4;
+    if (!_1022)
+    {
+        return 1.0f;
+    }
+    BackprojectionState state;
+    [loop]
+    for (int r = 0; r < 8; r++)
+    {
+        state.rows[r] = 0u;
+    }
+    state.set = 0;
+    float3 param_5 = query;
+    float4 param_6 = window;
+    float param_7 = limit;
+    BackprojectionState param_8 = state;
+    BackprojectionState _1052 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1052;
+    return 1.0f - (float(state.set) / 64.0f);
+}
+
+float receiver_visibility(float3 query, float2 pixel)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _1078 = shadow_visibility(param);
+    return _1078;
+}
+
+void frag_main()
+{
+    penumbra_texel_reads = 0.0f;
+    float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
+    float3 param = query;
+    float2 param_1 = floor(screen_uv * params_screen_size.xy);
+    float _1099 = receiver_visibility(param, param_1);
+    float visible = _1099;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = visibility;
+    return stage_output;
+}
