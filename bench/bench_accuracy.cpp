@@ -157,7 +157,7 @@ void print_goals(const Results& results) {
              error);
 }
 
-Status run(const std::string& manifest, const std::string& device) {
+Status run(const std::string& manifest, const std::string& device, int map_size) {
   TempLibrary temp{std::filesystem::temp_directory_path() /
                    ("penumbra-bench-accuracy-" + std::to_string(::getpid()))};
   PENUMBRA_TRY_ASSIGN(auto variants, load_variants(manifest));
@@ -173,12 +173,13 @@ Status run(const std::string& manifest, const std::string& device) {
       auto engine, Engine::create({.device = device, .validation = false}, ignore_diagnostics()));
   Results results;
   for (const LibraryVariant& v : library.variants) results.variants.push_back(v.variant.name);
-  for (const reference::Scene& scene : reference::accuracy_scenes()) {
+  for (reference::Scene scene : reference::accuracy_scenes()) {
+    scene.map_width = scene.map_height = map_size;
     PENUMBRA_TRY(measure_scene(library, *engine, scene, results));
   }
   std::cout << "exact_penumbra_mae against the square light's exact visibility (spirv on "
-            << engine->device_info().name << "; 512^2 maps, 96^2 receivers; ms: the fastest of "
-            << "3 runs of the whole image)\n";
+            << engine->device_info().name << "; " << map_size << "^2 maps, 96^2 receivers; ms: "
+            << "the fastest of 3 runs of the whole image)\n";
   print(results);
   print_goals(results);
   return {};
@@ -191,10 +192,21 @@ int main(int argc, char** argv) {
   CLI::App app{"penumbra_bench_accuracy: variants against the exact area light"};
   std::string manifest = PENUMBRA_SOURCE_DIR "/permutations/default.json";
   std::string device;
+  int map_size = 512;
   app.add_option("--manifest", manifest, "Manifest whose variants are measured");
   app.add_option("--device", device, "Vulkan device: index or name substring");
-  CLI11_PARSE(app, argc, argv);
-  const penumbra::Status status = penumbra::run(manifest, device);
+  app.add_option("--map-size", map_size,
+                 "Shadow map width and height (default 512, the suite's; a larger one shows "
+                 "what the map's resolution costs)")
+      ->check(CLI::Range(64, 4096));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    std::cerr << "penumbra_bench_accuracy: " << e.what() << "\n";
+    return 2;
+  }
+  const penumbra::Status status = penumbra::run(manifest, device, map_size);
   if (!status) {
     std::cerr << "penumbra_bench_accuracy: " << status.error().to_string() << "\n";
     return 2;
