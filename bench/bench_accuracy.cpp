@@ -72,8 +72,8 @@ Status measure_scene(const Library& library, Engine& engine, const reference::Sc
       [&](PictureRun&& run) -> Status {
         if (!run.error.empty()) return make_error(Error::Kind::device, run.variant, run.error);
         if (!run.not_executed.empty()) return {};
-        const report::Figures f =
-            report::measure(view, exact, run.visibility, run.reference, run.texel_reads);
+        const report::Figures f = report::measure(view, exact, run.visibility, run.reference,
+                                                  run.reference_ambiguous, run.texel_reads);
         measured[run.variant] = {run.technique, f.exact_penumbra_mae, f.texel_reads_per_pixel,
                                  run.run_seconds * 1e3};
         return {};

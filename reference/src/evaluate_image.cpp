@@ -19,12 +19,12 @@ namespace {
 // the candidates' results differ by more than `tol`.
 template <typename Evaluate>
 Sample with_depth_slope(Evaluate evaluate_at, const Query& query, const FloatImage& receivers,
-                        int i, int j, double tol) {
+                        int i, int j, const LightParams& light, double tol) {
   Sample first;
   double lo = 0.0, hi = 0.0;
   bool ambiguous = false;
   bool any = false;
-  for (const auto& [dz_du, dz_dv] : depth_slope_candidates(receivers, i, j)) {
+  for (const auto& [dz_du, dz_dv] : depth_slope_candidates(receivers, i, j, light)) {
     Query q = query;
     q.dz_du = dz_du;
     q.dz_dv = dz_dv;
@@ -76,8 +76,9 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
         return mip ? evaluate(variant, map, *mip, light, q, precision, limits)
                    : evaluate(variant, map, light, q, precision, limits);
       };
-      const Sample sample =
-          plane ? with_depth_slope(evaluate_at, query, receivers, i, j, tol) : evaluate_at(query);
+      const Sample sample = plane
+                                ? with_depth_slope(evaluate_at, query, receivers, i, j, light, tol)
+                                : evaluate_at(query);
       result.visibility.at(i, j) = float(sample.visibility);
       result.ambiguous.at(i, j) = sample.ambiguous ? 1.0f : 0.0f;
     }

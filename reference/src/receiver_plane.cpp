@@ -26,17 +26,25 @@ Texel3 minus(const Texel3& a, const Texel3& b) {
 }  // namespace
 
 std::array<double, 2> depth_slope(double du_dx, double dv_dx, double dz_dx, double du_dy,
-                                  double dv_dy, double dz_dy) {
+                                  double dv_dy, double dz_dy, double max_slope) {
   const double det = du_dx * dv_dy - du_dy * dv_dx;
-  const double dz_du = (dv_dy * dz_dx - dv_dx * dz_dy) / det;
-  const double dz_dv = (du_dx * dz_dy - du_dy * dz_dx) / det;
-  // `!(<)` also takes NaN: a singular or degenerate quad has no plane.
-  if (!(std::abs(dz_du) < kMaxDepthSlope) || !(std::abs(dz_dv) < kMaxDepthSlope)) return {0, 0};
-  return {dz_du, dz_dv};
+  const double scaled_u = dv_dy * dz_dx - dv_dx * dz_dy;
+  const double scaled_v = du_dx * dz_dy - du_dy * dz_dx;
+  // Tested before dividing, as the shader: a singular quad has no plane;
+  // `!(<)` also takes NaN.
+  const double bound = max_slope * std::abs(det);
+  if (!(std::abs(scaled_u) < bound) || !(std::abs(scaled_v) < bound)) return {0, 0};
+  return {scaled_u / det, scaled_v / det};
 }
 
-std::vector<std::array<double, 2>> depth_slope_candidates(const FloatImage& receivers, int i,
-                                                          int j) {
+double max_depth_slope(const LightParams& light, double z) {
+  // One unit of u or v spans Fw z / n across the light's view at depth z.
+  return kMaxPlaneTangent * (light.frustum_width / light.near_plane) * z;
+}
+
+std::vector<std::array<double, 2>> depth_slope_candidates(const FloatImage& receivers, int i, int j,
+                                                          const LightParams& light) {
+  const double max_slope = max_depth_slope(light, at(receivers, i, j).z);
   const int x0 = i & ~1;
   const int y0 = j & ~1;
   std::vector<std::array<double, 2>> out;
@@ -44,7 +52,7 @@ std::vector<std::array<double, 2>> depth_slope_candidates(const FloatImage& rece
     const Texel3 dx = minus(at(receivers, x0 + 1, row), at(receivers, x0, row));
     for (int column : {x0, x0 + 1}) {
       const Texel3 dy = minus(at(receivers, column, y0 + 1), at(receivers, column, y0));
-      out.push_back(depth_slope(dx.u, dx.v, dx.z, dy.u, dy.v, dy.z));
+      out.push_back(depth_slope(dx.u, dx.v, dx.z, dy.u, dy.v, dy.z, max_slope));
     }
   }
   return out;

@@ -45,14 +45,14 @@ Region region(const reference::StageView& view, const FloatImage& exact) {
 
 Figures measure(const reference::StageView& view, const FloatImage& exact,
                 const FloatImage& visibility, const FloatImage& reference,
-                const FloatImage& texel_reads) {
+                const FloatImage& reference_ambiguous, const FloatImage& texel_reads) {
   Accumulator penumbra, all, against_reference, reads;
   for (std::size_t i = 0; i < view.surfaces.size(); ++i) {
     if (!reference::receives_light(view.surfaces[i])) continue;
     const double v = visibility.data[i];
     if (in_penumbra(exact.data[i])) penumbra.add(v, exact.data[i]);
     all.add(v, exact.data[i]);
-    against_reference.add(v, reference.data[i]);
+    if (reference_ambiguous.data[i] == 0.0f) against_reference.add(v, reference.data[i]);
     reads.add(texel_reads.data[i], 0.0);
   }
   return {penumbra.mean(),          penumbra.rms(),        penumbra.max, all.rms(), all.max,

@@ -71,8 +71,8 @@ class ReportWriter {
                                    report::heatmap(view_, run.visibility, exact_)));
     PENUMBRA_TRY(report::write_png(dir_ / (base + "-reference-error.png"),
                                    report::heatmap(view_, run.visibility, run.reference)));
-    const report::Figures figures =
-        report::measure(view_, exact_, run.visibility, run.reference, run.texel_reads);
+    const report::Figures figures = report::measure(view_, exact_, run.visibility, run.reference,
+                                                    run.reference_ambiguous, run.texel_reads);
     row["status"] = "ok";
     row["figures"] = report::to_json(figures);
     row["run_ms"] = run.run_seconds * 1e3;

@@ -23,17 +23,25 @@ float penumbra_texel_reads;
 // not shadow itself across a wide filter.
 vec2 penumbra_depth_slope;
 
-// Slopes at or beyond this (z per unit of uv) are taken as no plane.
-#define PENUMBRA_MAX_DEPTH_SLOPE 1000000.0
+// A receiver steeper than this, in z per unit of distance across the
+// light's view (about 84 degrees from facing the light), has no plane: a
+// quad across a depth discontinuity gives such slopes.
+#define PENUMBRA_MAX_PLANE_TANGENT 10.0
 
-// (dz/du, dz/dv) from the screen derivatives of (u, v, z): the inverse
-// Jacobian of (u, v) times (dz/dx, dz/dy); (0, 0) where that is singular,
-// not finite (`!(<)` takes NaN) or too steep.
-vec2 receiver_depth_slope(vec3 dx, vec3 dy) {
+// (dz/du, dz/dv) at linear depth z from the screen derivatives of (u, v, z):
+// the inverse Jacobian of (u, v) times (dz/dx, dz/dy); (0, 0) where that is
+// singular or too steep.
+vec2 receiver_depth_slope(vec3 dx, vec3 dy, float z) {
   float det = dx.x * dy.y - dy.x * dx.y;
-  vec2 slope = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
-  bool planar = abs(slope.x) < PENUMBRA_MAX_DEPTH_SLOPE && abs(slope.y) < PENUMBRA_MAX_DEPTH_SLOPE;
-  return planar ? slope : vec2(0.0);
+  vec2 scaled = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z);
+  // One unit of u or v spans Fw z / n across the light's view at depth z.
+  float limit = PENUMBRA_MAX_PLANE_TANGENT * (LIGHT_FRUSTUM_WIDTH / NEAR_PLANE) * z;
+  // Tested before dividing (`<` is false for NaN and infinities), and 0 / 0
+  // (a quad whose row and column see the same two receivers) never computed:
+  // hlsl_dx9's bytecode let that NaN through the select.
+  bool planar = all(lessThan(abs(scaled), vec2(limit * abs(det))));
+  float divisor = planar ? det : 1.0;
+  return planar ? scaled / divisor : vec2(0.0);
 }
 
 // z_r moved along the receiver's plane to a sample at uv offset `offset`.

@@ -15,7 +15,7 @@ void main() {
   penumbra_texel_reads = 0.0;
   vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
 #if PENUMBRA_RECEIVER_PLANE
-  penumbra_depth_slope = receiver_depth_slope(dFdx(query), dFdy(query));
+  penumbra_depth_slope = receiver_depth_slope(dFdx(query), dFdy(query), query.z);
 #endif
   // The receiver's pixel, counted as the receivers image counts it on every
   // API (gl_FragCoord's rows run the other way on OpenGL, and Direct3D 9's

@@ -38,7 +38,7 @@ TEST(Figures, MeasureOnlyLitFacesAndNameTheirTruth) {
   const FloatImage visibility = row({0.25f, 0.875f, 0.0f, 0.0f});
   const FloatImage reference = row({0.25f, 1.0f, 0.0f, 1.0f});
   const FloatImage reads = row({4.0f, 8.0f, 100.0f, 100.0f});
-  const Figures f = measure(view, exact, visibility, reference, reads);
+  const Figures f = measure(view, exact, visibility, reference, row({0, 0, 0, 0}), reads);
   EXPECT_DOUBLE_EQ(f.exact_penumbra_mae, 0.25);
   EXPECT_DOUBLE_EQ(f.exact_penumbra_rmse, 0.25);
   EXPECT_DOUBLE_EQ(f.exact_penumbra_max, 0.25);
@@ -60,9 +60,23 @@ TEST(Figures, ANanIsTheLargestError) {
   const auto view = four_pixels();
   const FloatImage exact = row({0.5f, 1.0f, 1.0f, 1.0f});
   const FloatImage visibility = row({NAN, 1.0f, 1.0f, 1.0f});
-  const Figures f = measure(view, exact, visibility, exact, row({0, 0, 0, 0}));
+  const Figures f = measure(view, exact, visibility, exact, row({0, 0, 0, 0}), row({0, 0, 0, 0}));
   EXPECT_TRUE(std::isinf(f.exact_penumbra_max));
   EXPECT_TRUE(std::isinf(f.reference_max));
+}
+
+// Where the reference is undecided (a receiver_plane quad across a depth
+// step), the run is not held to it, as verify does not; exact still counts.
+TEST(Figures, PixelsTheReferenceLeavesUndecidedAreNotComparedToIt) {
+  const auto view = four_pixels();
+  const FloatImage exact = row({0.5f, 1.0f, 1.0f, 1.0f});
+  const FloatImage visibility = row({0.5f, 0.0f, 1.0f, 1.0f});
+  const FloatImage reference = row({0.5f, 1.0f, 1.0f, 1.0f});
+  const Figures f =
+      measure(view, exact, visibility, reference, row({0, 1, 0, 0}), row({0, 0, 0, 0}));
+  EXPECT_DOUBLE_EQ(f.reference_max, 0.0);
+  EXPECT_DOUBLE_EQ(f.reference_mae, 0.0);
+  EXPECT_DOUBLE_EQ(f.exact_max, 1.0);
 }
 
 TEST(Pictures, ShadowIsDarkerThanLightAndHeatmapsRiseWithError) {

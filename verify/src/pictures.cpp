@@ -60,16 +60,19 @@ class TargetStages {
 };
 
 // The CPU reference of what the run shows (screen_blur: the reference
-// factor blurred), on the map the target's own depth pass rendered.
-Result<FloatImage> reference_image(const Variant& variant, Target target,
-                                   const SceneFixture& fixture,
-                                   const reference::SamplingPrecision& precision) {
+// factor blurred, every pixel decided), on the map the target's own depth
+// pass rendered.
+Result<reference::ReferenceImage> reference_image(const Variant& variant, Target target,
+                                                  const SceneFixture& fixture,
+                                                  const reference::SamplingPrecision& precision) {
   PENUMBRA_TRY_ASSIGN(
       auto expected,
       reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
                                 fixture.receivers, precision, reference::shader_limits(target)));
-  if (variant.technique != Technique::screen_blur) return std::move(expected.visibility);
-  return reference::screen_blur(variant, expected.visibility, fixture.receivers);
+  if (variant.technique != Technique::screen_blur) return expected;
+  FloatImage blurred = reference::screen_blur(variant, expected.visibility, fixture.receivers);
+  FloatImage none(blurred.width, blurred.height, 1);
+  return reference::ReferenceImage{std::move(blurred), std::move(none)};
 }
 
 Status run_passes(PictureRun& run, const LoadedPasses& passes, const SceneFixture& fixture,
@@ -113,7 +116,7 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
     for (Target target : variant.targets) {
       if (!wanted(options.targets, target)) continue;
       // The reference depends on the target (its shader limits), not the path.
-      std::optional<Result<FloatImage>> expected;
+      std::optional<Result<reference::ReferenceImage>> expected;
       for (const std::unique_ptr<Backend>& backend : backends) {
         if (!backend->executes(target)) continue;
         PictureRun run;
@@ -132,12 +135,14 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
             PENUMBRA_TRY(run_passes(run, passes, fixture, options.timed_runs));
             if (!expected) expected = reference_image(variant, target, fixture, precision);
             if (!*expected) return expected->error();
-            run.reference = **expected;
+            run.reference = (*expected)->visibility;
+            run.reference_ambiguous = (*expected)->ambiguous;
             return {};
           }();
           if (!ran) {
             run.error = ran.error().to_string();
-            run.visibility = run.reference = run.texel_reads = FloatImage();
+            run.visibility = run.reference = run.reference_ambiguous = run.texel_reads =
+                FloatImage();
           }
         }
         PENUMBRA_TRY(sink(std::move(run)));

@@ -16,7 +16,9 @@ struct Figures {
   double exact_penumbra_max = 0.0;   // largest of the same
   double exact_rmse = 0.0;           // over every measured pixel: leaks and acne count too
   double exact_max = 0.0;
-  double reference_mae = 0.0;  // mean |visibility - CPU reference| over every measured pixel
+  // |visibility - CPU reference| over the measured pixels the reference
+  // decides (not ambiguous), as verify compares them.
+  double reference_mae = 0.0;
   double reference_max = 0.0;
   double texel_reads_per_pixel = 0.0;  // the query's mean texel reads per measured pixel
   double texel_reads_max = 0.0;
@@ -30,9 +32,10 @@ struct Region {
 
 Region region(const reference::StageView& view, const FloatImage& exact);
 
+// `reference_ambiguous`: 1 where the reference is undecided (PictureRun).
 Figures measure(const reference::StageView& view, const FloatImage& exact,
                 const FloatImage& visibility, const FloatImage& reference,
-                const FloatImage& texel_reads);
+                const FloatImage& reference_ambiguous, const FloatImage& texel_reads);
 
 nlohmann::json to_json(const Figures& figures);
 

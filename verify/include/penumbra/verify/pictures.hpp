@@ -42,6 +42,9 @@ struct PictureRun {
   // blurred factor), 1 channel, and the CPU reference of the same image.
   FloatImage visibility;
   FloatImage reference;
+  // 1 where the reference leaves the pixel undecided (verify's "ambiguous":
+  // its value depends on choices a GPU may make), else 0; screen_blur: none.
+  FloatImage reference_ambiguous;
   FloatImage texel_reads;    // the query's per-pixel texel reads
   double run_seconds = 0.0;  // the fastest timed run of the passes, read-back included
 };
