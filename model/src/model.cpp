@@ -95,8 +95,7 @@ std::optional<int> walk_step_bound(const Variant& variant, int limit) {
     const int kernel = *variant.keys.kernel;
     own = brute_force ? kernel * kernel : minmax_max_steps(kernel);
   }
-  if (variant.technique == Technique::backprojection ||
-      variant.technique == Technique::bitmask_backprojection) {
+  if (walks_backprojection(variant.technique)) {
     // A walk steps at most twice per visit (a visit, and the rise from the
     // children of a visited node); brute force reads a texel a step.
     const int nodes = variant.keys.max_nodes.value_or(kDefaultMaxNodes);
@@ -104,6 +103,10 @@ std::optional<int> walk_step_bound(const Variant& variant, int limit) {
   }
   if (own && limit > 0) own = std::min(*own, limit);
   return own;
+}
+
+bool walks_backprojection(Technique technique) {
+  return technique == Technique::backprojection || technique == Technique::bitmask_backprojection;
 }
 
 std::vector<float> gaussian_weights(int radius) {

@@ -78,8 +78,7 @@ std::string variant_header(const Variant* variant, Target target) {
     if (steps) out += "#define MINMAX_MAX_STEPS " + std::to_string(*steps) + "\n";
     out += "#define MINMAX_PCF_INV_AREA " + glsl_float(minmax_pcf_inv_area(*keys.kernel)) + "\n";
   }
-  if (variant->technique == Technique::backprojection ||
-      variant->technique == Technique::bitmask_backprojection) {
+  if (walks_backprojection(variant->technique)) {
     out += "#define BACKPROJECTION_MAX_NODES " +
            std::to_string(keys.max_nodes.value_or(kDefaultMaxNodes)) + "\n";
     out += "#define BACKPROJECTION_MAX_STEPS " + std::to_string(*steps) + "\n";

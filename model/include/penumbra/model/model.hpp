@@ -194,4 +194,9 @@ bool variant_less(const Variant& a, const Variant& b);
 // the reference models it.
 std::optional<int> walk_step_bound(const Variant& variant, int limit = 0);
 
+// backprojection and bitmask_backprojection: the techniques whose shaders
+// run the back-projection walk (common/backprojection_walk.glsl), bounded by
+// `max_nodes`.
+bool walks_backprojection(Technique technique);
+
 }  // namespace penumbra
