@@ -67,15 +67,15 @@ class LightSamples {
                             t[2] - (shared.x1 ? 0.0 : e[2]), t[3] - (shared.y1 ? 0.0 : e[3])};
     for (int row = 0; row < side_; ++row) {
       maybe_[std::size_t(row)] |= row_mask(maybe, row);
-      sure_[std::size_t(row)] |= row_mask(sure, row);
+      // Counted as they are set, as the shader's state.set: covered() asks
+      // after every step of the walk.
+      const std::uint32_t fresh = row_mask(sure, row) & ~sure_[std::size_t(row)];
+      sure_[std::size_t(row)] |= fresh;
+      set_ += std::popcount(fresh);
     }
   }
-  int set() const {
-    int count = 0;
-    for (std::uint32_t row : sure_) count += std::popcount(row);
-    return count;
-  }
-  bool full() const { return set() == side_ * side_; }
+  int set() const { return set_; }
+  bool full() const { return set_ == side_ * side_; }
   // Some bit may be set by the shader that the reference leaves clear.
   bool undecided() const {
     for (std::size_t row = 0; row < sure_.size(); ++row) {
@@ -101,6 +101,7 @@ class LightSamples {
   double half_;
   std::vector<std::uint32_t> sure_;
   std::vector<std::uint32_t> maybe_;
+  int set_ = 0;  // bits of sure_ set
 };
 
 }  // namespace
