@@ -33,23 +33,28 @@ Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
   return {};
 }
 
+// "spirv, glsl450, ..." for the targets `technique` can be emitted for.
+std::string emittable_targets(Technique technique) {
+  std::string out;
+  for (Target target : kAllTargets) {
+    if (can_emit(technique, target)) {
+      out += (out.empty() ? "" : ", ") + std::string(to_string(target));
+    }
+  }
+  return out;
+}
+
 // A technique whose shader keeps integer bits cannot be emitted for a target
 // without integers (hlsl_dx9): the set is refused, naming where its targets
 // came from, rather than a target silently dropped.
 Status check_set_targets(const JsonNode& node, const AxisValues& axes) {
   for (Technique technique : axes.technique) {
-    std::string allowed;
-    for (Target target : kAllTargets) {
-      if (can_emit(technique, target)) {
-        allowed += (allowed.empty() ? "" : ", ") + std::string(to_string(target));
-      }
-    }
     for (Target target : axes.target) {
       if (can_emit(technique, target)) continue;
       const std::string what = "technique " + std::string(to_string(technique)) +
                                " cannot be emitted for " + std::string(to_string(target)) +
                                " (Shader Model 3 has no integer bit operations); allowed " +
-                               "targets: " + allowed;
+                               "targets: " + emittable_targets(technique);
       if (node.has("target")) return node.member("target").error(what);
       return node.error(what + " (this set takes the top-level targets; give it a 'target' list)");
     }
