@@ -122,9 +122,10 @@ std::vector<float> gaussian_weights(int radius) {
   return out;
 }
 
-// Keys are appended in a fixed order (k, b, p, disk, traversal, n, r, depth_aware, bits, rotation,
-// receiver_plane) and only when set (depth_aware only when true), so the name is total over any
-// VariantKeys and stays stable across runs.
+// Keys are appended in a fixed order (k, b, p, disk, traversal, n, r,
+// depth_aware, bits, rotation, receiver_plane) and only when set (the flags
+// only when true), so the name is total over any VariantKeys and stays
+// stable across runs.
 std::string variant_name(Technique technique, const VariantKeys& keys) {
   std::string name(to_string(technique));
   if (keys.kernel) name += "_k" + std::to_string(*keys.kernel);

@@ -25,8 +25,9 @@ Scene steps() {
 
 // A receiver tilted in x and y (z ~ 16.3 to 17.8), two occluders whose
 // footprints overlap (the nearer one wins in the map), one that leaves the
-// map across a corner, and one that crosses the receiver. Its map is neither square nor a power of
-// two, so the min-max mip's partial nodes at the right and top edges are exercised.
+// map across a corner, and one that crosses the receiver. Its map is
+// neither square nor a power of two, so the min-max mip's partial nodes at
+// the right and top edges are exercised.
 Scene tilted_overlap() {
   Scene scene;
   scene.name = "tilted_overlap";

@@ -11,8 +11,8 @@
 // BACKPROJECTION_MAX_STEPS its steps, which a target may cap lower.
 // The including technique defines, before including this file, its
 // BackprojectionState, backprojection_add(state, rect), which returns the
-// state after one projected rectangle, and backprojection_covered(state), true once the
-// light is covered.
+// state after one projected rectangle, and backprojection_covered(state),
+// true once the light is covered.
 #ifndef PENUMBRA_BACKPROJECTION_WALK_GLSL
 #define PENUMBRA_BACKPROJECTION_WALK_GLSL
 
@@ -52,11 +52,11 @@ vec4 backprojection_window(vec3 query, float z_min) {
                             floor((query.xy + half_width) * map_size) + 1.0);
 }
 
-// Returns `state` after handing backprojection_add() the projection of every texel of `window` with
-// normalized depth below `limit` (it occludes and lies in front of the
-// receiver), flat nodes whole, until backprojection_covered(), after
-// BACKPROJECTION_MAX_NODES nodes or texels, or after
-// BACKPROJECTION_MAX_STEPS steps.
+// Returns `state` after handing backprojection_add() the projection of
+// every texel of `window` with normalized depth below `limit` (it occludes
+// and lies in front of the receiver), flat nodes whole, until
+// backprojection_covered(), after BACKPROJECTION_MAX_NODES nodes or texels,
+// or after BACKPROJECTION_MAX_STEPS steps.
 BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
                                         BackprojectionState state) {
   vec2 receiver_slope = backprojection_slope(query.xy);

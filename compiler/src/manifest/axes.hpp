@@ -44,8 +44,8 @@ std::string_view axis_name(Axis axis);
 // ignores the keys it does not take.
 bool uses(Technique technique, Axis axis);
 // Whether a set may leave the key out for `technique` (its description's
-// optional_keys: traversal, max_nodes, depth_aware, rotation and receiver_plane have
-// defaults).
+// optional_keys: traversal, max_nodes, depth_aware, rotation and
+// receiver_plane have defaults).
 bool is_optional(Technique technique, Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
 // "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or

@@ -18,8 +18,9 @@ namespace {
 using manifest_detail::Axis;
 using manifest_detail::uses;
 
-// Multiplies every keys of `out` by the axis's values when the technique
-// uses the axis and the set gives it (an optional key left out stays unset).
+// Replaces each VariantKeys of `out` by one copy per value of the axis, when
+// the technique uses the axis and the set gives it (an optional key left
+// out stays unset).
 template <typename T>
 void multiply(std::vector<VariantKeys>& out, Technique technique, Axis axis,
               const std::vector<T>& values, std::optional<T> VariantKeys::*member) {
