@@ -2,7 +2,9 @@
 // (technique_table.cpp): what a variant read from index.json must carry.
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "technique_parts.hpp"
@@ -15,6 +17,16 @@ constexpr double kBlurWeightSumSlack = 1e-5;
 
 Error bad_variant(const Variant& variant, std::string message) {
   return make_error(Error::Kind::bad_input, variant.name, std::move(message));
+}
+
+// A key with one value besides its default (unset): `value` is unset or `only`.
+Status check_single_value(const Variant& variant, std::string_view key,
+                          const std::optional<std::string>& value, std::string_view only) {
+  if (value && *value != only) {
+    return bad_variant(variant, std::string(key) + " is \"" + *value + "\" but must be \"" +
+                                    std::string(only) + "\"");
+  }
+  return {};
 }
 
 }  // namespace
@@ -34,12 +46,7 @@ Status check_disk(const Variant& variant, const std::optional<Disk>& disk, const
 
 // The only traversal besides the default (the min-max mip) is a brute-force loop.
 Status check_traversal(const Variant& variant) {
-  const auto& traversal = variant.keys.traversal;
-  if (traversal && *traversal != kBruteForceTraversal) {
-    return bad_variant(variant, "traversal is \"" + *traversal + "\" but must be \"" +
-                                    std::string(kBruteForceTraversal) + "\"");
-  }
-  return {};
+  return check_single_value(variant, "traversal", variant.keys.traversal, kBruteForceTraversal);
 }
 
 // screen_blur's radius and baked weights: 2R + 1 positive, symmetric taps
@@ -96,13 +103,9 @@ Status check_light_bits(const Variant& variant) {
   return {};
 }
 
+// The only rotation besides the default (the baked set at every pixel).
 Status check_rotation(const Variant& variant) {
-  const auto& rotation = variant.keys.rotation;
-  if (rotation && *rotation != kIgnRotation) {
-    return bad_variant(variant, "rotation is \"" + *rotation + "\" but must be \"" +
-                                    std::string(kIgnRotation) + "\"");
-  }
-  return {};
+  return check_single_value(variant, "rotation", variant.keys.rotation, kIgnRotation);
 }
 
 }  // namespace penumbra::reference::detail
