@@ -42,6 +42,17 @@ Status needs_pcf_disk(const Variant& v) {
   return check_disk(v, v.pcf_disk, "pcf", v.keys.pcf_samples, "pcf_samples");
 }
 
+// The back-projections' result, `walk()`, for an area light. A point light
+// (L = 0) has no area to cover: its shadow is the hard test of the texel the
+// receiver's ray to the light crosses.
+template <typename Walk>
+Sample unless_point_light(const ReceiverInputs& in, Walk walk) {
+  if (!(in.light.light_world_size > 0.0)) {
+    return point_compare(in.map, in.query.u, in.query.v, in.z_ref, in.precision);
+  }
+  return walk();
+}
+
 // A sample with `ambiguous` also set where a placed point was.
 Sample with_seam(Sample sample, bool seam) {
   sample.ambiguous = sample.ambiguous || seam;
@@ -103,13 +114,10 @@ constexpr TechniqueReference kReferences[] = {
        return check_traversal(v);
      },
      [](const ReceiverInputs& in) {
-       // A point light (L = 0) has no area to cover: its shadow is the hard
-       // test of the texel the receiver's ray to the light crosses.
-       if (!(in.light.light_world_size > 0.0)) {
-         return point_compare(in.map, in.query.u, in.query.v, in.z_ref, in.precision);
-       }
-       return backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
-                             capped_walk_steps(in));
+       return unless_point_light(in, [&] {
+         return backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
+                               capped_walk_steps(in));
+       });
      },
      // Exact compares; only float32 sums of patch areas differ.
      [](const SamplingPrecision&) { return 1e-4; }},
@@ -136,11 +144,10 @@ constexpr TechniqueReference kReferences[] = {
        return check_traversal(v);
      },
      [](const ReceiverInputs& in) {
-       if (!(in.light.light_world_size > 0.0)) {
-         return point_compare(in.map, in.query.u, in.query.v, in.z_ref, in.precision);
-       }
-       return bitmask_backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
-                                     *walk_step_bound(in.variant, in.limits.walk_steps));
+       return unless_point_light(in, [&] {
+         return bitmask_backprojection(in.map, *in.mip, in.light, in.query, in.variant.keys,
+                                       *walk_step_bound(in.variant, in.limits.walk_steps));
+       });
      },
      // Whole bits over a power-of-two N: exact, undecided bits aside.
      [](const SamplingPrecision&) { return 0.0; }},
