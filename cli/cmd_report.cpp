@@ -20,6 +20,7 @@ struct ReportArgs {
   std::vector<std::string> targets;
   std::string hlsl_compiler;
   bool no_gl = false;
+  bool no_wine = false;
   bool validation = false;
   bool verbose = false;
 };
@@ -31,6 +32,7 @@ Status run_report(const ReportArgs& args) {
   ReportOptions options;
   options.pictures.variants = args.variants;
   options.pictures.gl = !args.no_gl;
+  options.pictures.wine = !args.no_wine;
   options.pictures.bytecode = {.compiler = compiler};
   options.final_dir = out;
   for (const std::string& name : args.targets) {
@@ -74,6 +76,9 @@ void add_report_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--target", args->targets, "Only these targets (repeatable)");
   cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
+  cmd->add_flag(
+      "--no-wine", args->no_wine,
+      "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {

@@ -21,6 +21,7 @@ struct VerifyArgs {
   std::string shard;  // "I/N"; empty: the whole library
   std::string junit;  // JUnit report to write; empty: none
   bool no_gl = false;
+  bool no_wine = false;
   bool validation = false;
   bool verbose = false;
 };
@@ -33,8 +34,9 @@ std::string run_label(const VariantRun& v, const TargetRun& t) {
 
 void print_summary(const VerifyReport& report) {
   for (const DepthCheck& c : report.depth_checks) {
-    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass [" << to_string(c.target) << "] on "
-              << c.scene << ": " << c.mismatched << " of " << c.texels << " texels off\n";
+    std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass [" << to_string(c.target)
+              << (c.backend == "vulkan" ? "" : " on " + c.backend) << "] on " << c.scene << ": "
+              << c.mismatched << " of " << c.texels << " texels off\n";
   }
   for (const MinmaxCheck& c : report.minmax_checks) {
     std::cout << (c.pass ? "PASS " : "FAIL ") << "min-max mip [" << to_string(c.target) << "] on "
@@ -103,6 +105,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                   "Only the I-th of N disjoint slices of the checks, I from 1 (docs/scale-out.md)");
   cmd->add_option("--junit", args->junit, "Also write a JUnit XML report to this file");
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
+  cmd->add_flag(
+      "--no-wine", args->no_wine,
+      "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {
@@ -147,6 +152,7 @@ void add_verify_command(CLI::App& app, int& exit_code) {
     VerifyOptions options{.variants = args->variants,
                           .targets = {},
                           .gl = !args->no_gl,
+                          .wine = !args->no_wine,
                           .bytecode = {.compiler = *compiler},
                           .shard = shard};
     for (const std::string& name : args->targets) {

@@ -90,7 +90,10 @@ JunitReport to_junit(const VerifyReport& report) {
   suite.seconds = report.seconds;
   for (const DepthCheck& c : report.depth_checks) {
     suite.cases.push_back(
-        make_case("depth_pass", std::string(to_string(c.target)) + "/" + c.scene, c.seconds, c.pass,
+        make_case("depth_pass",
+                  std::string(to_string(c.target)) +
+                      (c.backend == "vulkan" ? "" : "@" + c.backend) + "/" + c.scene,
+                  c.seconds, c.pass,
                   std::to_string(c.mismatched) + " of " + std::to_string(c.texels) +
                       " texels off the ray cast (max error " + number(c.max_abs_error) + ")"));
   }

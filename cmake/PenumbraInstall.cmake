@@ -45,8 +45,10 @@ if(PENUMBRA_BUILD_RUNTIME)
   set_target_properties(penumbra_runtime PROPERTIES EXPORT_NAME runtime)
   target_link_libraries(penumbra_runtime INTERFACE penumbra_vulkan penumbra_verify
                                                    penumbra_reference)
-  set(_runtime_targets penumbra_runtime penumbra_vulkan penumbra_verify penumbra_reference)
-  set(_runtime_headers engines/vulkan/include/ verify/include/ reference/include/)
+  set(_runtime_targets penumbra_runtime penumbra_vulkan penumbra_verify penumbra_reference
+                       penumbra_d3d)
+  set(_runtime_headers engines/vulkan/include/ verify/include/ reference/include/
+                       engines/d3d/include/)
   if(PENUMBRA_BUILD_GL)
     target_link_libraries(penumbra_runtime INTERFACE penumbra_gl)
     list(APPEND _runtime_targets penumbra_gl)

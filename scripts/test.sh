@@ -21,6 +21,7 @@ install_missing_packages
 install_hlsl_compiler
 if [ "$sanitize" -eq 1 ]; then
   configure_and_build build-sanitize all -DPENUMBRA_SANITIZE=ON
+  start_wine_session  # before LD_PRELOAD: Wine is not ours to sanitize
   # Leaks inside the graphics drivers (Mesa's lavapipe and EGL, LLVM) are
   # theirs, not ours: tests/sanitize/lsan.supp names them.
   # The Vulkan loader and EGL unload the software drivers (lavapipe, and
@@ -37,5 +38,6 @@ if [ "$sanitize" -eq 1 ]; then
   exit 0
 fi
 configure_and_build build
+start_wine_session
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"
 bash scripts/fuzz.sh

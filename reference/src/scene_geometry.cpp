@@ -50,11 +50,13 @@ FloatImage receivers(const Scene& scene, int width, int height) {
   return image;
 }
 
-FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_z) {
+FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_z,
+                          std::array<double, 2> within) {
   FloatImage image(width, height, 1);
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
-      const UV slope = ray_slope(scene.light, (i + 0.5) / width, (j + 0.5) / height);
+      const UV slope =
+          ray_slope(scene.light, (i + 0.5 + within[0]) / width, (j + 0.5 + within[1]) / height);
       double nearest = far_z;
       for (const Rect& r : scene.occluders) {
         const double x = slope.u * r.z;

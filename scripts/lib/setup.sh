@@ -11,6 +11,9 @@ PENUMBRA_PACKAGES=(
   libpng-dev
   chromium
   clang libclang-rt-14-dev  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
+  # The real Direct3D 9/10/11 runtimes (Wine's, over llvmpipe under Xvfb) and
+  # the compiler of penumbra_d3d_host.exe, which runs on them.
+  wine64 wine xvfb xauth g++-mingw-w64-x86-64
 )
 
 install_missing_packages() {
@@ -67,4 +70,37 @@ configure_and_build() {
   cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON \
     -DPENUMBRA_WERROR=ON "${hlsl[@]}" "$@"
   cmake --build "$build_dir" --parallel "$(nproc)" --target "$target"
+}
+
+# start_wine_session: one Xvfb display and one private Wine prefix for the
+# whole suite, exported as DISPLAY and WINEPREFIX (verify's Direct3D paths
+# use them instead of starting their own per process), with a persistent
+# wineserver so that each host process starts in about a second. Ended, and
+# the prefix removed, when the calling shell exits.
+start_wine_session() {
+  PENUMBRA_WINE_DIR="$(mktemp -d "${TMPDIR:-/tmp}/penumbra-suite-wine-XXXXXX")"
+  Xvfb -displayfd 3 -screen 0 640x480x24 -nolisten tcp 3>"$PENUMBRA_WINE_DIR/display" \
+    >/dev/null 2>&1 &
+  PENUMBRA_XVFB_PID=$!
+  trap end_wine_session EXIT
+  local waited=0
+  until [ -s "$PENUMBRA_WINE_DIR/display" ] || [ "$waited" -ge 300 ]; do
+    sleep 0.1
+    waited=$((waited + 1))
+  done
+  if [ ! -s "$PENUMBRA_WINE_DIR/display" ]; then
+    echo "penumbra: error: Xvfb named no display within 30 s" >&2
+    return 1
+  fi
+  export DISPLAY=":$(head -n 1 "$PENUMBRA_WINE_DIR/display")"
+  export WINEPREFIX="$PENUMBRA_WINE_DIR/prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
+  wineboot -i >/dev/null 2>&1
+  wineserver -p
+  echo "penumbra: Wine prefix $WINEPREFIX on display $DISPLAY"
+}
+
+end_wine_session() {
+  if [ -n "${WINEPREFIX:-}" ]; then wineserver -k >/dev/null 2>&1 || true; fi
+  if [ -n "${PENUMBRA_XVFB_PID:-}" ]; then kill "$PENUMBRA_XVFB_PID" 2>/dev/null || true; fi
+  if [ -n "${PENUMBRA_WINE_DIR:-}" ]; then rm -rf "$PENUMBRA_WINE_DIR"; fi
 }

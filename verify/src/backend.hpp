@@ -30,6 +30,11 @@ struct SceneOutput {
   FloatImage visibility;             // the query's .x (screen_blur: the unblurred factor)
   FloatImage texel_reads;            // the query's .y (docs/shader-interface.md)
   std::optional<ChainOutput> chain;  // screen_blur only
+  // A path that draws the scene's map with the target's depth pass itself:
+  // that map as linear z, which the reference then reads instead of the
+  // fixture's, and, on the run that drew it, its check against the ray cast.
+  std::shared_ptr<const FloatImage> own_linear_depth;
+  std::optional<DepthCheck> own_depth_check;
 };
 
 // A variant's passes for one target, loaded by a backend.
@@ -72,10 +77,11 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
 
 // Every path, in report order: Vulkan, the Direct3D bytecode through
-// `bytecode`, and OpenGL (not executed unless `gl`) on the device `engine`
-// runs on (backend_list.cpp). A new path is a new backend file and a line there.
+// `bytecode`, OpenGL (not executed unless `gl`) on the device `engine` runs
+// on, and the Direct3D 9, 10 and 11 runtimes under Wine (not executed unless
+// `wine`) (backend_list.cpp). A new path is a new backend file and a line there.
 std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTranslator bytecode,
-                                                   bool gl);
+                                                   bool gl, bool wine);
 
 // Every target on the Vulkan engine, on the maps (and min-max mips) the
 // scenes hold (vulkan_backend.cpp).
@@ -91,5 +97,13 @@ std::unique_ptr<Backend> bytecode_backend(Engine& engine, BytecodeTranslator tra
 // scenes' normalized depth (gl_backend.cpp). `device` selects the GL device
 // like GlEngineOptions; `requested` false reports every run not executed.
 std::unique_ptr<Backend> gl_backend(bool requested, const std::string& device);
+
+// The Direct3D targets' bytecode on real Direct3D runtimes, Wine's under
+// Xvfb (penumbra::d3d): hlsl_dx9 on d3d9, hlsl_dx10 on d3d10, hlsl_dx11 on
+// d3d11, one backend each, sharing one Wine session started on first use
+// (wine_backend.cpp). Each draws every scene's map with the target's own
+// depth pass and runs the queries on it. `requested` false reports every
+// run not executed.
+std::vector<std::unique_ptr<Backend>> wine_backends(bool requested);
 
 }  // namespace penumbra

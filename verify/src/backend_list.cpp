@@ -3,13 +3,14 @@
 namespace penumbra {
 
 std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTranslator bytecode,
-                                                   bool gl) {
+                                                   bool gl, bool wine) {
   std::vector<std::unique_ptr<Backend>> backends;
   backends.push_back(vulkan_backend(engine));
   backends.push_back(bytecode_backend(engine, std::move(bytecode)));
   // On lavapipe, GL runs on llvmpipe too, so both paths use one rasterizer.
   const bool lavapipe = engine.device_info().name.find("llvmpipe") != std::string::npos;
   backends.push_back(gl_backend(gl, lavapipe ? "llvmpipe" : ""));
+  for (auto& backend : wine_backends(wine)) backends.push_back(std::move(backend));
   return backends;
 }
 

@@ -155,7 +155,8 @@ class GlBackend final : public Backend {
     auto output = engine_->run_query({pass(texts.query), minmax}, fixture.normalized_depth,
                                      fixture.receivers, fixture.params);
     if (!output) return output.error();
-    return SceneOutput{std::move(output->visibility), std::move(output->texel_reads), std::nullopt};
+    return SceneOutput{std::move(output->visibility), std::move(output->texel_reads), std::nullopt,
+                       nullptr, std::nullopt};
   }
 
   Result<SceneOutput> run_screen_blur(const GlScreenBlurTexts& texts, const SceneFixture& fixture) {
@@ -164,7 +165,8 @@ class GlBackend final : public Backend {
         fixture.normalized_depth, fixture.receivers, fixture.colour, fixture.params);
     if (!output) return output.error();
     return SceneOutput{std::move(output->factor), std::move(output->texel_reads),
-                       ChainOutput{std::move(output->blurred), std::move(output->composite)}};
+                       ChainOutput{std::move(output->blurred), std::move(output->composite)},
+                       nullptr, std::nullopt};
   }
 
   std::unique_ptr<GlEngine> engine_;

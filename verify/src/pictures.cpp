@@ -60,23 +60,25 @@ class TargetStages {
 };
 
 // The CPU reference of what the run shows (screen_blur: the reference
-// factor blurred, every pixel decided), on the map the target's own depth
-// pass rendered.
+// factor blurred, every pixel decided), on `linear_depth`: the map the
+// target's own depth pass rendered (the fixture's, or the path's own).
 Result<reference::ReferenceImage> reference_image(const Variant& variant, Target target,
                                                   const SceneFixture& fixture,
+                                                  const FloatImage& linear_depth,
                                                   const reference::SamplingPrecision& precision) {
   PENUMBRA_TRY_ASSIGN(
       auto expected,
-      reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
-                                fixture.receivers, precision, reference::shader_limits(target)));
+      reference::evaluate_image(variant, linear_depth, fixture.scene.light, fixture.receivers,
+                                precision, reference::shader_limits(target)));
   if (variant.technique != Technique::screen_blur) return expected;
   FloatImage blurred = reference::screen_blur(variant, expected.visibility, fixture.receivers);
   FloatImage none(blurred.width, blurred.height, 1);
   return reference::ReferenceImage{std::move(blurred), std::move(none)};
 }
 
+// `own_map`: the path's own map, when it draws one (SceneOutput).
 Status run_passes(PictureRun& run, const LoadedPasses& passes, const SceneFixture& fixture,
-                  int timed_runs) {
+                  int timed_runs, std::shared_ptr<const FloatImage>& own_map) {
   run.execution = passes.execution;
   run.run_seconds = 0.0;
   for (int i = 0; i < std::max(1, timed_runs); ++i) {
@@ -87,6 +89,7 @@ Status run_passes(PictureRun& run, const LoadedPasses& passes, const SceneFixtur
     if (i == 0 || seconds < run.run_seconds) run.run_seconds = seconds;
     run.visibility = output.chain ? std::move(output.chain->blurred) : std::move(output.visibility);
     run.texel_reads = std::move(output.texel_reads);
+    own_map = std::move(output.own_linear_depth);
   }
   return {};
 }
@@ -104,7 +107,7 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
   }
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
-  const auto backends = all_backends(engine, options.bytecode, options.gl);
+  const auto backends = all_backends(engine, options.bytecode, options.gl, options.wine);
   TargetStages stages(library, engine, scene);
 
   for (const LibraryVariant& entry : library.variants) {
@@ -132,8 +135,18 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
             const SceneFixture& fixture = scenes->scenes.front();
             PENUMBRA_TRY_ASSIGN(auto passes, backend->load(library, entry, target, *scenes));
             run.device = backend->device();
-            PENUMBRA_TRY(run_passes(run, passes, fixture, options.timed_runs));
-            if (!expected) expected = reference_image(variant, target, fixture, precision);
+            std::shared_ptr<const FloatImage> own_map;
+            PENUMBRA_TRY(run_passes(run, passes, fixture, options.timed_runs, own_map));
+            if (own_map) {
+              PENUMBRA_TRY_ASSIGN(auto own,
+                                  reference_image(variant, target, fixture, *own_map, precision));
+              run.reference = std::move(own.visibility);
+              run.reference_ambiguous = std::move(own.ambiguous);
+              return {};
+            }
+            if (!expected) {
+              expected = reference_image(variant, target, fixture, fixture.linear_depth, precision);
+            }
             if (!*expected) return expected->error();
             run.reference = (*expected)->visibility;
             run.reference_ambiguous = (*expected)->ambiguous;

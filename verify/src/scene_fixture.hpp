@@ -32,6 +32,13 @@ struct TargetScenes {
   std::optional<Status> minmax;
 };
 
+// `linear` (a map of `scene` drawn by `target`'s depth pass, as linear z)
+// against a ray cast at each texel's centre: every texel whose centre lies
+// clear of an occluder's edge must hold the ray cast's surface, so a map
+// shifted by a texel row fails. `backend` is the path that drew it.
+DepthCheck check_depth(const reference::Scene& scene, Target target, const FloatImage& linear,
+                       const std::string& backend);
+
 // `scene` rendered by `depth`, with `receivers` (u, v, z_r per pixel; the
 // scene's receivers_width x receivers_height).
 Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,

@@ -7,6 +7,7 @@ namespace {
 nlohmann::json depth_json(const DepthCheck& c) {
   return {{"scene", c.scene},
           {"target", to_string(c.target)},
+          {"backend", c.backend},
           {"texels_checked", c.texels},
           {"mismatched", c.mismatched},
           {"max_abs_error", c.max_abs_error},

@@ -44,12 +44,13 @@ TargetRun failed_run(Target target, std::string backend, const Error& error) {
 
 // The query's visibility against the reference of `target`'s shader
 // (screen_blur: the factor).
+// `linear_depth` is the map the GPU read: the fixture's, or a path's own.
 Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
                              const FloatImage& texel_reads, const Variant& variant, Target target,
-                             const SceneFixture& fixture) {
+                             const SceneFixture& fixture, const FloatImage& linear_depth) {
   auto expected =
-      reference::evaluate_image(variant, fixture.linear_depth, fixture.scene.light,
-                                fixture.receivers, ctx.precision, reference::shader_limits(target));
+      reference::evaluate_image(variant, linear_depth, fixture.scene.light, fixture.receivers,
+                                ctx.precision, reference::shader_limits(target));
   if (!expected) return expected.error();
   auto comparison = reference::compare(visibility, expected->visibility, expected->ambiguous,
                                        reference::tolerance(variant.technique, ctx.precision));
@@ -68,7 +69,8 @@ Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
 Result<SceneRun> check_screen_blur_scene(const Context& ctx, const SceneOutput& gpu,
                                          const ChainOutput& chain, const Variant& variant,
                                          Target target, const SceneFixture& fixture) {
-  auto scene = check_scene(ctx, gpu.visibility, gpu.texel_reads, variant, target, fixture);
+  auto scene = check_scene(ctx, gpu.visibility, gpu.texel_reads, variant, target, fixture,
+                           gpu.own_linear_depth ? *gpu.own_linear_depth : fixture.linear_depth);
   if (!scene) return scene.error();
   auto blur =
       check_chain(chain.blurred, reference::screen_blur(variant, gpu.visibility, fixture.receivers),
@@ -84,8 +86,8 @@ Result<SceneRun> check_screen_blur_scene(const Context& ctx, const SceneOutput& 
 
 // `entry`'s passes for `target` on `backend`, each scene's output checked
 // against the reference.
-Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& entry,
-                         Target target) {
+Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& entry, Target target,
+                         VerifyReport& report) {
   TargetRun run;
   run.target = target;
   run.backend = backend.name();
@@ -108,10 +110,12 @@ Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& e
     const auto start = Clock::now();
     auto gpu = passes->run(fixture);
     if (!gpu) return gpu.error();
+    if (gpu->own_depth_check) report.depth_checks.push_back(*gpu->own_depth_check);
     auto scene =
         gpu->chain
             ? check_screen_blur_scene(ctx, *gpu, *gpu->chain, entry.variant, target, fixture)
-            : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, target, fixture);
+            : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, target, fixture,
+                          gpu->own_linear_depth ? *gpu->own_linear_depth : fixture.linear_depth);
     if (!scene) return scene.error();
     scene->seconds = seconds_since(start);
     run.pass = run.pass && scene->pass();
@@ -262,8 +266,10 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
   Context ctx{library, engine, precision, {}, {}, {}};
   // The paths, in report order: a new one is a new backend file and a line here.
-  ctx.backends = all_backends(engine, options.bytecode, options.gl);
-  report.gl_device = ctx.backends.back()->device();
+  ctx.backends = all_backends(engine, options.bytecode, options.gl, options.wine);
+  for (const auto& backend : ctx.backends) {
+    if (backend->name() == "gl") report.gl_device = backend->device();
+  }
 
   const Preparers prepare_with = preparers(library, options);
   for (std::size_t i = 0; i < library.variants.size(); ++i) {
@@ -301,7 +307,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
       for (const std::unique_ptr<Backend>& backend : ctx.backends) {
         if (!backend->executes(target)) continue;
         const auto run_start = Clock::now();
-        auto run = run_on(ctx, *backend, entry, target);
+        auto run = run_on(ctx, *backend, entry, target, report);
         variant_run.runs.push_back(run ? std::move(*run)
                                        : failed_run(target, backend->name(), run.error()));
         variant_run.runs.back().seconds = seconds_since(run_start);

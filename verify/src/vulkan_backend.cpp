@@ -37,7 +37,8 @@ LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded)
                                           fixture.colour, fixture.params);
         if (!gpu) return gpu.error();
         return SceneOutput{std::move(gpu->factor), std::move(gpu->texel_reads),
-                           ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)}};
+                           ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)}, nullptr,
+                           std::nullopt};
       }};
 }
 
@@ -57,14 +58,14 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
   auto query = load(PassKind::query);
   if (!query) return query.error();
   auto program = std::make_shared<PassProgram>(std::move(query->program));
-  return LoadedPasses{
-      std::move(query->execution),
-      [&engine, program](const SceneFixture& fixture) -> Result<SceneOutput> {
-        auto gpu =
-            engine.run_query_output(*program, *fixture.map, fixture.receivers, fixture.params);
-        if (!gpu) return gpu.error();
-        return SceneOutput{std::move(gpu->visibility), std::move(gpu->texel_reads), std::nullopt};
-      }};
+  return LoadedPasses{std::move(query->execution),
+                      [&engine, program](const SceneFixture& fixture) -> Result<SceneOutput> {
+                        auto gpu = engine.run_query_output(*program, *fixture.map,
+                                                           fixture.receivers, fixture.params);
+                        if (!gpu) return gpu.error();
+                        return SceneOutput{std::move(gpu->visibility), std::move(gpu->texel_reads),
+                                           std::nullopt, nullptr, std::nullopt};
+                      }};
 }
 
 std::unique_ptr<Backend> vulkan_backend(Engine& engine) {

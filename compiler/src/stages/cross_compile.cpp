@@ -5,6 +5,7 @@
 #include "penumbra/compiler/targets.hpp"
 #include "stages/stages.hpp"
 #include "targets/dx10_comparison_textures.hpp"
+#include "targets/dx9_half_pixel.hpp"
 #include "targets/dx9_registers.hpp"
 #include "targets/rules.hpp"
 
@@ -70,6 +71,7 @@ Status CrossCompileStage::process(ShaderJob& job) const {
   }
   if (job.target == Target::hlsl_dx9) {
     auto rewritten = dx9_explicit_registers(job.text);
+    if (rewritten) rewritten = dx9_half_pixel_after_flip(*rewritten);
     if (!rewritten)
       return make_error(Error::Kind::compile, job.describe(), rewritten.error().message);
     job.text = std::move(*rewritten);

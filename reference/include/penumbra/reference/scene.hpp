@@ -63,7 +63,10 @@ std::vector<std::array<float, 3>> triangles(const Scene& scene);
 FloatImage receivers(const Scene& scene, int width, int height);
 
 // What the depth pass should render: the linear z of the nearest occluder on
-// the ray through each texel centre, or far_z where there is none.
-FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_z);
+// the ray through each texel centre, or far_z where there is none. With
+// `within` (in texels), the ray through (i + 0.5 + within.x, j + 0.5 +
+// within.y) instead: a point near the centre.
+FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_z,
+                          std::array<double, 2> within = {0.0, 0.0});
 
 }  // namespace penumbra::reference

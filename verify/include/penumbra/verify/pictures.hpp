@@ -17,6 +17,7 @@ struct PictureOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
   std::vector<Target> targets;        // only these; empty = all the library has
   bool gl = true;                     // also run glsl330/glsl450 through the OpenGL driver
+  bool wine = true;                   // also run the bytecode on Wine's d3d9, d3d10, d3d11
   BytecodeTranslator bytecode = {};   // the Direct3D bytecode path; none: not executed
   int timed_runs = 3;                 // runs of the passes timed; the fastest is reported
 };
@@ -33,7 +34,7 @@ struct PictureRun {
   std::string variant;
   Technique technique = Technique::hard;
   Target target = Target::spirv;
-  std::string backend;       // "vulkan", "bytecode" or "gl", as in verify.json
+  std::string backend;       // "vulkan", "bytecode", "gl", "d3d9", ... as in verify.json
   std::string device;        // the device or driver that ran it
   Execution execution;       // front end and shims
   std::string not_executed;  // why the path could not run it here; then no images

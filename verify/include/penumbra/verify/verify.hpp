@@ -20,6 +20,9 @@ struct VerifyOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
   std::vector<Target> targets;        // only these; empty = all the library has
   bool gl = true;  // also run glsl330/glsl450 through the OpenGL driver when built with GL
+  // also run the Direct3D bytecode on Wine's d3d9, d3d10 and d3d11 when the
+  // library has bytecode and Wine and the host are here (wine_backends())
+  bool wine = true;
   // vkd3d-compiler for the Direct3D bytecode path; with none (empty
   // compiler), that path's runs are reported not executed.
   BytecodeTranslator bytecode = {};
@@ -80,7 +83,8 @@ struct VariantRun {
 struct DepthCheck {
   std::string scene;
   Target target = Target::spirv;
-  std::size_t texels = 0;      // texels away from occluder edges
+  std::string backend = "vulkan";  // the path whose map it is (verify.json's backend)
+  std::size_t texels = 0;      // texels whose centre is clear of every occluder edge
   std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
   double max_abs_error = 0.0;
   bool pass = false;

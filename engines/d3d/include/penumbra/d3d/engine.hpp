@@ -1,0 +1,168 @@
+// D3dEngine: runs a Direct3D target's bytecode (.d3dbc, .dxbc) on a real
+// Direct3D 9, 10 or 11 runtime: Wine's d3d9/d3d10/d3d11 on Linux, through
+// penumbra_d3d_host.exe (engines/d3d/host). Every pass is bound by its
+// reflection, index.json's `reflection.<pass>.<target>`, as a Direct3D
+// engine that drops the library in does: registers, formats, sampler states
+// and input layouts come from the record alone, and D3D9's gl_HalfPixel is
+// set as docs/engines/d3d9.md says. The engine draws the depth pass, the
+// min-max chain, the query and screen_blur's chain, and reads targets back.
+//
+// Lifecycle: create() starts one host process for the runtime in `session`;
+// every later call is one job list sent to it (no process per draw); calls
+// come from one thread at a time. Destroying the engine ends the host.
+// Every failure is a returned Error, never an exception.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "penumbra/d3d/wine_session.hpp"
+#include "penumbra/model/model.hpp"
+#include "penumbra/model/target_reflection.hpp"
+#include "penumbra/support/image.hpp"
+#include "penumbra/support/param_block.hpp"
+#include "penumbra/support/result.hpp"
+
+namespace penumbra {
+
+namespace d3d {
+class HostProcess;
+class Job;
+}  // namespace d3d
+
+enum class D3dRuntime { d3d9, d3d10, d3d11 };
+
+// "d3d9", "d3d10", "d3d11": verify.json's backend names.
+std::string_view to_string(D3dRuntime runtime);
+// The runtime an engine loads `target`'s bytecode on: hlsl_dx9 on d3d9,
+// hlsl_dx10 on d3d10, hlsl_dx11 on d3d11; none for other targets.
+std::optional<D3dRuntime> runtime_for(Target target);
+
+struct D3dEngineOptions {
+  D3dRuntime runtime = D3dRuntime::d3d11;
+  // penumbra_d3d_host.exe; "" takes default_d3d_host().
+  std::filesystem::path host;
+  // The longest one job list may take before the host counts as hung.
+  std::chrono::seconds job_timeout{300};
+};
+
+// Where penumbra_d3d_host.exe is: PENUMBRA_D3D_HOST when set, else beside the
+// running executable, else the installed libexec folder, else the build
+// tree's; empty when none exists.
+std::filesystem::path default_d3d_host();
+
+// One pass's bytecode and reflection. The engine reads the reflection
+// through the reference; it must outlive the call.
+struct D3dPass {
+  std::filesystem::path vert;  // the vertex stage's bytecode
+  std::filesystem::path frag;  // the pixel stage's bytecode
+  const PassReflection& reflection;
+};
+
+struct D3dMinmaxPasses {
+  D3dPass init;    // minmax_init: the map -> level 1
+  D3dPass reduce;  // minmax_reduce: level l - 1 -> level l
+};
+
+struct D3dQueryPasses {
+  D3dPass query;
+  std::optional<D3dMinmaxPasses> minmax = std::nullopt;  // when the query reads shadow_minmax
+};
+
+struct D3dScreenBlurPasses {
+  D3dPass query;
+  D3dPass blur_h;
+  D3dPass blur_v;
+  D3dPass composite;
+};
+
+// A shadow map the depth pass drew, kept on the host until release().
+struct D3dMap {
+  int id = 0;
+  int width = 0;
+  int height = 0;
+  std::string format;     // as created: the depth pass's map format
+  FloatImage normalized;  // its texels, read back: z * depth_scale
+};
+
+struct D3dQueryOutput {
+  FloatImage visibility;   // .x
+  FloatImage texel_reads;  // .y
+};
+
+struct D3dScreenBlurOutput {
+  FloatImage factor;       // the query's .x
+  FloatImage texel_reads;  // the query's .y
+  FloatImage blurred;      // blur_v's .x
+  FloatImage composite;    // the composite's four channels
+};
+
+class D3dEngine {
+ public:
+  // Starts the host for `options.runtime`. Errors: device (no host, Wine
+  // cannot create the device; the host's own words).
+  static Result<std::unique_ptr<D3dEngine>> create(std::shared_ptr<WineSession> session,
+                                                   const D3dEngineOptions& options);
+  D3dEngine(const D3dEngine&) = delete;
+  D3dEngine& operator=(const D3dEngine&) = delete;
+  ~D3dEngine();
+
+  // "Direct3D 9 on <adapter>" as the host reports it.
+  const std::string& description() const { return description_; }
+  D3dRuntime runtime() const { return runtime_; }
+
+  // Draws `triangles` (light-view x, y, z per vertex, three per triangle)
+  // with the depth pass into a new width x height map, as
+  // docs/engines/<runtime>.md creates it, and reads it back.
+  Result<D3dMap> render_depth(const D3dPass& depth,
+                              const std::vector<std::array<float, 3>>& triangles, int width,
+                              int height, const ParamBlock& params);
+  void release(const D3dMap& map);
+
+  // The min-max chain of `map` built by `passes` (each level drawn into a
+  // target of its own, then copied into the mipmapped chain), read back:
+  // levels 1..N as support/minmax_levels.hpp sizes them.
+  Result<std::vector<FloatImage>> build_minmax(const D3dMinmaxPasses& passes, const D3dMap& map,
+                                               const ParamBlock& params);
+
+  // The query over `receivers` ((u, v, z_r) per pixel, 3 or 4 channels) on
+  // `map`, after the min-max chain when the query reads it.
+  Result<D3dQueryOutput> run_query(const D3dQueryPasses& passes, const D3dMap& map,
+                                   const FloatImage& receivers, const ParamBlock& params);
+
+  // screen_blur's chain on `map`: the query, blur_h, blur_v and the
+  // composite over `scene_colour` (RGBA, the receivers' size).
+  Result<D3dScreenBlurOutput> run_screen_blur(const D3dScreenBlurPasses& passes, const D3dMap& map,
+                                              const FloatImage& receivers,
+                                              const FloatImage& scene_colour,
+                                              const ParamBlock& params);
+
+ private:
+  friend class d3d::Job;  // creates ids, shares the shader caches, runs itself
+
+  D3dEngine(std::shared_ptr<WineSession> session, D3dEngineOptions options,
+            std::unique_ptr<d3d::HostProcess> host, std::string description);
+  // Sends `job`'s commands and waits for the host's answer.
+  Status run(d3d::Job& job);
+  int next_id() { return next_id_++; }
+
+  std::shared_ptr<WineSession> session_;
+  D3dEngineOptions options_;
+  D3dRuntime runtime_;
+  std::unique_ptr<d3d::HostProcess> host_;
+  std::string description_;
+  int next_id_ = 1;
+  int next_job_ = 1;
+  std::map<std::string, int> shaders_;            // bytecode (its bytes) -> host id, loaded once
+  std::map<std::string, int> constant_textures_;  // D3D9 disks: texels -> host id
+  std::string pending_releases_;  // finished jobs' resources, released by the next job
+};
+
+}  // namespace penumbra

@@ -1,0 +1,195 @@
+// verify's Direct3D runtime paths: each HLSL target's bytecode loaded by a
+// real Direct3D runtime (Wine's d3d9, d3d10 and d3d11 over llvmpipe, under
+// its own Xvfb and Wine prefix: penumbra::d3d), bound from the reflection
+// alone as a Direct3D engine binds it. Unlike the Vulkan-hosted paths, each
+// draws every scene's map with the target's own depth pass on the runtime
+// itself, so the runtime's rasterization rules (D3D9's pixel centres) decide
+// what the map and the queries hold; the map is checked against the ray
+// cast, and the reference reads it.
+#include <map>
+#include <memory>
+
+#include "backend.hpp"
+#include "penumbra/d3d/engine.hpp"
+#include "penumbra/reference/scene.hpp"
+#include "penumbra/verify/shadow_params.hpp"
+
+namespace penumbra {
+namespace {
+
+// One Wine session for the three runtimes, started when a run first needs it.
+class SharedSession {
+ public:
+  Result<std::shared_ptr<WineSession>> get() {
+    if (!session_) session_ = WineSession::start(WineSession::options_from_environment());
+    return *session_;
+  }
+
+ private:
+  std::optional<Result<std::shared_ptr<WineSession>>> session_;
+};
+
+// A scene's map drawn on the runtime: kept for every variant after the first.
+struct RuntimeMap {
+  D3dMap map;
+  std::shared_ptr<const FloatImage> linear;  // map.normalized as linear z
+  bool checked = false;                      // its DepthCheck went out with a run
+};
+
+Result<D3dPass> bytecode_pass(const Library& library, const LibraryVariant& entry, PassKind pass,
+                              Target target) {
+  const auto files = entry.passes.find(pass);
+  const auto reflection = entry.reflection.find(pass);
+  if (files == entry.passes.end() || !files->second.contains(target) ||
+      reflection == entry.reflection.end() || !reflection->second.contains(target)) {
+    return make_error(Error::Kind::bad_input, entry.variant.name,
+                      "index.json has no " + std::string(to_string(pass)) + " pass for " +
+                          std::string(to_string(target)));
+  }
+  const PassFiles& stage_files = files->second.at(target);
+  if (!stage_files.vert_bytecode || !stage_files.frag_bytecode) {
+    return make_error(Error::Kind::bad_input, entry.variant.name,
+                      "the library has no " + std::string(to_string(target)) +
+                          " bytecode for its " + std::string(to_string(pass)) + " pass");
+  }
+  return D3dPass{library.root / stage_files.vert_bytecode->path,
+                 library.root / stage_files.frag_bytecode->path, reflection->second.at(target)};
+}
+
+// The passes a run needs, with the records they point into.
+struct RuntimePasses {
+  D3dPass depth;
+  std::optional<D3dQueryPasses> query;
+  std::optional<D3dScreenBlurPasses> screen_blur;
+};
+
+Result<RuntimePasses> runtime_passes(const Library& library, const LibraryVariant& entry,
+                                     Target target) {
+  const auto pass = [&](PassKind kind) { return bytecode_pass(library, entry, kind, target); };
+  PENUMBRA_TRY_ASSIGN(D3dPass depth, pass(PassKind::depth));
+  PENUMBRA_TRY_ASSIGN(D3dPass query, pass(PassKind::query));
+  RuntimePasses passes{depth, std::nullopt, std::nullopt};
+  if (entry.variant.technique == Technique::screen_blur) {
+    PENUMBRA_TRY_ASSIGN(D3dPass blur_h, pass(PassKind::blur_h));
+    PENUMBRA_TRY_ASSIGN(D3dPass blur_v, pass(PassKind::blur_v));
+    PENUMBRA_TRY_ASSIGN(D3dPass composite, pass(PassKind::composite));
+    passes.screen_blur.emplace(D3dScreenBlurPasses{query, blur_h, blur_v, composite});
+    return passes;
+  }
+  passes.query.emplace(D3dQueryPasses{query, std::nullopt});
+  if (uses_minmax_mip(entry.variant.technique)) {
+    PENUMBRA_TRY_ASSIGN(D3dPass init, pass(PassKind::minmax_init));
+    PENUMBRA_TRY_ASSIGN(D3dPass reduce, pass(PassKind::minmax_reduce));
+    passes.query->minmax.emplace(D3dMinmaxPasses{init, reduce});
+  }
+  return passes;
+}
+
+class WineBackend final : public Backend {
+ public:
+  WineBackend(D3dRuntime runtime, std::shared_ptr<SharedSession> session, std::string missing)
+      : runtime_(runtime), session_(std::move(session)), missing_(std::move(missing)) {}
+
+  std::string name() const override { return std::string(to_string(runtime_)); }
+  std::string device() const override { return engine_ ? engine_->description() : ""; }
+  std::string missing() const override { return missing_; }
+  bool executes(Target target) const override { return runtime_for(target) == runtime_; }
+  std::string not_executed(const LibraryVariant& entry, Target target) const override {
+    const auto query = entry.passes.find(PassKind::query);
+    if (query == entry.passes.end() || !query->second.contains(target)) return {};
+    const PassFiles& files = query->second.at(target);
+    if (files.vert_bytecode && files.frag_bytecode) return {};
+    return "the library has no " + std::string(to_string(target)) +
+           " bytecode (built without an HLSL compiler: penumbra build --hlsl-compiler PATH)";
+  }
+
+  Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
+                            const TargetScenes& /*scenes*/) override {
+    PENUMBRA_TRY(start());
+    PENUMBRA_TRY_ASSIGN(RuntimePasses passes, runtime_passes(library, entry, target));
+    // The passes point into `entry`'s records, which outlive the run.
+    auto shared = std::make_shared<RuntimePasses>(std::move(passes));
+    return LoadedPasses{
+        Execution{"the " + name() + " runtime (Wine) loading the bytecode", {}},
+        [this, shared, target](const SceneFixture& fixture) -> Result<SceneOutput> {
+          PENUMBRA_TRY_ASSIGN(RuntimeMap * drawn, map_of(shared->depth, fixture));
+          SceneOutput output;
+          if (shared->screen_blur) {
+            PENUMBRA_TRY_ASSIGN(auto chain, engine_->run_screen_blur(
+                                                *shared->screen_blur, drawn->map, fixture.receivers,
+                                                fixture.colour, fixture.params));
+            output.visibility = std::move(chain.factor);
+            output.texel_reads = std::move(chain.texel_reads);
+            output.chain = ChainOutput{std::move(chain.blurred), std::move(chain.composite)};
+          } else {
+            PENUMBRA_TRY_ASSIGN(auto query, engine_->run_query(*shared->query, drawn->map,
+                                                               fixture.receivers, fixture.params));
+            output.visibility = std::move(query.visibility);
+            output.texel_reads = std::move(query.texel_reads);
+          }
+          output.own_linear_depth = drawn->linear;
+          if (!drawn->checked) {
+            output.own_depth_check = check_depth(fixture.scene, target, *drawn->linear, name());
+            drawn->checked = true;
+          }
+          return output;
+        }};
+  }
+
+ private:
+  Status start() {
+    if (engine_) return {};
+    PENUMBRA_TRY_ASSIGN(auto session, session_->get());
+    D3dEngineOptions options;
+    options.runtime = runtime_;
+    PENUMBRA_TRY_ASSIGN(engine_, D3dEngine::create(session, options));
+    return {};
+  }
+
+  // The fixture's scene drawn by the target's depth pass on this runtime,
+  // once per scene.
+  Result<RuntimeMap*> map_of(const D3dPass& depth, const SceneFixture& fixture) {
+    const std::string key = fixture.scene.name + "@" + std::to_string(fixture.scene.map_width) +
+                            "x" + std::to_string(fixture.scene.map_height);
+    if (auto known = maps_.find(key); known != maps_.end()) return &known->second;
+    PENUMBRA_TRY_ASSIGN(
+        D3dMap map,
+        engine_->render_depth(depth, reference::triangles(fixture.scene), fixture.scene.map_width,
+                              fixture.scene.map_height, fixture.params));
+    auto linear = std::make_shared<FloatImage>(map.normalized);
+    const float depth_scale = depth_scale_for(fixture.scene.far_z);
+    for (float& d : linear->data) d /= depth_scale;  // exact: a power of two
+    return &maps_.emplace(key, RuntimeMap{std::move(map), std::move(linear), false}).first->second;
+  }
+
+  D3dRuntime runtime_;
+  std::shared_ptr<SharedSession> session_;
+  std::string missing_;
+  std::unique_ptr<D3dEngine> engine_;
+  std::map<std::string, RuntimeMap> maps_;
+};
+
+// Why the runtimes cannot run here, or empty: checked without starting anything.
+std::string why_missing(bool requested) {
+  if (!requested) return "not requested (--no-wine)";
+  if (default_d3d_host().empty()) {
+    return "penumbra_d3d_host.exe was not built (it needs Debian's g++-mingw-w64-x86-64)";
+  }
+  const auto session = WineSession::options_from_environment();
+  if (auto missing = WineSession::missing_programs(session); !missing.empty()) return missing;
+  return {};
+}
+
+}  // namespace
+
+std::vector<std::unique_ptr<Backend>> wine_backends(bool requested) {
+  auto session = std::make_shared<SharedSession>();
+  const std::string missing = why_missing(requested);
+  std::vector<std::unique_ptr<Backend>> backends;
+  for (D3dRuntime runtime : {D3dRuntime::d3d9, D3dRuntime::d3d10, D3dRuntime::d3d11}) {
+    backends.push_back(std::make_unique<WineBackend>(runtime, session, missing));
+  }
+  return backends;
+}
+
+}  // namespace penumbra
