@@ -22,6 +22,7 @@ struct VerifyArgs {
   std::string junit;  // JUnit report to write; empty: none
   bool no_gl = false;
   bool no_wine = false;
+  std::vector<std::string> paths;
   bool validation = false;
   bool verbose = false;
 };
@@ -105,12 +106,22 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                   "Only the I-th of N disjoint slices of the checks, I from 1 (docs/scale-out.md)");
   cmd->add_option("--junit", args->junit, "Also write a JUnit XML report to this file");
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
+  cmd->add_option("--path", args->paths,
+                  "Only these execution paths (repeatable): " + std::string(kPathNames));
   cmd->add_flag(
       "--no-wine", args->no_wine,
       "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->callback([args, &exit_code] {
+    for (const std::string& path : args->paths) {
+      if (!is_path_name(path)) {
+        exit_code =
+            report(make_error(Error::Kind::bad_input, "--path " + path,
+                              "unknown execution path; allowed: " + std::string(kPathNames)));
+        return;
+      }
+    }
     Shard shard;
     if (!args->shard.empty()) {
       auto parsed = parse_shard(args->shard, "--shard");
@@ -153,6 +164,7 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                           .targets = {},
                           .gl = !args->no_gl,
                           .wine = !args->no_wine,
+                          .paths = args->paths,
                           .bytecode = {.compiler = *compiler},
                           .shard = shard};
     for (const std::string& name : args->targets) {

@@ -1,10 +1,8 @@
 // The Direct3D bytecode executed as Proton executes it: every default
 // variant's .d3dbc/.dxbc files translated to SPIR-V by vkd3d-compiler, run on
 // the Vulkan engine bound by the reflection's registers, and checked against
-// the CPU reference on every scene (verify's "bytecode" path); the same files
-// on the real Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10 and
-// d3d11 paths); and the check failing on bytecode or reflection that is not
-// the variant's.
+// the CPU reference on every scene (verify's "bytecode" path); and the check
+// failing on bytecode or reflection that is not the variant's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,100 +37,51 @@ Result<std::unique_ptr<TemporaryLibrary>> build_with_bytecode(const std::string&
                                  {.jobs = 2, .hlsl = {.compiler = *compiler}});
 }
 
-// verify of `name` in `library` on the Direct3D targets: the bytecode path
-// and, with `wine`, the Direct3D runtimes under Wine.
-Result<VerifyReport> verify_bytecode(const Library& library, const std::string& name, bool wine) {
+// The bytecode path's runs of `name` in `library`.
+Result<std::vector<TargetRun>> bytecode_runs(const Library& library, const std::string& name) {
   auto compiler = recorded_hlsl_compiler();
   if (!compiler) return compiler.error();
   auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   if (!engine) return engine.error();
-  return verify_library(library, **engine,
-                        {.variants = {name},
-                         .targets = bytecode_targets(),
-                         .gl = false,
-                         .wine = wine,
-                         .bytecode = {.compiler = *compiler}},
-                        ignore_diagnostics());
-}
-
-std::vector<TargetRun> runs_on(const VerifyReport& report, const std::string& backend) {
+  auto report = verify_library(library, **engine,
+                               {.variants = {name},
+                                .targets = bytecode_targets(),
+                                .gl = false,
+                                .wine = false,  // tests/d3d runs the runtimes
+                                .bytecode = {.compiler = *compiler}},
+                               ignore_diagnostics());
+  if (!report) return report.error();
   std::vector<TargetRun> out;
-  for (const TargetRun& run : report.variants.at(0).runs) {
-    if (run.backend == backend) out.push_back(run);
+  for (const TargetRun& run : report->variants.at(0).runs) {
+    if (run.backend == "bytecode") out.push_back(run);
   }
   return out;
 }
 
-// verify.json's backend of `target`'s runtime.
-std::string run_target_runtime(Target target) {
-  switch (target) {
-    case Target::hlsl_dx9:
-      return "d3d9";
-    case Target::hlsl_dx10:
-      return "d3d10";
-    default:
-      return "d3d11";
-  }
-}
-
-// The bytecode path's runs of `name` in `library`.
-Result<std::vector<TargetRun>> bytecode_runs(const Library& library, const std::string& name) {
-  auto report = verify_bytecode(library, name, false);
-  if (!report) return report.error();
-  return runs_on(*report, "bytecode");
-}
-
-void expect_passes(const TargetRun& run, const std::string& label) {
-  ASSERT_TRUE(run.executed) << label << ": " << run.not_executed;
-  ASSERT_TRUE(run.error.empty()) << label << ": " << run.error;
-  ASSERT_EQ(run.scenes.size(), reference::builtin_scenes().size()) << label;
-  for (const SceneRun& scene : run.scenes) {
-    const auto& c = scene.comparison;
-    EXPECT_TRUE(scene.pass()) << label << " on " << scene.scene << ": max error " << c.max_abs_error
-                              << " (tolerance " << c.tolerance << "), " << c.over_tolerance
-                              << " pixels over";
-  }
-}
-
 class BytecodeExecution : public ::testing::TestWithParam<std::string> {};
 
-// Each target's bytecode both through vkd3d (the bytecode path) and on its
-// own Direct3D runtime under Wine, which draws the scenes' maps itself.
 TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
   auto built = build_with_bytecode(GetParam());
   ASSERT_TRUE(built) << built.error().to_string();
-  auto report = verify_bytecode((*built)->library(), GetParam(), true);
-  ASSERT_TRUE(report) << report.error().to_string();
+  auto runs = bytecode_runs((*built)->library(), GetParam());
+  ASSERT_TRUE(runs) << runs.error().to_string();
   const Technique technique = find_default_variant(GetParam())->technique;
-  const auto emitted = static_cast<std::size_t>(std::ranges::count_if(
-      bytecode_targets(), [&](Target target) { return can_emit(technique, target); }));
-  const std::vector<TargetRun> bytecode = runs_on(*report, "bytecode");
-  ASSERT_EQ(bytecode.size(), emitted);
-  for (const TargetRun& run : bytecode) {
+  ASSERT_EQ(runs->size(), std::ranges::count_if(bytecode_targets(), [&](Target target) {
+              return can_emit(technique, target);
+            }));
+  for (const TargetRun& run : *runs) {
     const std::string label(to_string(run.target));
+    ASSERT_TRUE(run.executed) << label << ": " << run.not_executed;
+    ASSERT_TRUE(run.error.empty()) << label << ": " << run.error;
     EXPECT_NE(run.execution.front_end.find("vkd3d-compiler"), std::string::npos) << label;
-    expect_passes(run, label);
-  }
-  std::size_t on_runtimes = 0;
-  for (const char* runtime : {"d3d9", "d3d10", "d3d11"}) {
-    for (const TargetRun& run : runs_on(*report, runtime)) {
-      ++on_runtimes;
-      const std::string label = std::string(to_string(run.target)) + " on " + runtime;
-      EXPECT_EQ(run_target_runtime(run.target), runtime) << label;
-      EXPECT_NE(run.device.find("Direct3D"), std::string::npos) << label << ": " << run.device;
-      expect_passes(run, label);
+    ASSERT_EQ(run.scenes.size(), reference::builtin_scenes().size()) << label;
+    for (const SceneRun& scene : run.scenes) {
+      const auto& c = scene.comparison;
+      EXPECT_TRUE(scene.pass()) << label << " on " << scene.scene << ": max error "
+                                << c.max_abs_error << " (tolerance " << c.tolerance << "), "
+                                << c.over_tolerance << " pixels over";
     }
   }
-  EXPECT_EQ(on_runtimes, emitted);
-  // Each runtime's own maps, drawn by its own rasterizer, match the ray cast.
-  std::size_t runtime_maps = 0;
-  for (const DepthCheck& depth : report->depth_checks) {
-    EXPECT_TRUE(depth.pass) << "depth pass of " << to_string(depth.target) << " on "
-                            << depth.backend << ", " << depth.scene << ": " << depth.mismatched
-                            << " of " << depth.texels << " texels off";
-    if (depth.backend != "vulkan") ++runtime_maps;
-  }
-  EXPECT_EQ(runtime_maps, emitted * reference::builtin_scenes().size());
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, BytecodeExecution, ::testing::ValuesIn(default_variant_names()),

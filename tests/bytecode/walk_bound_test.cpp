@@ -1,10 +1,13 @@
 // Shader Model 3 guarantees 65,535 executed instructions a pixel. The
-// hlsl_dx9 walks of minmax_pcf and backprojection (both traversals) stop
-// after traits().walk_step_limit steps, and by vkd3d-compiler's own
+// hlsl_dx9 walks of minmax_pcf and backprojection (both traversals) take at
+// most traits().walk_step_limit steps, and by vkd3d-compiler's own
 // disassembly of the bytecode we ship, their longest path stays within it.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
+
+#include <set>
+#include <string>
 
 #include "default_library.hpp"
 #include "hlsl_compiler.hpp"
@@ -69,9 +72,13 @@ std::vector<Variant> walk_variants() {
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "largest.json");
   EXPECT_TRUE(largest.ok()) << largest.error().to_string();
   if (largest.ok()) variants.insert(variants.end(), largest->begin(), largest->end());
-  // bitmask_backprojection has no hlsl_dx9 form (no integer bit operations).
-  std::erase_if(variants, [](const Variant& v) {
-    return !walk_step_bound(v).has_value() || !can_emit(v.technique, Target::hlsl_dx9);
+  // bitmask_backprojection has no hlsl_dx9 form (no integer bit operations),
+  // nor has minmax_pcf above the kernels hlsl_dx9 counts exactly; both
+  // manifests build minmax_pcf_k8.
+  std::set<std::string> names;
+  std::erase_if(variants, [&](const Variant& v) {
+    return !walk_step_bound(v).has_value() || !can_emit(v, Target::hlsl_dx9) ||
+           !names.insert(v.name).second;
   });
   for (Variant& variant : variants) variant.targets = {Target::hlsl_dx9};
   return variants;
@@ -81,7 +88,8 @@ TEST(Dx9WalkBound, EveryWalkStaysWithinPs30ExecutedInstructions) {
   auto compiler = recorded_hlsl_compiler();
   ASSERT_TRUE(compiler.ok()) << compiler.error().to_string();
   const std::vector<Variant> variants = walk_variants();
-  ASSERT_GE(variants.size(), 8u);  // minmax_pcf k8..k128, both traversals, backprojection
+  // minmax_pcf k8 and k14 brute force, backprojection with both traversals.
+  ASSERT_GE(variants.size(), 5u);
   const std::filesystem::path out = std::filesystem::path(::testing::TempDir()) /
                                     ("penumbra-walk-bound-" + std::to_string(::getpid()));
   const auto built = build_library(variants, out, {.jobs = 2, .hlsl = {.compiler = *compiler}},

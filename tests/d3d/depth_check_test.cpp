@@ -41,7 +41,7 @@ TEST_P(DepthCheckTest, TheRayCastPassesAndAShiftByOneTexelFails) {
 
 INSTANTIATE_TEST_SUITE_P(BuiltinScenes, DepthCheckTest,
                          ::testing::ValuesIn(reference::builtin_scenes()),
-                         [](const auto& info) { return test_name(info.param.name); });
+                         [](const auto& param_info) { return test_name(param_info.param.name); });
 
 }  // namespace
 }  // namespace penumbra::testing

@@ -2,6 +2,15 @@
 
 namespace penumbra {
 
+bool is_path_name(std::string_view name) {
+  for (std::string_view names = kPathNames; !names.empty();) {
+    const std::size_t comma = names.find(", ");
+    if (names.substr(0, comma) == name) return true;
+    names = comma == std::string_view::npos ? std::string_view() : names.substr(comma + 2);
+  }
+  return false;
+}
+
 std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTranslator bytecode,
                                                    bool gl, bool wine) {
   std::vector<std::unique_ptr<Backend>> backends;

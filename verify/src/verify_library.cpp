@@ -253,6 +253,12 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                         "no such variant in " + library.root.string());
     }
   }
+  for (const std::string& path : options.paths) {
+    if (!is_path_name(path)) {
+      return make_error(Error::Kind::bad_input, "path " + path,
+                        "no such execution path; allowed: " + std::string(kPathNames));
+    }
+  }
   if (options.shard.count < 1 || options.shard.index < 1 ||
       options.shard.index > options.shard.count) {
     return make_error(Error::Kind::bad_input, "shard " + to_string(options.shard),
@@ -305,7 +311,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
         scenes.minmax = prepare_minmax(ctx, preparer, target, report);
       }
       for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-        if (!backend->executes(target)) continue;
+        if (!backend->executes(target) || !wanted(options.paths, backend->name())) continue;
         const auto run_start = Clock::now();
         auto run = run_on(ctx, *backend, entry, target, report);
         variant_run.runs.push_back(run ? std::move(*run)

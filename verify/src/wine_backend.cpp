@@ -91,7 +91,8 @@ class WineBackend final : public Backend {
       : runtime_(runtime), session_(std::move(session)), missing_(std::move(missing)) {}
 
   std::string name() const override { return std::string(to_string(runtime_)); }
-  std::string device() const override { return engine_ ? engine_->description() : ""; }
+  // Wine names the adapter its own way (a GeForce whatever GL renders with).
+  std::string device() const override { return engine_ ? "Wine's " + engine_->description() : ""; }
   std::string missing() const override { return missing_; }
   bool executes(Target target) const override { return runtime_for(target) == runtime_; }
   std::string not_executed(const LibraryVariant& entry, Target target) const override {

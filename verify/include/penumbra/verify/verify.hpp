@@ -16,6 +16,10 @@
 
 namespace penumbra {
 
+// Every execution path's name, in report order: verify.json's `backend`.
+inline constexpr std::string_view kPathNames = "vulkan, bytecode, gl, d3d9, d3d10, d3d11";
+bool is_path_name(std::string_view name);
+
 struct VerifyOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
   std::vector<Target> targets;        // only these; empty = all the library has
@@ -23,6 +27,9 @@ struct VerifyOptions {
   // also run the Direct3D bytecode on Wine's d3d9, d3d10 and d3d11 when the
   // library has bytecode and Wine and the host are here (wine_backends())
   bool wine = true;
+  // Only these paths (verify.json's backend names: "vulkan", "bytecode",
+  // "gl", "d3d9", "d3d10", "d3d11"); empty = every path.
+  std::vector<std::string> paths = {};
   // vkd3d-compiler for the Direct3D bytecode path; with none (empty
   // compiler), that path's runs are reported not executed.
   BytecodeTranslator bytecode = {};
