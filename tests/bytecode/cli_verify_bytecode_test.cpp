@@ -46,6 +46,10 @@ TEST_F(CliVerifyBytecode, TheFlagRunsTheBytecodePath) {
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_THAT(run.out, HasSubstr("PASS hard [hlsl_dx9 on bytecode]"));
   EXPECT_THAT(run.out, HasSubstr("PASS hard [hlsl_dx10 on bytecode]"));
+  // The same files on Wine's Direct3D 9 and 10, each drawing its own maps.
+  EXPECT_THAT(run.out, HasSubstr("PASS hard [hlsl_dx9 on d3d9]"));
+  EXPECT_THAT(run.out, HasSubstr("PASS hard [hlsl_dx10 on d3d10]"));
+  EXPECT_THAT(run.out, HasSubstr("PASS depth pass [hlsl_dx9 on d3d9] on steps"));
   const auto report = read_file(lib() / "verify.json");
   ASSERT_TRUE(report.ok()) << report.error().to_string();
   EXPECT_THAT(*report, HasSubstr("vkd3d-compiler dxbc-tpf to SPIR-V (vs_4_0, ps_4_0)"));
@@ -53,7 +57,7 @@ TEST_F(CliVerifyBytecode, TheFlagRunsTheBytecodePath) {
 }
 
 TEST_F(CliVerifyBytecode, WithoutACompilerItsRunsAreNotExecuted) {
-  const CliRun run = verify("", "PENUMBRA_HLSL_COMPILER=");
+  const CliRun run = verify("--no-wine", "PENUMBRA_HLSL_COMPILER=");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_THAT(run.out, HasSubstr("note: 2 bytecode runs not executed: no HLSL compiler"));
 }
