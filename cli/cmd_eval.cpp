@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "penumbra/reference/techniques.hpp"
 #include "penumbra/support/pfm.hpp"
 #include "penumbra/verify/eval.hpp"
 #include "validators.hpp"
@@ -26,17 +27,26 @@ struct EvalArgs {
   std::string receivers;
   std::string output;
   std::string texel_reads;  // optional Pf of the query's per-pixel texel reads
+  std::string ambiguous;    // optional Pf of the reference's ambiguity mask
   std::string device;
   bool reference = false;
   reference::LightParams light;
   std::optional<double> filter_radius;  // none: the default, 2 texels
 };
 
+// `path` absolute, through its links, `.` and `..`, whether or not it exists:
+// weakly_canonical leaves a relative path whose first part is missing
+// relative, so that `v.pfm` and `./v.pfm` would differ.
+fs::path resolved(const fs::path& path, std::error_code& error) {
+  const fs::path absolute = fs::absolute(path, error);
+  return error ? fs::path() : fs::weakly_canonical(absolute, error);
+}
+
 // Whether `a` and `b` name the same file, however spelled (neither need exist).
 bool same_file(const fs::path& a, const fs::path& b) {
   std::error_code a_error, b_error;
-  const fs::path a_path = fs::weakly_canonical(a, a_error);
-  const fs::path b_path = fs::weakly_canonical(b, b_error);
+  const fs::path a_path = resolved(a, a_error);
+  const fs::path b_path = resolved(b, b_error);
   return !a_error && !b_error && a_path == b_path;
 }
 
@@ -50,10 +60,10 @@ bool overwrites(const fs::path& output, const fs::path& input) {
 // Whether `path` is `dir` or below it, through any spelling or link.
 bool inside(const fs::path& path, const fs::path& dir) {
   std::error_code path_error, dir_error;
-  const fs::path resolved = fs::weakly_canonical(path, path_error);
+  const fs::path full = resolved(path, path_error);
   const fs::path root = fs::canonical(dir, dir_error);
   if (path_error || dir_error) return false;
-  const fs::path relative = resolved.lexically_relative(root);
+  const fs::path relative = full.lexically_relative(root);
   return !relative.empty() && *relative.begin() != "..";
 }
 
@@ -62,7 +72,7 @@ Status check_outputs_spare_inputs(const EvalArgs& args) {
   const std::pair<const char*, const std::string*> inputs[] = {{"--shadow-map", &args.shadow_map},
                                                                {"--receivers", &args.receivers}};
   const std::pair<const char*, const std::string*> outputs[] = {
-      {"-o", &args.output}, {"--texel-reads", &args.texel_reads}};
+      {"-o", &args.output}, {"--texel-reads", &args.texel_reads}, {"--ambiguous", &args.ambiguous}};
   for (const auto& [flag, output] : outputs) {
     if (output->empty()) continue;
     const std::string where = std::string(flag) + " " + *output;
@@ -81,17 +91,34 @@ Status check_outputs_spare_inputs(const EvalArgs& args) {
   return {};
 }
 
-Result<QueryOutput> run_eval(const EvalArgs& args) {
+// What eval writes: the visibility (-o) and the file beside it, the texel
+// reads (--texel-reads) or the ambiguity mask (--ambiguous).
+struct EvalOutput {
+  FloatImage visibility;
+  FloatImage companion;
+};
+
+// The option and file written beside -o, if any. Never both: the texel reads
+// need the device, the mask --reference (run_eval refuses the other).
+std::pair<const char*, const std::string*> companion(const EvalArgs& args) {
+  if (!args.ambiguous.empty()) return {"--ambiguous", &args.ambiguous};
+  return {"--texel-reads", &args.texel_reads};
+}
+
+Result<EvalOutput> run_eval(const EvalArgs& args) {
   PENUMBRA_TRY(check_outputs_spare_inputs(args));
   if (args.reference && !args.texel_reads.empty()) {
     return make_error(Error::Kind::bad_input, "--texel-reads",
                       "texel reads are counted by the shaders on the device; they are not "
                       "available with --reference");
   }
-  if (!args.texel_reads.empty() && same_file(args.output, args.texel_reads)) {
-    return make_error(
-        Error::Kind::bad_input, "--texel-reads " + args.texel_reads,
-        "is the same file as -o " + args.output + "; the texel reads need a file of their own");
+  if (!args.reference && !args.ambiguous.empty()) {
+    return make_error(Error::Kind::bad_input, "--ambiguous " + args.ambiguous,
+                      "the ambiguity mask is the CPU reference's; allowed only with --reference");
+  }
+  if (const auto [flag, path] = companion(args); !path->empty() && same_file(args.output, *path)) {
+    return make_error(Error::Kind::bad_input, std::string(flag) + " " + *path,
+                      "is the same file as -o " + args.output + "; allowed: a file of its own");
   }
   auto library = load_library(args.library);
   if (!library) return library.error();
@@ -116,13 +143,15 @@ Result<QueryOutput> run_eval(const EvalArgs& args) {
   inputs.light.filter_radius_uv = args.filter_radius;
 
   if (args.reference) {
-    auto visibility = eval_reference(*variant, inputs);
-    if (!visibility) return visibility.error();
-    return QueryOutput{std::move(*visibility), {}, std::nullopt};
+    auto image = eval_reference(*variant, *target, inputs);
+    if (!image) return image.error();
+    return EvalOutput{std::move(image->visibility), std::move(image->ambiguous)};
   }
   auto engine = Engine::create(EngineOptions{.device = args.device}, stderr_diagnostics(false));
   if (!engine) return engine.error();
-  return eval_on_device(*library, *variant, *target, inputs, **engine);
+  auto output = eval_on_device(*library, *variant, *target, inputs, **engine);
+  if (!output) return output.error();
+  return EvalOutput{std::move(output->visibility), std::move(output->texel_reads)};
 }
 
 // `path`'s temporary for write_outputs, beside it so a rename moves it in.
@@ -135,37 +164,49 @@ Error io_error(const fs::path& path, std::string message) {
   return make_error(Error::Kind::io, path.string(), std::move(message));
 }
 
-// Writes the visibility and, with --texel-reads, the texel reads as a pair:
-// each into a temporary beside its path, renamed into place once both are
-// written, so that a failure leaves neither file.
-Status write_outputs(const EvalArgs& args, const QueryOutput& output) {
-  if (args.texel_reads.empty()) return write_pfm(args.output, output.visibility);
+// Writes the visibility and, with --texel-reads or --ambiguous, its companion
+// as a pair: each into a temporary beside its path, renamed into place once
+// both are written, so that a failure leaves neither file.
+Status write_outputs(const EvalArgs& args, const EvalOutput& output) {
+  const fs::path other = *companion(args).second;
+  if (other.empty()) return write_pfm(args.output, output.visibility);
   const fs::path visibility = args.output;
-  const fs::path reads = args.texel_reads;
   const fs::path visibility_temp = staged(visibility);
-  const fs::path reads_temp = staged(reads);
+  const fs::path other_temp = staged(other);
   std::error_code ignored;
   if (Status written = write_pfm(visibility_temp, output.visibility); !written) {
     return io_error(visibility, written.error().message);
   }
-  if (Status written = write_pfm(reads_temp, output.texel_reads); !written) {
+  if (Status written = write_pfm(other_temp, output.companion); !written) {
     fs::remove(visibility_temp, ignored);
-    return io_error(reads, written.error().message);
+    return io_error(other, written.error().message);
   }
   std::error_code renamed;
-  fs::rename(reads_temp, reads, renamed);
+  fs::rename(other_temp, other, renamed);
   if (renamed) {
     fs::remove(visibility_temp, ignored);
-    fs::remove(reads_temp, ignored);
-    return io_error(reads, "cannot replace file: " + renamed.message());
+    fs::remove(other_temp, ignored);
+    return io_error(other, "cannot replace file: " + renamed.message());
   }
   fs::rename(visibility_temp, visibility, renamed);
   if (renamed) {
     fs::remove(visibility_temp, ignored);
-    fs::remove(reads, ignored);
+    fs::remove(other, ignored);
     return io_error(visibility, "cannot replace file: " + renamed.message());
   }
   return {};
+}
+
+// `eval --help`'s list of the --ambiguous codes, from the reference's own.
+std::string ambiguity_codes() {
+  std::string text =
+      "--ambiguous writes per pixel 0 where the reference decides it, else the sum of the codes "
+      "of its reasons (docs/verification.md, \"The ambiguity rule\"):";
+  for (const reference::AmbiguityReason& r : reference::kAmbiguityReasons) {
+    const std::string code = std::to_string(int(r.reason));
+    text += "\n  " + std::string(3 - code.size(), ' ') + code + "  " + r.summary;
+  }
+  return text;
 }
 
 }  // namespace
@@ -182,15 +223,25 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", args->output, "Visibility image to write (Pf)")->required();
   cmd->add_option("--texel-reads", args->texel_reads,
                   "Also write the shadow-map and min-max texels each pixel read (Pf; device only)");
+  cmd->add_option("--ambiguous", args->ambiguous,
+                  "With --reference, also write the pixels the error model excludes and why (Pf; "
+                  "codes below)");
   // Their ranges are checked with the inputs (check_eval_inputs), NaN included.
-  cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L (0: a point)");
+  // The defaults shown are index.json's `defaults`.
+  cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L (0: a point)")
+      ->capture_default_str();
   cmd->add_option("--frustum-width", args->light.frustum_width,
-                  "Frustum width Fw at the near plane");
-  cmd->add_option("--near", args->light.near_plane, "Near plane n");
-  cmd->add_option("--bias", args->light.bias, "Depth bias subtracted from z_r");
+                  "Frustum width Fw at the near plane")
+      ->capture_default_str();
+  cmd->add_option("--near", args->light.near_plane, "Near plane n")->capture_default_str();
+  cmd->add_option("--bias", args->light.bias, "Depth bias subtracted from z_r")
+      ->capture_default_str();
   cmd->add_option("--filter-radius", args->filter_radius, "pcf_poisson radius in uv (default 2/W)");
   cmd->add_option("--device", args->device, "Vulkan device: index or name substring");
-  cmd->add_flag("--reference", args->reference, "Run the CPU reference instead of the device");
+  cmd->add_flag(
+      "--reference", args->reference,
+      "Run the CPU reference of the target's shader (its step cap) instead of the device");
+  cmd->footer(ambiguity_codes());
   cmd->callback([args, &exit_code] {
     auto output = run_eval(*args);
     if (!output) {
@@ -202,7 +253,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       return;
     }
     std::cout << "wrote " << args->output << "\n";
-    if (!args->texel_reads.empty()) std::cout << "wrote " << args->texel_reads << "\n";
+    if (const std::string& other = *companion(*args).second; !other.empty()) {
+      std::cout << "wrote " << other << "\n";
+    }
   });
 }
 

@@ -11,13 +11,18 @@
 #   scripts/bench.sh accuracy [ARGS]  every variant's error against the exact
 #                                     area light on the accuracy suite, with its
 #                                     texel reads and time (penumbra_bench_accuracy)
+#   scripts/bench.sh capped           backprojection where hlsl_dx9's step cap
+#                                     binds, against the uncapped walk, on busy
+#                                     maps and the report's stage
+#                                     (penumbra_bench_capped, CPU only)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lib/setup.sh
 
 bench=minmax
-if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy) ]]; then
+if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy ||
+  $1 == capped) ]]; then
   bench=$1
   shift
 fi

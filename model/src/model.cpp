@@ -105,6 +105,28 @@ std::optional<int> walk_step_bound(const Variant& variant, int limit) {
   return own;
 }
 
+std::string inexact_walk(const Variant& variant, Target target) {
+  const int limit = traits(target).walk_step_limit;
+  const std::optional<int> steps = walk_step_bound(variant);
+  if (variant.technique != Technique::minmax_pcf || limit <= 0 || !steps || *steps <= limit) {
+    return {};
+  }
+  // The worst case grows with the kernel.
+  Variant smaller = variant;
+  int fits = 0;
+  for (int kernel = 1; kernel <= kMaxSamples; ++kernel) {
+    smaller.keys.kernel = kernel;
+    if (*walk_step_bound(smaller) <= limit) fits = kernel;
+  }
+  const bool brute_force = variant.keys.traversal == kBruteForceTraversal;
+  const std::string name(to_string(target));
+  return variant.name + " cannot count exactly on " + name + ": its walk may take " +
+         std::to_string(*steps) + " steps" + (brute_force ? " (a texel each)" : "") + ", and " +
+         name + " stops every walk after " + std::to_string(limit) +
+         " (ps_3_0 guarantees only 65,535 executed instructions); the largest kernel that fits " +
+         "is " + std::to_string(fits) + (brute_force ? " with traversal brute_force" : "");
+}
+
 bool walks_backprojection(Technique technique) {
   return technique == Technique::backprojection || technique == Technique::bitmask_backprojection;
 }

@@ -240,6 +240,10 @@ bool can_emit(Technique technique, Target target) {
   return !describe(technique).integer_ops || traits(target).integer_ops;
 }
 
+bool can_emit(const Variant& variant, Target target) {
+  return can_emit(variant.technique, target) && inexact_walk(variant, target).empty();
+}
+
 bool runs_pass(PassKind pass, const Variant& variant) {
   for (PassKind run : describe(variant.technique).passes) {
     if (run == pass) return true;

@@ -77,12 +77,12 @@ namespace detail {
 Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                       const Query& q, const VariantKeys& keys, std::optional<int> capped_steps) {
   const MinMax top = mip.node(mip.top_level(), 0, 0);
-  if (!(top.min < float_reference(q.z, light.bias))) return {1.0, false};
+  if (!(top.min < float_reference(q.z, light.bias))) return {1.0};
   const TexelRect window = backprojection_window(map, light, q, top.min);
   if (capped_steps && !window.empty()) {
     return backprojection_capped(map, mip, light, q, window, keys, *capped_steps);
   }
-  return {backprojection_visibility(backprojected_area(map, light, q, window), light), false};
+  return {backprojection_visibility(backprojected_area(map, light, q, window), light)};
 }
 
 }  // namespace detail

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
 
 #include "penumbra/model/model.hpp"
 #include "penumbra/reference/light.hpp"
@@ -65,16 +67,22 @@ class Projector {
 
 struct WalkEnd {
   bool truncated = false;  // stopped by `steps` or max_nodes, not by the walk's own end
+  bool coarse = false;     // took a node whole that it would have descended
   bool close = false;      // a float32 decision steering the walk was too close to call
 };
 
 // Walks `window` (non-empty, inside the map) for at most `steps` steps as
 // the shader does, calling add(texels, z) for each patch it hands over
-// (texels at linear depth z) and stopping once covered() holds.
-template <typename Add, typename Covered>
+// (texels at linear depth z) and stopping once covered() holds. With
+// `coarse` (the shader's BACKPROJECTION_FINISH_COARSE), the min-max walk
+// hands a node the steps left cannot refine (steps_to_end()) whole to
+// coarse(texels, range), so that it finishes rather than stops; brute force
+// stops either way.
+template <typename Add, typename Covered, typename Coarse = std::nullptr_t>
 WalkEnd walk_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
                             const Projector& projector, float limit, const TexelRect& window,
-                            const VariantKeys& keys, int steps, Add add, Covered covered) {
+                            const VariantKeys& keys, int steps, Add add, Covered covered,
+                            Coarse coarse = nullptr) {
   const int max_nodes = keys.max_nodes.value_or(kDefaultMaxNodes);
   WalkEnd end;
   if (keys.traversal == kBruteForceTraversal) {
@@ -99,11 +107,18 @@ WalkEnd walk_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
       const MinMax range = mip.node(cursor.level(), cursor.x(), cursor.y());
       const TexelRect texels = clip(cursor.texels(), map.width(), map.height());
       if (range.min < limit && projector.touches(projector.project(texels, range.min), end.close)) {
-        if (range.max < limit && range.min == range.max) {
-          add(texels, double(range.min));
-        } else {
-          descend = cursor.level() > 0;
+        // Flat: its texels tile one patch (level 0 always is: min == max).
+        const bool flat = range.max < limit && range.min == range.max;
+        descend = !flat;
+        if constexpr (!std::is_null_pointer_v<Coarse>) {
+          // Descend only where the walk still ends within its steps.
+          descend = descend && cursor.steps_to_end() + 4 <= steps - step - 1;
+          if (!flat && !descend) {
+            end.coarse = true;
+            coarse(texels, range);
+          }
         }
+        if (flat) add(texels, double(range.min));
       }
     }
     if (descend) {

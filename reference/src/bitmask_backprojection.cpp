@@ -111,9 +111,9 @@ Sample bitmask_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
                               int steps) {
   const MinMax top = mip.node(mip.top_level(), 0, 0);
   const float limit = occluder_limit(light, q);
-  if (!(top.min < limit)) return {1.0, false};
+  if (!(top.min < limit)) return {1.0};
   const TexelRect window = backprojection_window(map, light, q, top.min);
-  if (window.empty()) return {1.0, false};
+  if (window.empty()) return {1.0};
   const Projector projector(map, light, q);
   const int side = light_grid_side(keys.light_bits.value());
   LightSamples samples(side, light.light_world_size);
@@ -125,7 +125,9 @@ Sample bitmask_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
       [&] { return samples.full(); });
   // A walk stopped short by its bound may not reach a shared edge's other
   // patch, and where it stops depends on decisions too close to call.
-  return {1.0 - double(samples.set()) / (side * side), samples.undecided() || end.truncated};
+  return {1.0 - double(samples.set()) / (side * side),
+          ambiguous_if(samples.undecided(), Ambiguity::light_sample_edge) |
+              ambiguous_if(end.truncated, Ambiguity::walk_truncated)};
 }
 
 }  // namespace penumbra::reference::detail

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,14 +16,15 @@ namespace penumbra::reference {
 namespace {
 
 // A receiver_plane variant's receiver under every depth slope a GPU may
-// derive for pixel (i, j): the first candidate's result, ambiguous where
-// the candidates' results differ by more than `tol`.
+// derive for pixel (i, j): the first candidate's result, with every
+// candidate's reasons and depth_slope where their results differ by more
+// than `tol`.
 template <typename Evaluate>
 Sample with_depth_slope(Evaluate evaluate_at, const Query& query, const FloatImage& receivers,
                         int i, int j, const LightParams& light, double tol) {
   Sample first;
   double lo = 0.0, hi = 0.0;
-  bool ambiguous = false;
+  Ambiguity ambiguous = Ambiguity::none;
   bool any = false;
   for (const auto& [dz_du, dz_dv] : depth_slope_candidates(receivers, i, j, light)) {
     Query q = query;
@@ -32,10 +34,10 @@ Sample with_depth_slope(Evaluate evaluate_at, const Query& query, const FloatIma
     if (!any) first = s;
     lo = any ? std::min(lo, s.visibility) : s.visibility;
     hi = any ? std::max(hi, s.visibility) : s.visibility;
-    ambiguous = ambiguous || s.ambiguous;
+    ambiguous |= s.ambiguous;
     any = true;
   }
-  first.ambiguous = ambiguous || hi - lo > tol;
+  first.ambiguous = ambiguous | ambiguous_if(hi - lo > tol, Ambiguity::depth_slope);
   return first;
 }
 
@@ -80,7 +82,7 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                 ? with_depth_slope(evaluate_at, query, receivers, i, j, light, tol)
                                 : evaluate_at(query);
       result.visibility.at(i, j) = float(sample.visibility);
-      result.ambiguous.at(i, j) = sample.ambiguous ? 1.0f : 0.0f;
+      result.ambiguous.at(i, j) = float(std::uint8_t(sample.ambiguous));
     }
   }
   return result;

@@ -13,6 +13,7 @@ TexelRect MinmaxCursor::texels() const {
 }
 
 void MinmaxCursor::descend() {
+  steps_to_end_ += 4;
   x_ *= 2;
   y_ *= 2;
   --level_;
@@ -24,6 +25,7 @@ void MinmaxCursor::next() {
   const int first_x = root ? first_x_ : x_ / 2 * 2;
   const int first_y = root ? first_y_ : y_ / 2 * 2;
   climbed_ = false;
+  --steps_to_end_;
   if (x_ == first_x) {
     ++x_;
   } else if (y_ == first_y) {

@@ -63,7 +63,7 @@ Sample minmax_pcf(const ShadowMapView& map, const MinMaxMip& mip, const LightPar
   } else {
     count = count_occluders(mip, window, z_ref, *capped_steps).count;
   }
-  return {minmax_pcf_visibility(count, kernel), false};
+  return {minmax_pcf_visibility(count, kernel)};
 }
 
 }  // namespace detail

@@ -81,7 +81,7 @@ double filtered(const ShadowMapView& map, const LightParams& light, const Query&
 Sample pcss_minmax(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                    const Query& q, const Disk& pcf_disk, const SamplingPrecision& precision) {
   // Up to the near plane, lit, as pcss.
-  if (!(q.z > light.near_plane)) return {1.0, false};
+  if (!(q.z > light.near_plane)) return {1.0};
   // Step 1, blocker search over the window of uv half-width w around (u, v).
   const float light_size_uv = float(light.light_size_uv());
   const float w = light_size_uv * (float(q.z) - float(light.near_plane)) / float(q.z);
@@ -113,7 +113,7 @@ Sample pcss_minmax(const ShadowMapView& map, const MinMaxMip& mip, const LightPa
       }
     }
   }
-  return {visibility, ambiguous};
+  return {visibility, ambiguous_if(ambiguous, Ambiguity::search_window_edge)};
 }
 
 }  // namespace penumbra::reference::detail

@@ -9,13 +9,13 @@ namespace penumbra::reference::detail {
 Sample screen_blur_factor(const ShadowMapView& map, const Query& q, double z_ref,
                           const SamplingPrecision& precision) {
   double lit_count = 0.0;
-  bool ambiguous = false;
+  Ambiguity ambiguous = Ambiguity::none;
   for (int j = -1; j <= 1; ++j) {
     for (int i = -1; i <= 1; ++i) {
       const Sample s = point_compare(map, q.u + double(i) / map.width(),
                                      q.v + double(j) / map.height(), z_ref, precision);
       lit_count += s.visibility;
-      ambiguous = ambiguous || s.ambiguous;
+      ambiguous |= s.ambiguous;
     }
   }
   return {lit_count / 9.0, ambiguous};

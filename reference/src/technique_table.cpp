@@ -53,9 +53,9 @@ Sample unless_point_light(const ReceiverInputs& in, Walk walk) {
   return walk();
 }
 
-// A sample with `ambiguous` also set where a placed point was.
+// A sample also marked where placed_disk() put a point on its seam.
 Sample with_seam(Sample sample, bool seam) {
-  sample.ambiguous = sample.ambiguous || seam;
+  sample.ambiguous |= ambiguous_if(seam, Ambiguity::rotation_seam);
   return sample;
 }
 
@@ -69,16 +69,16 @@ constexpr TechniqueReference kReferences[] = {
     {Technique::pcf_grid, false,
      [](const Variant& v) { return check_kernel(v, kMaxSamples, true); },
      [](const ReceiverInputs& in) {
-       return Sample{pcf_grid(in.map, in.query, in.z_ref, in.variant.keys.kernel.value()), false};
+       return Sample{pcf_grid(in.map, in.query, in.z_ref, in.variant.keys.kernel.value())};
      },
      bilinear_tolerance},
     {Technique::pcf_poisson, false, needs_pcf_disk,
      [](const ReceiverInputs& in) {
        bool seam = false;
        const Disk pcf = placed_disk(in.variant.pcf_disk.value(), in.variant.keys, in.query, seam);
-       return Sample{poisson_pcf(in.map, in.query, in.z_ref, pcf.points,
-                                 in.light.filter_radius(in.map.width())),
-                     seam};
+       return with_seam(Sample{poisson_pcf(in.map, in.query, in.z_ref, pcf.points,
+                                           in.light.filter_radius(in.map.width()))},
+                        seam);
      },
      bilinear_tolerance},
     {Technique::pcss, false,

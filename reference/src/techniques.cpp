@@ -21,7 +21,8 @@ Sample point_compare(const ShadowMapView& map, double u, double v, double z_ref,
                      const SamplingPrecision& precision) {
   const TexelCandidates texels = candidate_texels(map, u, v, precision.point_window());
   auto lit_at = [&](Texel t) { return lit(z_ref, map.depth(t.i, t.j)); };
-  return {lit_at(texels.texels[0]) ? 1.0 : 0.0, varies(texels, lit_at)};
+  return {lit_at(texels.texels[0]) ? 1.0 : 0.0,
+          ambiguous_if(varies(texels, lit_at), Ambiguity::texel_boundary)};
 }
 
 double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kernel) {
@@ -40,7 +41,7 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
             const Disk& blocker_disk, const Disk& pcf_disk, const SamplingPrecision& precision) {
   // Up to the near plane the search width is 0 or negative: a rendered map
   // holds nothing there to occlude the receiver.
-  if (!(q.z > light.near_plane)) return {1.0, false};
+  if (!(q.z > light.near_plane)) return {1.0};
   // Step 1, blocker search: point samples over the light's footprint on the
   // near plane, seen from the receiver (similar triangles).
   const double light_size_uv = light.light_size_uv();
@@ -56,7 +57,7 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   };
   double blocker_sum = 0.0;
   int blockers = 0;
-  bool ambiguous = false;
+  Ambiguity ambiguous = Ambiguity::none;
   for (const Point2& d : blocker_disk.points) {
     const double du = d[0] * search_width;
     const double dv = d[1] * search_width;
@@ -64,7 +65,7 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
     const auto blocker_at = blocker_against(z_ref + q.dz_du * du + q.dz_dv * dv);
     const TexelCandidates texels =
         candidate_texels(map, q.u + du, q.v + dv, precision.point_window());
-    ambiguous = ambiguous || varies(texels, blocker_at);
+    ambiguous |= ambiguous_if(varies(texels, blocker_at), Ambiguity::texel_boundary);
     if (const auto depth = blocker_at(texels.texels[0])) {
       blocker_sum += *depth;
       ++blockers;
@@ -93,7 +94,7 @@ Sample dispatch(const Variant& variant, const ShadowMapView& map, const MinMaxMi
                 const ShaderLimits& limits) {
   // At or behind the light nothing can occlude the receiver, and the
   // techniques' geometry divides by z_r; `!(>)` also takes NaN.
-  if (!(query.z > 0.0)) return {1.0, false};
+  if (!(query.z > 0.0)) return {1.0};
   Query q = query;
   q.z = std::min(q.z, kMaxReceiverDepth);
   return detail::reference_for(variant.technique)

@@ -12,7 +12,16 @@
 // The including technique defines, before including this file, its
 // BackprojectionState, backprojection_add(state, rect), which returns the
 // state after one projected rectangle, and backprojection_covered(state),
-// true once the light is covered.
+// true once the light is covered; with BACKPROJECTION_FINISH_COARSE also
+// backprojection_add_share(state, rect, share), which adds that share of it.
+//
+// BACKPROJECTION_FINISH_COARSE (a target's cap on the steps binds: hlsl_dx9)
+// makes the min-max walk finish rather than stop: a node it cannot refine
+// and still end within the steps is taken whole, one patch at its min
+// depth, all of it where every texel occludes and half where some may not.
+// Guennebaud et al. back-project a coarser level of the map for wide
+// penumbrae alike; the error is bounded by the nodes so taken
+// (docs/targets.md).
 #ifndef PENUMBRA_BACKPROJECTION_WALK_GLSL
 #define PENUMBRA_BACKPROJECTION_WALK_GLSL
 
@@ -36,9 +45,9 @@ vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slop
               (backprojection_slope((texels.zw + 1.0) * TEXEL_SIZE) - receiver_slope) * gain);
 }
 
-// Whether texels at linear depth >= z_min can touch the light at all.
-bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receiver_slope) {
-  vec4 rect = backprojection_project(texels, z_min, query, receiver_slope);
+// Whether a light-plane rectangle meets the light. For texels projected at
+// their min depth: whether they can touch it at all (g grows with z).
+bool backprojection_touches(vec4 rect) {
   return all(lessThanEqual(rect.xy, vec2(LIGHT_WORLD_SIZE))) &&
          all(greaterThanEqual(rect.zw, vec2(-LIGHT_WORLD_SIZE)));
 }
@@ -79,20 +88,40 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
   }
 #else
   MinmaxCursor cursor = minmax_begin(window);
+#if defined(BACKPROJECTION_FINISH_COARSE)
+  // The steps to the walk's end if it descends no further, this one
+  // included: 4 at the roots; a step takes one, a descent adds four (the
+  // children, then the rise past them). Descending only where the walk then
+  // still ends within its steps, it always ends, and descends wherever the
+  // uncapped walk would if that one fits.
+  float steps_to_end = 4.0;
+  float steps_left = float(BACKPROJECTION_MAX_STEPS);
+#endif
   MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, cursor.done) {
     bool descend = false;
     if (!cursor.climbed) visits += 1.0;
+#if defined(BACKPROJECTION_FINISH_COARSE)
+    steps_left -= 1.0;  // after this step
+#endif
     if (!cursor.climbed && !minmax_window_empty(minmax_node_part(cursor, window))) {
       vec2 range = minmax_cursor_read(cursor);
       vec4 texels = minmax_node_texels(cursor);
-      float z_min = range.x * INV_DEPTH_SCALE;
-      if (range.x < limit && backprojection_can_touch(texels, z_min, query, receiver_slope)) {
-        if (range.y < limit && range.x == range.y) {
-          state = backprojection_add(
-              state, backprojection_project(texels, z_min, query, receiver_slope));
-        } else {
-          descend = cursor.level > 0.5;
+      vec4 rect = backprojection_project(texels, range.x * INV_DEPTH_SCALE, query, receiver_slope);
+      // (A call inside && would be a branch: Shader Model 3 slots are counted.)
+      bool touches = backprojection_touches(rect);
+      if (range.x < limit && touches) {
+        // Flat (one depth, every texel occluding): its texels tile one patch.
+        // Level 0 always is (min == max), so it is never descended.
+        bool one_patch = range.y < limit && range.x == range.y;
+#if defined(BACKPROJECTION_FINISH_COARSE)
+        descend = !one_patch && steps_left >= steps_to_end + 4.0;
+        if (!descend) {
+          state = backprojection_add_share(state, rect, range.y < limit ? 1.0 : 0.5);
         }
+#else
+        descend = !one_patch;
+        if (one_patch) state = backprojection_add(state, rect);
+#endif
       }
     }
     if (descend) {
@@ -100,6 +129,9 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
     } else {
       minmax_next(cursor);
     }
+#if defined(BACKPROJECTION_FINISH_COARSE)
+    steps_to_end += descend ? 4.0 : -1.0;
+#endif
     // Stop when the light is covered or the work bound is reached. (A call
     // inside || would be a branch: Shader Model 3 slots are counted.)
     bool covered = backprojection_covered(state);

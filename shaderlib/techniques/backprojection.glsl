@@ -12,11 +12,22 @@ float backprojection_whole_light_area() {
   return 4.0 * LIGHT_WORLD_SIZE * LIGHT_WORLD_SIZE;
 }
 
-// `area` plus the area of a light-plane rectangle inside the light [-L, L]^2.
-float backprojection_add(float area, vec4 rect) {
+// The area of a light-plane rectangle inside the light [-L, L]^2.
+float backprojection_inside(vec4 rect) {
   vec2 size = max(min(rect.zw, vec2(LIGHT_WORLD_SIZE)) - max(rect.xy, vec2(-LIGHT_WORLD_SIZE)),
                   vec2(0.0));
-  return area + size.x * size.y;
+  return size.x * size.y;
+}
+
+// `area` plus the rectangle's area inside the light.
+float backprojection_add(float area, vec4 rect) {
+  return area + backprojection_inside(rect);
+}
+
+// `area` plus `share` of the rectangle's area inside the light: a node the
+// capped walk takes whole (common/backprojection_walk.glsl).
+float backprojection_add_share(float area, vec4 rect, float share) {
+  return area + share * backprojection_inside(rect);
 }
 
 bool backprojection_covered(float area) {

@@ -65,9 +65,9 @@ TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
   ASSERT_TRUE(built) << built.error().to_string();
   auto runs = bytecode_runs((*built)->library(), GetParam());
   ASSERT_TRUE(runs) << runs.error().to_string();
-  const Technique technique = find_default_variant(GetParam())->technique;
+  const Variant& variant = *find_default_variant(GetParam());
   ASSERT_EQ(runs->size(), std::ranges::count_if(bytecode_targets(), [&](Target target) {
-              return can_emit(technique, target);
+              return can_emit(variant, target);
             }));
   for (const TargetRun& run : *runs) {
     const std::string label(to_string(run.target));

@@ -165,6 +165,40 @@ TEST(ManifestErrors, BitmaskIsRefusedForDirect3D9) {
           " (this set takes the top-level targets; give it a 'target' list)");
 }
 
+// minmax_pcf promises the exact count, which hlsl_dx9's cap on the walk's
+// steps breaks from K = 9 (K = 15 with brute force): refused like the bitmask.
+TEST(ManifestErrors, MinmaxPcfIsRefusedWhereItCannotCountExactly) {
+  const std::string why =
+      "minmax_pcf_k16 cannot count exactly on hlsl_dx9: its walk may take 599 steps, and "
+      "hlsl_dx9 stops every walk after 224 (ps_3_0 guarantees only 65,535 executed "
+      "instructions); the largest kernel that fits is 8; ";
+  expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": [8, 16],
+                                              "target": ["spirv", "hlsl_dx9"]})")),
+                   "perms.json: /sets/1/target: " + why +
+                       "leave hlsl_dx9 out of this set's 'target' list, or use a smaller "
+                       "kernel (docs/targets.md)");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 16})")),
+                   "perms.json: /sets/1: " + why +
+                       "this set takes the top-level targets: give it a 'target' list without "
+                       "hlsl_dx9, or use a smaller kernel (docs/targets.md)");
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 15,
+                                 "traversal": "brute_force", "target": "hlsl_dx9"})")),
+      "perms.json: /sets/1/target: minmax_pcf_k15_brute_force cannot count exactly on hlsl_dx9: "
+      "its walk may take 225 steps (a texel each), and hlsl_dx9 stops every walk after 224 "
+      "(ps_3_0 guarantees only 65,535 executed instructions); the largest kernel that fits is "
+      "14 with traversal brute_force; leave hlsl_dx9 out of this set's 'target' list, or use a "
+      "smaller kernel (docs/targets.md)");
+  // What fits is built for every target; the rest for the others.
+  const std::string fits = R"({"schema": 1, "sets": [
+    {"technique": "minmax_pcf", "kernel": [8, 14], "traversal": "brute_force"},
+    {"technique": "minmax_pcf", "kernel": 8},
+    {"technique": "minmax_pcf", "kernel": 64, "target": ["spirv", "hlsl_dx11"]}]})";
+  Result<Manifest> manifest = parse_manifest(fits, "perms.json");
+  ASSERT_TRUE(manifest.ok()) << manifest.error().to_string();
+  EXPECT_TRUE(expand(*manifest).ok());
+}
+
 TEST(ManifestErrors, RotationIsIgnWhereSamplesAreBaked) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "pcss", "blocker_samples": 16,
                                               "pcf_samples": 16, "disk": "poisson",

@@ -47,7 +47,7 @@ Variant make_variant(Technique technique) {
       v.pcf_disk = whitepaper16();
       break;
     case Technique::minmax_pcf:
-      v.keys.kernel = 12;
+      v.keys.kernel = 8;  // the largest hlsl_dx9 counts exactly
       break;
     case Technique::backprojection:
       break;
@@ -428,6 +428,39 @@ TEST(BuildLibrary, RefusesToReplaceAnythingButALibrary) {
       build_library(std::span(&hard, 1), dir.path / "empty", {}, ignore_diagnostics()).ok());
   EXPECT_TRUE(
       build_library(std::span(&hard, 1), dir.path / "empty", {}, ignore_diagnostics()).ok());
+}
+
+// minmax_pcf promises the exact count: past the manifest's check, a kernel
+// whose walk hlsl_dx9's cap would stop short is refused when compiled
+// directly, and in a library written by hand.
+TEST(TargetRules, MinmaxPcfIsRefusedWhereItCannotCountExactly) {
+  Variant variant = make_variant(Technique::minmax_pcf);
+  variant.keys.kernel = 16;
+  variant.name = variant_name(variant.technique, variant.keys);
+  auto pass = compile_pass(variant, Target::hlsl_dx9, PassKind::query);
+  ASSERT_FALSE(pass.ok());
+  EXPECT_EQ(pass.error().kind, Error::Kind::bad_input);
+  EXPECT_THAT(pass.error().to_string(),
+              HasSubstr("variant minmax_pcf_k16, target hlsl_dx9, passes/query.frag"));
+  EXPECT_THAT(pass.error().to_string(),
+              HasSubstr("minmax_pcf_k16 cannot count exactly on hlsl_dx9: its walk may take 599 "
+                        "steps"));
+  EXPECT_TRUE(compile_pass(variant, Target::hlsl_dx10, PassKind::query).ok());
+
+  TempDir dir("inexact");
+  variant.targets = {Target::spirv};
+  ASSERT_TRUE(
+      build_library(std::span(&variant, 1), dir.path / "out", {}, ignore_diagnostics()).ok());
+  const auto index = dir.path / "out" / "index.json";
+  std::string text = slurp(index);
+  const std::string spirv = "\"targets\":[\"spirv\"]";
+  text.replace(text.find(spirv), spirv.size(), "\"targets\":[\"spirv\",\"hlsl_dx9\"]");
+  std::ofstream(index) << text;
+  auto loaded = load_library(dir.path / "out");
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_EQ(loaded.error().kind, Error::Kind::bad_input);
+  EXPECT_THAT(loaded.error().to_string(),
+              HasSubstr("/variants/0/targets/1: minmax_pcf_k16 cannot count exactly on hlsl_dx9"));
 }
 
 TEST(LoadLibrary, UnknownPassesAndSchemasAreErrorsNamingTheJsonPath) {

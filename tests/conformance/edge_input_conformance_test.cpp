@@ -41,7 +41,7 @@ TEST_P(EdgeInputsOnDevice, EveryTargetMatchesTheReference) {
   std::vector<Target> targets = {Target::spirv, Target::hlsl_dx9};
   const Variant* wanted = find_default_variant(GetParam());
   ASSERT_NE(wanted, nullptr);
-  std::erase_if(targets, [&](Target target) { return !can_emit(wanted->technique, target); });
+  std::erase_if(targets, [&](Target target) { return !can_emit(*wanted, target); });
   auto built = build_default_variant(GetParam(), targets);
   ASSERT_TRUE(built) << built.error().to_string();
   const LibraryVariant* variant = (*built)->library().find(GetParam());

@@ -29,7 +29,7 @@ Status prove_default_variant(const std::string& name, Prover prover,
   }
   std::string failures;
   for (const Target target : targets) {
-    if (!can_emit(variant->variant.technique, target)) continue;
+    if (!can_emit(variant->variant, target)) continue;
     int proved = 0;
     for (const auto& [pass, files] : variant->passes) {
       if (!files.contains(target)) continue;

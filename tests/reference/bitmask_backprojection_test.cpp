@@ -41,7 +41,7 @@ TEST(BitmaskBackprojection, OverlapIsCountedOnce) {
   fill(map, 3, 3, 4, 3, 1.0f);
   fill(map, 3, 2, 4, 2, float(6.0 / 7.0));
   const Sample sample = bitmask(map, {0.5, 0.5, 2.0}, 256);
-  EXPECT_FALSE(sample.ambiguous);
+  EXPECT_EQ(sample.ambiguous, Ambiguity::none);
   EXPECT_EQ(sample.visibility, 0.5);
   // The area sum adds row 2's 0.75 x 0.125 again.
   const double summed = evaluate(testing::backprojection_variant(), ShadowMapView(map),
@@ -66,7 +66,7 @@ TEST(BitmaskBackprojection, SamplesTrackTheExactAreaOfAPatch) {
     int slot = 0;
     for (int bits : {64, 1024}) {
       const Sample sample = bitmask(map, q, bits);
-      if (!sample.ambiguous)
+      if (sample.ambiguous == Ambiguity::none)
         worst[slot] = std::max(worst[slot], std::abs(sample.visibility - exact));
       ++slot;
     }

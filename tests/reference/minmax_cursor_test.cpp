@@ -1,8 +1,9 @@
 // The shaders' stack-free walk (shaderlib/common/minmax_traversal.glsl),
 // as the reference's MinmaxCursor takes it in count_occluders(): it counts
 // exactly the texels brute force counts within the shader's bounds
-// (minmax_max_visits(), minmax_max_steps()), and a walk a target caps
-// counts what its steps reached.
+// (minmax_max_visits(), minmax_max_steps()), a walk a target caps counts
+// what its steps reached, and one that descends only where it then still
+// ends within them always ends.
 #include "penumbra/reference/minmax_cursor.hpp"
 
 #include <gtest/gtest.h>
@@ -110,6 +111,76 @@ TEST(MinmaxCursor, CountsExactlyWithinTheBoundsAndACapStopsIt) {
   // The walk does use a good part of the bound: it is not vacuous.
   EXPECT_GT(most_steps_at_128 * 2, minmax_max_steps(128));
   EXPECT_GT(truncated, 1000);
+}
+
+// The steps a walk takes from a node if it descends no further: exactly
+// steps_to_end(), from anywhere in a walk that descends any pattern.
+TEST(MinmaxCursor, StepsToEndCountsTheRestOfAWalkThatDescendsNoFurther) {
+  std::mt19937 random(9);
+  std::uniform_int_distribution<int> corner(0, 299), side(1, 300), coin(0, 2);
+  for (int sample = 0; sample < 300; ++sample) {
+    const int x0 = corner(random), y0 = corner(random);
+    const TexelRect window = clip({x0, y0, x0 + side(random), y0 + side(random)}, 300, 300);
+    for (MinmaxCursor cursor(window); !cursor.done();) {
+      MinmaxCursor rest = cursor;
+      int steps = 0;
+      for (; !rest.done(); ++steps) rest.next();
+      ASSERT_EQ(steps, cursor.steps_to_end()) << "window from " << x0 << ", " << y0;
+      const bool reads = !cursor.climbed() && !intersect(cursor.texels(), window).empty();
+      if (reads && cursor.level() > 0 && coin(random) > 0) {
+        cursor.descend();
+      } else {
+        cursor.next();
+      }
+    }
+  }
+}
+
+// backprojection's walk under a target's cap (BACKPROJECTION_FINISH_COARSE)
+// descends only where it still ends within its n steps: it always ends, and
+// where the walk that descends wherever it wants takes at most n steps, it
+// is that walk. Here every node read wants refining.
+TEST(MinmaxCursor, AWalkThatDescendsOnlyWhereItStillEndsIsWholeWhereThatFits) {
+  std::mt19937 random(9);
+  std::uniform_int_distribution<int> corner(0, 511), side(1, 64);
+  auto wants = [](const MinmaxCursor& cursor, const TexelRect& window) {
+    return !cursor.climbed() && !intersect(cursor.texels(), window).empty() && cursor.level() > 0;
+  };
+  int whole = 0, finished = 0;
+  for (int sample = 0; sample < 400; ++sample) {
+    const int x0 = corner(random), y0 = corner(random);
+    const TexelRect window = clip({x0, y0, x0 + side(random), y0 + side(random)}, 512, 512);
+    int uncapped = 0;
+    for (MinmaxCursor cursor(window); !cursor.done(); ++uncapped) {
+      if (wants(cursor, window)) {
+        cursor.descend();
+      } else {
+        cursor.next();
+      }
+    }
+    for (int steps : {4, 5, 31, 224, 1000}) {
+      MinmaxCursor cursor(window);
+      int step = 0;
+      bool refused = false;
+      for (; step < steps && !cursor.done(); ++step) {
+        if (wants(cursor, window) && cursor.steps_to_end() + 4 <= steps - step - 1) {
+          cursor.descend();
+        } else {
+          refused = refused || wants(cursor, window);
+          cursor.next();
+        }
+      }
+      ASSERT_TRUE(cursor.done()) << steps << " steps, window from " << x0 << ", " << y0;
+      ASSERT_EQ(refused, uncapped > steps) << steps << " steps, window from " << x0 << ", " << y0;
+      if (!refused) {
+        ASSERT_EQ(step, uncapped);
+      }
+      whole += !refused;
+      finished += refused;
+    }
+  }
+  EXPECT_GT(whole, 100);
+  EXPECT_GT(finished, 1000);
 }
 
 // Brute force capped after n texels counts the first n in rows.

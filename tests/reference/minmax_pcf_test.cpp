@@ -226,7 +226,7 @@ TEST(MinMaxPcf, ComparesInFloatLikeTheGpu) {
   const Sample s =
       evaluate(testing::minmax_pcf_variant(3), ShadowMapView(depth), light, {0.5, 0.5, 10.0});
   EXPECT_EQ(s.visibility, 1.0);
-  EXPECT_FALSE(s.ambiguous);
+  EXPECT_EQ(s.ambiguous, Ambiguity::none);
 }
 
 TEST(MinMaxPcf, WindowUsesTheFloatProductOfUAndWidth) {

@@ -91,11 +91,13 @@ TEST(PcssMinMax, AmbiguousOnlyWhenAWindowEdgeChoiceChangesTheResult) {
   ASSERT_NEAR((float(u) + w) * 256.0f, 128.0f, 1e-3);
   FloatImage map(256, 256, 1, 32.0f);
   map.at(140, 128) = 10.0f;
-  EXPECT_TRUE(pcss_minmax_at(map, {u, v, z_r}, {{2.17f, 0.0f}}).ambiguous);
+  EXPECT_EQ(pcss_minmax_at(map, {u, v, z_r}, {{2.17f, 0.0f}}).ambiguous,
+            Ambiguity::search_window_edge);
   // The blocker changes, but a PCF point at the receiver is lit either way.
-  EXPECT_FALSE(pcss_minmax_at(map, {u, v, z_r}, {{0.0f, 0.0f}}).ambiguous);
+  EXPECT_EQ(pcss_minmax_at(map, {u, v, z_r}, {{0.0f, 0.0f}}).ambiguous, Ambiguity::none);
   // Away from the boundary nothing is ambiguous.
-  EXPECT_FALSE(pcss_minmax_at(map, {u + 0.3 / 256, v, z_r}, {{2.17f, 0.0f}}).ambiguous);
+  EXPECT_EQ(pcss_minmax_at(map, {u + 0.3 / 256, v, z_r}, {{2.17f, 0.0f}}).ambiguous,
+            Ambiguity::none);
 }
 
 TEST(CheckVariant, PcssMinMaxNeedsItsDisk) {

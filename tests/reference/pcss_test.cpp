@@ -23,7 +23,7 @@ TEST(Pcss, NoBlockerIsFullyLit) {
   const FloatImage map(64, 64, 1, 20.0f);
   const Sample s = pcss_at(map, {0.5, 0.5, 15.0});
   EXPECT_EQ(s.visibility, 1.0);
-  EXPECT_FALSE(s.ambiguous);
+  EXPECT_EQ(s.ambiguous, Ambiguity::none);
 }
 
 TEST(Pcss, FullyOccludedIsBlack) {
@@ -101,17 +101,18 @@ TEST(Pcss, AmbiguousWhenABlockerSampleSitsOnADifferingBoundary) {
   const Variant single = pcss_variant({{0.0f, 0.0f}}, {{0.0f, 0.0f}});
   const Query on_boundary{0.5, 0.5 + 0.5 / 64, 15.0};  // u W = 32 exactly
   // Blocker against non-blocker.
-  EXPECT_TRUE(
-      pcss_at(column_split_map(64, 64, 32, 10.0f, 20.0f), on_boundary, {}, single).ambiguous);
+  EXPECT_EQ(pcss_at(column_split_map(64, 64, 32, 10.0f, 20.0f), on_boundary, {}, single).ambiguous,
+            Ambiguity::texel_boundary);
   // Two blockers at different depths change the average.
-  EXPECT_TRUE(
-      pcss_at(column_split_map(64, 64, 32, 10.0f, 12.0f), on_boundary, {}, single).ambiguous);
+  EXPECT_EQ(pcss_at(column_split_map(64, 64, 32, 10.0f, 12.0f), on_boundary, {}, single).ambiguous,
+            Ambiguity::texel_boundary);
   // Two non-blockers at different depths do not matter.
-  EXPECT_FALSE(
-      pcss_at(column_split_map(64, 64, 32, 16.0f, 20.0f), on_boundary, {}, single).ambiguous);
+  EXPECT_EQ(pcss_at(column_split_map(64, 64, 32, 16.0f, 20.0f), on_boundary, {}, single).ambiguous,
+            Ambiguity::none);
   // Away from the boundary nothing is ambiguous.
   const Query inside{0.5 + 0.3 / 64, 0.5 + 0.5 / 64, 15.0};
-  EXPECT_FALSE(pcss_at(column_split_map(64, 64, 32, 10.0f, 20.0f), inside, {}, single).ambiguous);
+  EXPECT_EQ(pcss_at(column_split_map(64, 64, 32, 10.0f, 20.0f), inside, {}, single).ambiguous,
+            Ambiguity::none);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/reference/techniques.hpp"
 
 namespace penumbra::reference {
 namespace {
@@ -56,6 +57,33 @@ TEST(SampleRotation, SquareSetsShiftOnTheTorusAndStayInTheSquare) {
     }
   }
   EXPECT_GT(shift[0] + shift[1], 0.0);
+}
+
+// A square sample the shift puts on the torus's seam may wrap either way in
+// float32: the receiver is marked with rotation_seam, and only there.
+TEST(SampleRotation, ASampleOnTheSeamMarksTheReceiver) {
+  const int x = 3, y = 5;
+  // The pixel's interleaved gradient noise, as sample_rotation.cpp has it.
+  const double noise =
+      std::fmod(52.984375 * std::fmod(0.067138671875 * x + 0.005859375 * y, 1.0), 1.0);
+  VariantKeys keys = ign();
+  keys.pcf_samples = 1;
+  const FloatImage map(8, 8, 1, 20.0f);
+  const Query q{.u = 0.5, .v = 0.5, .z = 10.0, .pixel_x = x, .pixel_y = y};
+  for (const double offset : {0.0, 0.01}) {
+    // (p + 1) / 2 + noise = 1 + offset / 2 on the first axis.
+    const float p = float(1.0 - 2.0 * noise + offset);
+    const Variant variant{"pcf_poisson",
+                          Technique::pcf_poisson,
+                          keys,
+                          {},
+                          Disk{"test", "square_stratified", 0, {{p, 0.25f}}, 0.0},
+                          {},
+                          {}};
+    ASSERT_TRUE(check_variant(variant));
+    EXPECT_EQ(evaluate(variant, ShadowMapView(map), {}, q).ambiguous,
+              offset == 0.0 ? Ambiguity::rotation_seam : Ambiguity::none);
+  }
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ TEST(Hard, TexelCentresReadTheirOwnTexel) {
   EXPECT_EQ(hard_at(map, 1.5 / 4, 2.5 / 4, 7.0).visibility, 0.0);
   EXPECT_EQ(hard_at(map, 0.5 / 4, 2.5 / 4, 7.0).visibility, 1.0);
   EXPECT_EQ(hard_at(map, 1.5 / 4, 1.5 / 4, 7.0).visibility, 1.0);
-  EXPECT_FALSE(hard_at(map, 1.5 / 4, 2.5 / 4, 7.0).ambiguous);
+  EXPECT_EQ(hard_at(map, 1.5 / 4, 2.5 / 4, 7.0).ambiguous, Ambiguity::none);
 }
 
 TEST(Hard, ComparisonIsLessEqual) {
@@ -40,7 +40,7 @@ TEST(Hard, TexelEdgesBelongToTheTexelOnTheRight) {
   const FloatImage map = column_split_map(4, 4, 2, 5.0f, 10.0f);
   // u W = 2 exactly starts texel 2 (lit), and is ambiguous: texel 1 occludes.
   EXPECT_EQ(hard_at(map, 0.5, 0.3, 7.0).visibility, 1.0);
-  EXPECT_TRUE(hard_at(map, 0.5, 0.3, 7.0).ambiguous);
+  EXPECT_EQ(hard_at(map, 0.5, 0.3, 7.0).ambiguous, Ambiguity::texel_boundary);
   EXPECT_EQ(hard_at(map, 0.4999, 0.3, 7.0).visibility, 0.0);
 }
 
@@ -70,7 +70,8 @@ TEST(Ambiguity, FlagsExactlyTheWindowAroundADifferingBoundary) {
     for (int k = 0; k <= 4 * 4096; ++k) {
       const double x = k / 4096.0;  // u W, exact in binary
       const bool expected = std::abs(x - 2.0) <= window;
-      EXPECT_EQ(hard_at(map, x / 4, 0.3, 7.0, precision).ambiguous, expected)
+      EXPECT_EQ(hard_at(map, x / 4, 0.3, 7.0, precision).ambiguous,
+                ambiguous_if(expected, Ambiguity::texel_boundary))
           << "bits " << bits << ", u W = " << x;
     }
   }
@@ -80,10 +81,10 @@ TEST(Ambiguity, ConsidersBothAxes) {
   FloatImage map(4, 4, 1, 10.0f);
   map.at(1, 1) = 5.0f;  // one occluding texel; its corner (2, 2) touches three lit ones
   const double near_corner = (2.0 - 0.001) / 4;
-  EXPECT_TRUE(hard_at(map, near_corner, near_corner, 7.0).ambiguous);
+  EXPECT_EQ(hard_at(map, near_corner, near_corner, 7.0).ambiguous, Ambiguity::texel_boundary);
   EXPECT_EQ(hard_at(map, near_corner, near_corner, 7.0).visibility, 0.0);
   // Near the corner (2, 2) only across v: texels (2, 1) and (2, 2) are both lit.
-  EXPECT_FALSE(hard_at(map, 2.5 / 4, near_corner, 7.0).ambiguous);
+  EXPECT_EQ(hard_at(map, 2.5 / 4, near_corner, 7.0).ambiguous, Ambiguity::none);
 }
 
 TEST(CandidateTexels, ListsTheNearestFirst) {

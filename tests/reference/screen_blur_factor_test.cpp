@@ -22,10 +22,10 @@ TEST(ScreenBlurFactor, AllLitAndAllShadowed) {
   for (double u : {0.5 / 8, 3.5 / 8, 7.5 / 8}) {
     const Sample lit = factor(far, u, 4.5 / 8);
     EXPECT_EQ(lit.visibility, 1.0);
-    EXPECT_FALSE(lit.ambiguous);
+    EXPECT_EQ(lit.ambiguous, Ambiguity::none);
     const Sample shadowed = factor(near, u, 4.5 / 8);
     EXPECT_EQ(shadowed.visibility, 0.0);
-    EXPECT_FALSE(shadowed.ambiguous);
+    EXPECT_EQ(shadowed.ambiguous, Ambiguity::none);
   }
 }
 
@@ -35,10 +35,10 @@ TEST(ScreenBlurFactor, CountsLitTexelsAcrossAnEdge) {
   const FloatImage map = column_split_map(8, 8, 4, 5.0f, 20.0f);
   const Sample left = factor(map, 3.5 / 8, 4.5 / 8);
   EXPECT_DOUBLE_EQ(left.visibility, 3.0 / 9);
-  EXPECT_FALSE(left.ambiguous);
+  EXPECT_EQ(left.ambiguous, Ambiguity::none);
   const Sample right = factor(map, 4.5 / 8, 4.5 / 8);
   EXPECT_DOUBLE_EQ(right.visibility, 6.0 / 9);
-  EXPECT_FALSE(right.ambiguous);
+  EXPECT_EQ(right.ambiguous, Ambiguity::none);
 }
 
 TEST(ScreenBlurFactor, UsesTheBiasedDepth) {
@@ -70,15 +70,15 @@ TEST(ScreenBlurFactor, MarksAmbiguityOfAnyOfTheNineSamples) {
   const FloatImage map = column_split_map(8, 8, 4, 5.0f, 20.0f);
   // u W = 5: the centre sample sits on the 4|5 boundary (both lit), the left
   // column's on the 3|4 boundary (occluded | lit): ambiguous.
-  EXPECT_TRUE(factor(map, 5.0 / 8, 4.5 / 8).ambiguous);
+  EXPECT_EQ(factor(map, 5.0 / 8, 4.5 / 8).ambiguous, Ambiguity::texel_boundary);
   // u W = 6: boundaries 4|5, 5|6, 6|7, all lit on both sides.
   const Sample clear = factor(map, 6.0 / 8, 4.5 / 8);
-  EXPECT_FALSE(clear.ambiguous);
+  EXPECT_EQ(clear.ambiguous, Ambiguity::none);
   EXPECT_EQ(clear.visibility, 1.0);
   // Just inside the point window of the 3|4 boundary, and just outside it.
   const double window = SamplingPrecision{}.point_window();
-  EXPECT_TRUE(factor(map, (5.0 + 0.5 * window) / 8, 4.5 / 8).ambiguous);
-  EXPECT_FALSE(factor(map, (5.0 + 2.0 * window) / 8, 4.5 / 8).ambiguous);
+  EXPECT_EQ(factor(map, (5.0 + 0.5 * window) / 8, 4.5 / 8).ambiguous, Ambiguity::texel_boundary);
+  EXPECT_EQ(factor(map, (5.0 + 2.0 * window) / 8, 4.5 / 8).ambiguous, Ambiguity::none);
 }
 
 TEST(ScreenBlurFactor, EvaluateImageReturnsFactorAndMask) {

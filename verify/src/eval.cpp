@@ -121,15 +121,18 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
   return engine.run_query_output(program->program, **map, inputs.receivers, params);
 }
 
-Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs) {
+Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, Target target,
+                                                 const EvalInputs& inputs) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  auto image =
-      reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light, inputs.receivers);
+  // The limits verify_library holds `target`'s runs to: hlsl_dx9's step cap.
+  auto image = reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light,
+                                         inputs.receivers, {}, reference::shader_limits(target));
   if (!image) return image.error();
   if (variant.variant.technique == Technique::screen_blur) {
-    return reference::screen_blur(variant.variant, image->visibility, inputs.receivers);
+    image->visibility =
+        reference::screen_blur(variant.variant, image->visibility, inputs.receivers);
   }
-  return std::move(image->visibility);
+  return image;
 }
 
 }  // namespace penumbra

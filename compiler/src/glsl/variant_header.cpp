@@ -82,6 +82,13 @@ std::string variant_header(const Variant* variant, Target target) {
     out += "#define BACKPROJECTION_MAX_NODES " +
            std::to_string(keys.max_nodes.value_or(kDefaultMaxNodes)) + "\n";
     out += "#define BACKPROJECTION_MAX_STEPS " + std::to_string(*steps) + "\n";
+    // Where the target's cap binds, backprojection's min-max walk finishes
+    // coarse instead of stopping (common/backprojection_walk.glsl).
+    const bool capped = *steps < *walk_step_bound(*variant);
+    if (variant->technique == Technique::backprojection && capped &&
+        keys.traversal != kBruteForceTraversal) {
+      out += "#define BACKPROJECTION_FINISH_COARSE 1\n";
+    }
   }
   if (keys.rotation == kIgnRotation) {
     out += "#define PENUMBRA_ROTATION_IGN 1\n";

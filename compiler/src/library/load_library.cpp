@@ -302,6 +302,10 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
       return index_error(
           file, at, "unknown target '" + shorten(target_name) + "'; allowed: " + allowed_targets());
     }
+    // A library written by hand or by an older penumbra: minmax_pcf ships
+    // only where it counts exactly.
+    const std::string why = inexact_walk(v, *target);
+    if (!why.empty()) return index_error(file, at, why + "; rebuild the library");
     v.targets.push_back(*target);
   }
   for (auto& [pass_name, by_target] : j.at("passes").items()) {

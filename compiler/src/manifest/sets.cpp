@@ -1,4 +1,7 @@
 #include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "manifest/axes.hpp"
 #include "manifest/sections.hpp"
@@ -62,6 +65,36 @@ Status check_set_targets(const JsonNode& node, const AxisValues& axes) {
   return {};
 }
 
+// minmax_pcf promises the exact count: a set whose kernel's worst-case walk
+// exceeds a target's step cap (hlsl_dx9) is refused, like the integer
+// techniques above, rather than built inexact or dropped silently.
+Status check_set_exact(const JsonNode& node, const AxisValues& axes) {
+  if (std::ranges::find(axes.technique, Technique::minmax_pcf) == axes.technique.end()) return {};
+  std::vector<std::optional<std::string>> traversals(axes.traversal.begin(), axes.traversal.end());
+  if (traversals.empty()) traversals.emplace_back();  // the min-max traversal
+  for (int kernel : axes.kernel) {
+    for (const std::optional<std::string>& traversal : traversals) {
+      Variant variant;
+      variant.technique = Technique::minmax_pcf;
+      variant.keys.kernel = kernel;
+      variant.keys.traversal = traversal;
+      variant.name = variant_name(variant.technique, variant.keys);
+      for (Target target : axes.target) {
+        const std::string why = inexact_walk(variant, target);
+        if (why.empty()) continue;
+        const std::string fix = " or use a smaller kernel (docs/targets.md)";
+        if (node.has("target")) {
+          return node.member("target").error(why + "; leave " + std::string(to_string(target)) +
+                                             " out of this set's 'target' list," + fix);
+        }
+        return node.error(why + "; this set takes the top-level targets: give it a 'target' " +
+                          "list without " + std::string(to_string(target)) + "," + fix);
+      }
+    }
+  }
+  return {};
+}
+
 Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
   PENUMBRA_TRY(node.expect_keys(kAxisKeys));
   VariantSet set{.json_path = node.path(), .axes = {}};
@@ -70,6 +103,7 @@ Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
   PENUMBRA_TRY(check_kernels(node, set.axes));
   if (set.axes.target.empty()) set.axes.target = manifest.targets;
   PENUMBRA_TRY(check_set_targets(node, set.axes));
+  PENUMBRA_TRY(check_set_exact(node, set.axes));
   return set;
 }
 

@@ -2,11 +2,20 @@
 
 #include "glsl/glslang_setup.hpp"
 #include "glsl/variant_header.hpp"
+#include "penumbra/model/model.hpp"
 #include "stages/stages.hpp"
 
 namespace penumbra {
 
 Status PreprocessStage::process(ShaderJob& job) const {
+  // The manifest refuses such a variant; this refuses it compiled directly.
+  if (job.variant) {
+    const std::string why = inexact_walk(*job.variant, job.target);
+    if (!why.empty()) {
+      return make_error(Error::Kind::bad_input, job.describe(),
+                        why + "; build it for the other targets, or with a smaller kernel");
+    }
+  }
   auto source = shaderlib_->read(job.source_path);
   if (!source) {
     return make_error(Error::Kind::bad_input, job.describe(),

@@ -194,6 +194,15 @@ bool variant_less(const Variant& a, const Variant& b);
 // the reference models it.
 std::optional<int> walk_step_bound(const Variant& variant, int limit = 0);
 
+// minmax_pcf promises the exact count C, which a walk that `target`'s
+// walk_step_limit stops short cannot give, so such a variant is not built
+// for that target: why, or empty when `variant` keeps the promise there
+// (every other technique, every target without a cap, and every walk whose
+// worst case, walk_step_bound(), fits the cap). The message names the
+// variant, the target, the worst case, the cap and the largest kernel that
+// fits; callers add what to do in their context.
+std::string inexact_walk(const Variant& variant, Target target);
+
 // backprojection and bitmask_backprojection: the techniques whose shaders
 // run the back-projection walk (common/backprojection_walk.glsl), bounded by
 // `max_nodes`.

@@ -167,6 +167,10 @@ const TechniqueDescription& describe(Technique technique);
 // Whether `technique`'s shaders can be emitted for `target`: all but an
 // integer_ops technique on a target without integers (hlsl_dx9).
 bool can_emit(Technique technique, Target target);
+// Whether `variant` can be built for `target`: its technique can be emitted
+// there and keeps its promise there (minmax_pcf's exact count:
+// inexact_walk()). A manifest asking otherwise is refused.
+bool can_emit(const Variant& variant, Target target);
 
 // True when `variant`'s technique runs `pass`.
 bool runs_pass(PassKind pass, const Variant& variant);

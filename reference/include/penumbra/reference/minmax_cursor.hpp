@@ -25,6 +25,14 @@ class MinmaxCursor {
   bool climbed() const { return climbed_; }
   bool done() const { return done_; }
 
+  // The steps the walk takes from here, this one included, if it descends
+  // no further: 4 at the roots; a step takes one, a descent adds four (the
+  // children, then the rise past them). A walk capped at n steps that
+  // descends only while it then still ends within them (backprojection's
+  // BACKPROJECTION_FINISH_COARSE) ends, and descends wherever the uncapped
+  // walk would, if that takes at most n steps.
+  int steps_to_end() const { return steps_to_end_; }
+
   // To the node's first child.
   void descend();
   // One step past the node's subtree: to its next sibling, or up to the
@@ -34,6 +42,7 @@ class MinmaxCursor {
  private:
   int x_ = 0, y_ = 0, level_ = 0, span_ = 1;
   int first_x_ = 0, first_y_ = 0, start_ = 0;
+  int steps_to_end_ = 4;
   bool climbed_ = false;
   bool done_ = false;
 };

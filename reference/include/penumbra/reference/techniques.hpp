@@ -2,6 +2,8 @@
 // precision and independent of the shader sources.
 #pragma once
 
+#include <cstdint>
+
 #include "penumbra/model/model.hpp"
 #include "penumbra/reference/light.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
@@ -41,10 +43,70 @@ struct ShaderLimits {
 // The limits of `target`'s shaders (its traits).
 ShaderLimits shader_limits(Target target);
 
+// Why a receiver is ambiguous: a float32 or sampling decision of the shader
+// lies so close to call that a correct GPU may take the other side and
+// differ. One bit per reason, a receiver marked for several holding their
+// sum; these are the codes `penumbra eval --ambiguous` writes
+// (docs/verification.md, "The ambiguity rule").
+enum class Ambiguity : std::uint8_t {
+  none = 0,
+  // A point sample within the point window of a texel boundary whose two
+  // sides compare differently: hard, each of screen_blur's nine compares,
+  // pcss's blocker search, a back-projection's point light.
+  texel_boundary = 1,
+  // A sample that the `rotation` key shifts within 1e-6 of the seam of the
+  // square's torus (placed_disk()).
+  rotation_seam = 2,
+  // pcss_minmax: an edge of the blocker-search window within the point
+  // window of a texel boundary, where the other side moves the result past
+  // the tolerance.
+  search_window_edge = 4,
+  // backprojection under a step cap: the walk stopped short after a
+  // decision that steers it (a node reaching the light, an edge of the
+  // culling window) lay within float32's reach of the other answer.
+  walk_decision = 8,
+  // bitmask_backprojection: a light sample within edge_error() of a patch's
+  // edge that no other patch surely covers.
+  light_sample_edge = 16,
+  // bitmask_backprojection: the walk stopped short by its step bound or
+  // max_nodes.
+  walk_truncated = 32,
+  // receiver_plane: the depth slopes a GPU may derive give results further
+  // apart than the tolerance.
+  depth_slope = 64,
+};
+
+constexpr Ambiguity operator|(Ambiguity a, Ambiguity b) {
+  return Ambiguity(std::uint8_t(a) | std::uint8_t(b));
+}
+
+constexpr Ambiguity& operator|=(Ambiguity& a, Ambiguity b) {
+  return a = a | b;
+}
+
+// Each reason in code order, with a few words for `penumbra eval --help`.
+struct AmbiguityReason {
+  Ambiguity reason;
+  const char* summary;
+};
+inline constexpr AmbiguityReason kAmbiguityReasons[] = {
+    {Ambiguity::texel_boundary, "a point sample at a texel boundary"},
+    {Ambiguity::rotation_seam, "a rotated sample on the square's seam"},
+    {Ambiguity::search_window_edge, "pcss_minmax's search window edge at a texel boundary"},
+    {Ambiguity::walk_decision, "a capped backprojection walk's close decision"},
+    {Ambiguity::light_sample_edge, "a bitmask light sample at a patch edge"},
+    {Ambiguity::walk_truncated, "a bitmask walk stopped short"},
+    {Ambiguity::depth_slope, "receiver_plane's depth slopes disagree"},
+};
+
+// `reason` where `marked`, else none.
+constexpr Ambiguity ambiguous_if(bool marked, Ambiguity reason) {
+  return marked ? reason : Ambiguity::none;
+}
+
 struct Sample {
-  double visibility = 1.0;  // in [0, 1]
-  bool ambiguous = false;   // a point sample lies so close to a texel boundary that a
-                            // GPU may legitimately read the other texel and differ
+  double visibility = 1.0;                // in [0, 1]
+  Ambiguity ambiguous = Ambiguity::none;  // why a GPU may legitimately differ
 };
 
 // Checks that `variant` carries what its technique needs (kernel, disks with
@@ -74,7 +136,7 @@ Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightPar
 
 struct ReferenceImage {
   FloatImage visibility;  // 1 channel, the receivers' size
-  FloatImage ambiguous;   // 1 channel: 1 where the pixel is ambiguous, else 0
+  FloatImage ambiguous;   // 1 channel: the pixel's Ambiguity bits, 0 where decided
 };
 
 // Every pixel of `receivers` (3 or 4 channels: u, v, z_r) against

@@ -32,7 +32,7 @@ struct Region {
 
 Region region(const reference::StageView& view, const FloatImage& exact);
 
-// `reference_ambiguous`: 1 where the reference is undecided (PictureRun).
+// `reference_ambiguous`: non-zero where the reference is undecided (PictureRun).
 Figures measure(const reference::StageView& view, const FloatImage& exact,
                 const FloatImage& visibility, const FloatImage& reference,
                 const FloatImage& reference_ambiguous, const FloatImage& texel_reads);

@@ -4,14 +4,17 @@
 
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/light.hpp"
+#include "penumbra/reference/techniques.hpp"
 #include "penumbra/vulkan/engine.hpp"
 
 namespace penumbra {
 
 struct EvalInputs {
-  FloatImage shadow_map;         // Pf: linear light-view z, W x H
-  FloatImage receivers;          // PF: (u, v, z_r) per pixel
-  reference::LightParams light;  // light size, frustum width, near plane, bias, filter radius
+  FloatImage shadow_map;  // Pf: linear light-view z, W x H
+  FloatImage receivers;   // PF: (u, v, z_r) per pixel
+  // Light size, frustum width, near plane, bias, filter radius; its defaults
+  // are index.json's `defaults`, the light the shaders were verified with.
+  reference::LightParams light;
 };
 
 // The light options' range (lengths in light-view units; the bias and the
@@ -34,8 +37,12 @@ Status check_eval_inputs(const EvalInputs& inputs);
 Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
                                    Target target, const EvalInputs& inputs, Engine& engine);
 
-// ...or from the CPU reference (for screen_blur, reference::screen_blur of
-// the reference factor).
-Result<FloatImage> eval_reference(const LibraryVariant& variant, const EvalInputs& inputs);
+// ...or from the CPU reference of `target`'s shader, under its limits
+// (reference::shader_limits(), as verify holds that target): the visibility
+// (for screen_blur, reference::screen_blur of the reference factor) and the
+// reference's ambiguity mask, each pixel its reference::Ambiguity bits (for
+// screen_blur, the factor's).
+Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, Target target,
+                                                 const EvalInputs& inputs);
 
 }  // namespace penumbra

@@ -78,8 +78,8 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
 {
     vec3 param = query;
     limit = backprojection_limit(param);
-    vec2 _847 = minmax_top_node();
-    float map_min = _847.x;
+    vec2 _836 = minmax_top_node();
+    float map_min = _836.x;
     vec3 param_1 = query;
     float param_2 = map_min * params.sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -142,8 +142,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _246 = shadow_texel(param);
-        float depth = _246;
+        float _251 = shadow_texel(param);
+        float depth = _251;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -155,8 +155,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _439 = minmax_node(param, param_1);
-    return _439;
+    vec2 _444 = minmax_node(param, param_1);
+    return _444;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -182,30 +182,31 @@ vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slop
     return vec4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
 }
 
-bool backprojection_can_touch(vec4 texels, float z_min, vec3 query, vec2 receiver_slope)
+bool backprojection_touches(vec4 rect)
 {
-    vec4 param = texels;
-    float param_1 = z_min;
-    vec3 param_2 = query;
-    vec2 param_3 = receiver_slope;
-    vec4 rect = backprojection_project(param, param_1, param_2, param_3);
-    bool _599 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _610;
-    if (_599)
+    bool _594 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _605;
+    if (_594)
     {
-        _610 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _605 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _610 = _599;
+        _605 = _594;
     }
-    return _610;
+    return _605;
+}
+
+float backprojection_inside(vec4 rect)
+{
+    vec2 size = max(min(rect.zw, vec2(params.light.x)) - max(rect.xy, vec2(-params.light.x)), vec2(0.0));
+    return size.x * size.y;
 }
 
 float backprojection_add(float area, vec4 rect)
 {
-    vec2 size = max(min(rect.zw, vec2(params.light.x)) - max(rect.xy, vec2(-params.light.x)), vec2(0.0));
-    return area + (size.x * size.y);
+    vec4 param = rect;
+    return area + backprojection_inside(param);
 }
 
 void minmax_descend(inout MinmaxCursor cursor)
@@ -218,16 +219,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _462;
+    vec2 _467;
     if (root)
     {
-        _462 = cursor.first_root;
+        _467 = cursor.first_root;
     }
     else
     {
-        _462 = floor(cursor.node * 0.5) * 2.0;
+        _467 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _462;
+    vec2 first_sibling = _467;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -285,83 +286,69 @@ float backprojection_walk(vec3 query, vec4 window, float limit, inout float stat
                 {
                     visits += 1.0;
                 }
-                bool _720 = !cursor.climbed;
-                bool _731;
-                if (_720)
+                bool _715 = !cursor.climbed;
+                bool _726;
+                if (_715)
                 {
                     MinmaxCursor param_2 = cursor;
                     vec4 param_3 = window;
                     vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _731 = !minmax_window_empty(param_4);
+                    _726 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _731 = _720;
+                    _726 = _715;
                 }
-                if (_731)
+                if (_726)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _737 = minmax_cursor_read(param_5);
-                    vec2 range = _737;
+                    vec2 _732 = minmax_cursor_read(param_5);
+                    vec2 range = _732;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
-                    float z_min = range.x * params.sampling.w;
-                    bool _751 = range.x < limit;
-                    bool _763;
-                    if (_751)
+                    vec4 param_7 = texels;
+                    float param_8 = range.x * params.sampling.w;
+                    vec3 param_9 = query;
+                    vec2 param_10 = receiver_slope;
+                    vec4 rect = backprojection_project(param_7, param_8, param_9, param_10);
+                    vec4 param_11 = rect;
+                    bool touches = backprojection_touches(param_11);
+                    if ((range.x < limit) && touches)
                     {
-                        vec4 param_7 = texels;
-                        float param_8 = z_min;
-                        vec3 param_9 = query;
-                        vec2 param_10 = receiver_slope;
-                        _763 = backprojection_can_touch(param_7, param_8, param_9, param_10);
-                    }
-                    else
-                    {
-                        _763 = _751;
-                    }
-                    if (_763)
-                    {
-                        bool _769 = range.y < limit;
-                        bool _777;
-                        if (_769)
+                        bool _767 = range.y < limit;
+                        bool _775;
+                        if (_767)
                         {
-                            _777 = range.x == range.y;
+                            _775 = range.x == range.y;
                         }
                         else
                         {
-                            _777 = _769;
+                            _775 = _767;
                         }
-                        if (_777)
+                        bool one_patch = _775;
+                        descend = !one_patch;
+                        if (one_patch)
                         {
-                            vec4 param_11 = texels;
-                            float param_12 = z_min;
-                            vec3 param_13 = query;
-                            vec2 param_14 = receiver_slope;
-                            float param_15 = state;
-                            vec4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
-                            state = backprojection_add(param_15, param_16);
-                        }
-                        else
-                        {
-                            descend = cursor.level > 0.5;
+                            float param_12 = state;
+                            vec4 param_13 = rect;
+                            state = backprojection_add(param_12, param_13);
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_descend(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_14 = cursor;
+                    minmax_descend(param_14);
+                    cursor = param_14;
                 }
                 else
                 {
-                    MinmaxCursor param_18 = cursor;
-                    minmax_next(param_18);
-                    cursor = param_18;
+                    MinmaxCursor param_15 = cursor;
+                    minmax_next(param_15);
+                    cursor = param_15;
                 }
-                float param_19 = state;
-                bool covered = backprojection_covered(param_19);
+                float param_16 = state;
+                bool covered = backprojection_covered(param_16);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0);
             }
         }
@@ -375,16 +362,16 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _881 = shadow_compare_point(param, param_1);
-        return _881;
+        float _870 = shadow_compare_point(param, param_1);
+        return _870;
     }
     vec3 param_2 = query;
     float param_3;
     vec4 param_4;
-    bool _889 = backprojection_start(param_2, param_3, param_4);
+    bool _878 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     vec4 window = param_4;
-    if (!_889)
+    if (!_878)
     {
         return 1.0;
     }
@@ -392,8 +379,8 @@ float shadow_visibility(vec3 query)
     vec4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0;
-    float _904 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _904;
+    float _893 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _893;
     return max(0.0, 1.0 - (area / backprojection_whole_light_area()));
 }
 
@@ -404,8 +391,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _929 = shadow_visibility(param);
-    return _929;
+    float _918 = shadow_visibility(param);
+    return _918;
 }
 
 void main()
@@ -414,8 +401,8 @@ void main()
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
     vec2 param_1 = floor(screen_uv * params.screen_size.xy);
-    float _950 = receiver_visibility(param, param_1);
-    float visible = _950;
+    float _939 = receiver_visibility(param, param_1);
+    float visible = _939;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

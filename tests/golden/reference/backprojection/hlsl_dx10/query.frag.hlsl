@@ -88,8 +88,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _847 = minmax_top_node();
-    float map_min = _847.x;
+    float2 _836 = minmax_top_node();
+    float map_min = _836.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -153,8 +153,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _246 = shadow_texel(param);
-        float depth = _246;
+        float _251 = shadow_texel(param);
+        float depth = _251;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -166,8 +166,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _439 = minmax_node(param, param_1);
-    return _439;
+    float2 _444 = minmax_node(param, param_1);
+    return _444;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -193,32 +193,33 @@ float4 backprojection_project(float4 texels, float z, float3 query, float2 recei
     return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
 }
 
-bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 receiver_slope)
+bool backprojection_touches(float4 rect)
 {
-    float4 param = texels;
-    float param_1 = z_min;
-    float3 param_2 = query;
-    float2 param_3 = receiver_slope;
-    float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _597 = params_light.x.xx;
-    bool _599 = all(bool2(rect.xy.x <= _597.x, rect.xy.y <= _597.y));
-    bool _610;
-    if (_599)
+    float2 _592 = params_light.x.xx;
+    bool _594 = all(bool2(rect.xy.x <= _592.x, rect.xy.y <= _592.y));
+    bool _605;
+    if (_594)
     {
-        float2 _607 = (-params_light.x).xx;
-        _610 = all(bool2(rect.zw.x >= _607.x, rect.zw.y >= _607.y));
+        float2 _602 = (-params_light.x).xx;
+        _605 = all(bool2(rect.zw.x >= _602.x, rect.zw.y >= _602.y));
     }
     else
     {
-        _610 = _599;
+        _605 = _594;
     }
-    return _610;
+    return _605;
+}
+
+float backprojection_inside(float4 rect)
+{
+    float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
+    return size.x * size.y;
 }
 
 float backprojection_add(float area, float4 rect)
 {
-    float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
-    return area + (size.x * size.y);
+    float4 param = rect;
+    return area + backprojection_inside(param);
 }
 
 void minmax_descend(inout MinmaxCursor cursor)
@@ -231,16 +232,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _462;
+    float2 _467;
     if (root)
     {
-        _462 = cursor.first_root;
+        _467 = cursor.first_root;
     }
     else
     {
-        _462 = floor(cursor.node * 0.5f) * 2.0f;
+        _467 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _462;
+    float2 first_sibling = _467;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -301,83 +302,69 @@ float backprojection_walk(float3 query, float4 window, float limit, inout float 
                 {
                     visits += 1.0f;
                 }
-                bool _720 = !cursor.climbed;
-                bool _731;
-                if (_720)
+                bool _715 = !cursor.climbed;
+                bool _726;
+                if (_715)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _731 = !minmax_window_empty(param_4);
+                    _726 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _731 = _720;
+                    _726 = _715;
                 }
-                if (_731)
+                if (_726)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _737 = minmax_cursor_read(param_5);
-                    float2 range = _737;
+                    float2 _732 = minmax_cursor_read(param_5);
+                    float2 range = _732;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
-                    float z_min = range.x * params_sampling.w;
-                    bool _751 = range.x < limit;
-                    bool _763;
-                    if (_751)
+                    float4 param_7 = texels;
+                    float param_8 = range.x * params_sampling.w;
+                    float3 param_9 = query;
+                    float2 param_10 = receiver_slope;
+                    float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
+                    float4 param_11 = rect;
+                    bool touches = backprojection_touches(param_11);
+                    if ((range.x < limit) && touches)
                     {
-                        float4 param_7 = texels;
-                        float param_8 = z_min;
-                        float3 param_9 = query;
-                        float2 param_10 = receiver_slope;
-                        _763 = backprojection_can_touch(param_7, param_8, param_9, param_10);
-                    }
-                    else
-                    {
-                        _763 = _751;
-                    }
-                    if (_763)
-                    {
-                        bool _769 = range.y < limit;
-                        bool _777;
-                        if (_769)
+                        bool _767 = range.y < limit;
+                        bool _775;
+                        if (_767)
                         {
-                            _777 = range.x == range.y;
+                            _775 = range.x == range.y;
                         }
                         else
                         {
-                            _777 = _769;
+                            _775 = _767;
                         }
-                        if (_777)
+                        bool one_patch = _775;
+                        descend = !one_patch;
+                        if (one_patch)
                         {
-                            float4 param_11 = texels;
-                            float param_12 = z_min;
-                            float3 param_13 = query;
-                            float2 param_14 = receiver_slope;
-                            float param_15 = state;
-                            float4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
-                            state = backprojection_add(param_15, param_16);
-                        }
-                        else
-                        {
-                            descend = cursor.level > 0.5f;
+                            float param_12 = state;
+                            float4 param_13 = rect;
+                            state = backprojection_add(param_12, param_13);
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_descend(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_14 = cursor;
+                    minmax_descend(param_14);
+                    cursor = param_14;
                 }
                 else
                 {
-                    MinmaxCursor param_18 = cursor;
-                    minmax_next(param_18);
-                    cursor = param_18;
+                    MinmaxCursor param_15 = cursor;
+                    minmax_next(param_15);
+                    cursor = param_15;
                 }
-                float param_19 = state;
-                bool covered = backprojection_covered(param_19);
+                float param_16 = state;
+                bool covered = backprojection_covered(param_16);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
@@ -391,16 +378,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _881 = shadow_compare_point(param, param_1);
-        return _881;
+        float _870 = shadow_compare_point(param, param_1);
+        return _870;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _889 = backprojection_start(param_2, param_3, param_4);
+    bool _878 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_889)
+    if (!_878)
     {
         return 1.0f;
     }
@@ -408,8 +395,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0f;
-    float _904 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _904;
+    float _893 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _893;
     return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
@@ -420,8 +407,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _929 = shadow_visibility(param);
-    return _929;
+    float _918 = shadow_visibility(param);
+    return _918;
 }
 
 void frag_main()
@@ -430,8 +417,8 @@ void frag_main()
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _950 = receiver_visibility(param, param_1);
-    float visible = _950;
+    float _939 = receiver_visibility(param, param_1);
+    float visible = _939;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -84,8 +84,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _846 = minmax_top_node();
-    float map_min = _846.x;
+    float2 _862 = minmax_top_node();
+    float map_min = _862.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -149,8 +149,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _246 = shadow_texel(param);
-        float depth = _246;
+        float _254 = shadow_texel(param);
+        float depth = _254;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -162,8 +162,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _439 = minmax_node(param, param_1);
-    return _439;
+    float2 _447 = minmax_node(param, param_1);
+    return _447;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -189,32 +189,33 @@ float4 backprojection_project(float4 texels, float z, float3 query, float2 recei
     return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
 }
 
-bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 receiver_slope)
+bool backprojection_touches(float4 rect)
 {
-    float4 param = texels;
-    float param_1 = z_min;
-    float3 param_2 = query;
-    float2 param_3 = receiver_slope;
-    float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _597 = params_light.x.xx;
-    bool _599 = all(bool2(rect.xy.x <= _597.x, rect.xy.y <= _597.y));
-    bool _610;
-    if (_599)
+    float2 _595 = params_light.x.xx;
+    bool _597 = all(bool2(rect.xy.x <= _595.x, rect.xy.y <= _595.y));
+    bool _608;
+    if (_597)
     {
-        float2 _607 = (-params_light.x).xx;
-        _610 = all(bool2(rect.zw.x >= _607.x, rect.zw.y >= _607.y));
+        float2 _605 = (-params_light.x).xx;
+        _608 = all(bool2(rect.zw.x >= _605.x, rect.zw.y >= _605.y));
     }
     else
     {
-        _610 = _599;
+        _608 = _597;
     }
-    return _610;
+    return _608;
 }
 
-float backprojection_add(float area, float4 rect)
+float backprojection_inside(float4 rect)
 {
     float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
-    return area + (size.x * size.y);
+    return size.x * size.y;
+}
+
+float backprojection_add_share(float area, float4 rect, float share)
+{
+    float4 param = rect;
+    return area + (share * backprojection_inside(param));
 }
 
 void minmax_descend(inout MinmaxCursor cursor)
@@ -227,16 +228,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _462;
+    float2 _470;
     if (root)
     {
-        _462 = cursor.first_root;
+        _470 = cursor.first_root;
     }
     else
     {
-        _462 = floor(cursor.node * 0.5f) * 2.0f;
+        _470 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _462;
+    float2 first_sibling = _470;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -283,6 +284,8 @@ float backprojection_walk(float3 query, float4 window, float limit, inout float 
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
+    float steps_to_end = 4.0f;
+    float steps_left = 224.0f;
     [loop]
     for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
@@ -297,83 +300,82 @@ float backprojection_walk(float3 query, float4 window, float limit, inout float 
                 {
                     visits += 1.0f;
                 }
-                bool _719 = !cursor.climbed;
-                bool _730;
-                if (_719)
+                steps_left -= 1.0f;
+                bool _722 = !cursor.climbed;
+                bool _733;
+                if (_722)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _730 = !minmax_window_empty(param_4);
+                    _733 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _730 = _719;
+                    _733 = _722;
                 }
-                if (_730)
+                if (_733)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _736 = minmax_cursor_read(param_5);
-                    float2 range = _736;
+                    float2 _739 = minmax_cursor_read(param_5);
+                    float2 range = _739;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
-                    float z_min = range.x * params_sampling.w;
-                    bool _750 = range.x < limit;
-                    bool _762;
-                    if (_750)
+                    float4 param_7 = texels;
+                    float param_8 = range.x * params_sampling.w;
+                    float3 param_9 = query;
+                    float2 param_10 = receiver_slope;
+                    float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
+                    float4 param_11 = rect;
+                    bool touches = backprojection_touches(param_11);
+                    if ((range.x < limit) && touches)
                     {
-                        float4 param_7 = texels;
-                        float param_8 = z_min;
-                        float3 param_9 = query;
-                        float2 param_10 = receiver_slope;
-                        _762 = backprojection_can_touch(param_7, param_8, param_9, param_10);
-                    }
-                    else
-                    {
-                        _762 = _750;
-                    }
-                    if (_762)
-                    {
-                        bool _768 = range.y < limit;
-                        bool _776;
-                        if (_768)
+                        bool _774 = range.y < limit;
+                        bool _782;
+                        if (_774)
                         {
-                            _776 = range.x == range.y;
+                            _782 = range.x == range.y;
                         }
                         else
                         {
-                            _776 = _768;
+                            _782 = _774;
                         }
-                        if (_776)
+                        bool one_patch = _782;
+                        bool _784 = !one_patch;
+                        bool _791;
+                        if (_784)
                         {
-                            float4 param_11 = texels;
-                            float param_12 = z_min;
-                            float3 param_13 = query;
-                            float2 param_14 = receiver_slope;
-                            float param_15 = state;
-                            float4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
-                            state = backprojection_add(param_15, param_16);
+                            _791 = steps_left >= (steps_to_end + 4.0f);
                         }
                         else
                         {
-                            descend = cursor.level > 0.5f;
+                            _791 = _784;
+                        }
+                        descend = _791;
+                        if (!descend)
+                        {
+                            float param_12 = state;
+                            float4 param_13 = rect;
+                            float param_14 = (range.y < limit) ? 1.0f : 0.5f;
+                            state = backprojection_add_share(param_12, param_13, param_14);
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_descend(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_15 = cursor;
+                    minmax_descend(param_15);
+                    cursor = param_15;
                 }
                 else
                 {
-                    MinmaxCursor param_18 = cursor;
-                    minmax_next(param_18);
-                    cursor = param_18;
+                    MinmaxCursor param_16 = cursor;
+                    minmax_next(param_16);
+                    cursor = param_16;
                 }
-                float param_19 = state;
-                bool covered = backprojection_covered(param_19);
+                steps_to_end += (descend ? 4.0f : (-1.0f));
+                float param_17 = state;
+                bool covered = backprojection_covered(param_17);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
@@ -387,16 +389,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _880 = shadow_compare_point(param, param_1);
-        return _880;
+        float _896 = shadow_compare_point(param, param_1);
+        return _896;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _888 = backprojection_start(param_2, param_3, param_4);
+    bool _904 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_888)
+    if (!_904)
     {
         return 1.0f;
     }
@@ -404,8 +406,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0f;
-    float _903 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _903;
+    float _919 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _919;
     return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
@@ -416,8 +418,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _928 = shadow_visibility(param);
-    return _928;
+    float _944 = shadow_visibility(param);
+    return _944;
 }
 
 void frag_main()
@@ -426,8 +428,8 @@ void frag_main()
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _949 = receiver_visibility(param, param_1);
-    float visible = _949;
+    float _965 = receiver_visibility(param, param_1);
+    float visible = _965;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -94,8 +94,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _980 = minmax_top_node();
-    float map_min = _980.x;
+    float2 _960 = minmax_top_node();
+    float map_min = _960.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -159,8 +159,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _381 = shadow_texel(param);
-        float depth = _381;
+        float _377 = shadow_texel(param);
+        float depth = _377;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -172,8 +172,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _573 = minmax_node(param, param_1);
-    return _573;
+    float2 _569 = minmax_node(param, param_1);
+    return _569;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -199,26 +199,21 @@ float4 backprojection_project(float4 texels, float z, float3 query, float2 recei
     return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
 }
 
-bool backprojection_can_touch(float4 texels, float z_min, float3 query, float2 receiver_slope)
+bool backprojection_touches(float4 rect)
 {
-    float4 param = texels;
-    float param_1 = z_min;
-    float3 param_2 = query;
-    float2 param_3 = receiver_slope;
-    float4 rect = backprojection_project(param, param_1, param_2, param_3);
-    float2 _731 = params_light.x.xx;
-    bool _733 = all(bool2(rect.xy.x <= _731.x, rect.xy.y <= _731.y));
-    bool _744;
-    if (_733)
+    float2 _717 = params_light.x.xx;
+    bool _719 = all(bool2(rect.xy.x <= _717.x, rect.xy.y <= _717.y));
+    bool _730;
+    if (_719)
     {
-        float2 _741 = (-params_light.x).xx;
-        _744 = all(bool2(rect.zw.x >= _741.x, rect.zw.y >= _741.y));
+        float2 _727 = (-params_light.x).xx;
+        _730 = all(bool2(rect.zw.x >= _727.x, rect.zw.y >= _727.y));
     }
     else
     {
-        _744 = _733;
+        _730 = _719;
     }
-    return _744;
+    return _730;
 }
 
 int bitmask_popcount(inout uint x)
@@ -251,8 +246,8 @@ BackprojectionState backprojection_add(inout BackprojectionState state, float4 r
         uint fresh = mask & (~state.rows[r]);
         state.rows[r] |= fresh;
         uint param = fresh;
-        int _358 = bitmask_popcount(param);
-        state.set += _358;
+        int _354 = bitmask_popcount(param);
+        state.set += _354;
     }
     return state;
 }
@@ -267,16 +262,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _596;
+    float2 _592;
     if (root)
     {
-        _596 = cursor.first_root;
+        _592 = cursor.first_root;
     }
     else
     {
-        _596 = floor(cursor.node * 0.5f) * 2.0f;
+        _592 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _596;
+    float2 first_sibling = _592;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -332,84 +327,70 @@ BackprojectionState backprojection_walk(float3 query, float4 window, float limit
                 {
                     visits += 1.0f;
                 }
-                bool _853 = !cursor.climbed;
-                bool _864;
-                if (_853)
+                bool _839 = !cursor.climbed;
+                bool _850;
+                if (_839)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _864 = !minmax_window_empty(param_4);
+                    _850 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _864 = _853;
+                    _850 = _839;
                 }
-                if (_864)
+                if (_850)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _870 = minmax_cursor_read(param_5);
-                    float2 range = _870;
+                    float2 _856 = minmax_cursor_read(param_5);
+                    float2 range = _856;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
-                    float z_min = range.x * params_sampling.w;
-                    bool _884 = range.x < limit;
-                    bool _896;
-                    if (_884)
+                    float4 param_7 = texels;
+                    float param_8 = range.x * params_sampling.w;
+                    float3 param_9 = query;
+                    float2 param_10 = receiver_slope;
+                    float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
+                    float4 param_11 = rect;
+                    bool touches = backprojection_touches(param_11);
+                    if ((range.x < limit) && touches)
                     {
-                        float4 param_7 = texels;
-                        float param_8 = z_min;
-                        float3 param_9 = query;
-                        float2 param_10 = receiver_slope;
-                        _896 = backprojection_can_touch(param_7, param_8, param_9, param_10);
-                    }
-                    else
-                    {
-                        _896 = _884;
-                    }
-                    if (_896)
-                    {
-                        bool _902 = range.y < limit;
-                        bool _910;
-                        if (_902)
+                        bool _891 = range.y < limit;
+                        bool _899;
+                        if (_891)
                         {
-                            _910 = range.x == range.y;
+                            _899 = range.x == range.y;
                         }
                         else
                         {
-                            _910 = _902;
+                            _899 = _891;
                         }
-                        if (_910)
+                        bool one_patch = _899;
+                        descend = !one_patch;
+                        if (one_patch)
                         {
-                            float4 param_11 = texels;
-                            float param_12 = z_min;
-                            float3 param_13 = query;
-                            float2 param_14 = receiver_slope;
-                            BackprojectionState param_15 = state;
-                            float4 param_16 = backprojection_project(param_11, param_12, param_13, param_14);
-                            BackprojectionState _925 = backprojection_add(param_15, param_16);
-                            state = _925;
-                        }
-                        else
-                        {
-                            descend = cursor.level > 0.5f;
+                            BackprojectionState param_12 = state;
+                            float4 param_13 = rect;
+                            BackprojectionState _909 = backprojection_add(param_12, param_13);
+                            state = _909;
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_17 = cursor;
-                    minmax_descend(param_17);
-                    cursor = param_17;
+                    MinmaxCursor param_14 = cursor;
+                    minmax_descend(param_14);
+                    cursor = param_14;
                 }
                 else
                 {
-                    MinmaxCursor param_18 = cursor;
-                    minmax_next(param_18);
-                    cursor = param_18;
+                    MinmaxCursor param_15 = cursor;
+                    minmax_next(param_15);
+                    cursor = param_15;
                 }
-                BackprojectionState param_19 = state;
-                bool covered = backprojection_covered(param_19);
+                BackprojectionState param_16 = state;
+                bool covered = backprojection_covered(param_16);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
@@ -423,16 +404,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _1014 = shadow_compare_point(param, param_1);
-        return _1014;
+        float _994 = shadow_compare_point(param, param_1);
+        return _994;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _1022 = backprojection_start(param_2, param_3, param_4);
+    bool _1002 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_1022)
+    if (!_1002)
     {
         return 1.0f;
     }
@@ -447,8 +428,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     BackprojectionState param_8 = state;
-    BackprojectionState _1052 = backprojection_walk(param_5, param_6, param_7, param_8);
-    state = _1052;
+    BackprojectionState _1032 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1032;
     return 1.0f - (float(state.set) / 64.0f);
 }
 
@@ -459,8 +440,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _1078 = shadow_visibility(param);
-    return _1078;
+    float _1058 = shadow_visibility(param);
+    return _1058;
 }
 
 void frag_main()
@@ -469,8 +450,8 @@ void frag_main()
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _1099 = receiver_visibility(param, param_1);
-    float visible = _1099;
+    float _1079 = receiver_visibility(param, param_1);
+    float visible = _1079;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

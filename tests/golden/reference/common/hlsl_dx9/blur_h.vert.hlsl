@@ -20,7 +20,7 @@ void vert_main()
     screen_uv = (position * 0.5f) + 0.5f.xx;
     gl_Position = float4(position, 0.0f, 1.0f);
     gl_Position.x = gl_Position.x - gl_HalfPixel.x * gl_Position.w;
-    gl_Position.y = gl_Position.y + gl_HalfPixel.y * gl_Position.w;
+    gl_Position.y = gl_Position.y - gl_HalfPixel.y * gl_Position.w;
     gl_Position.y = -gl_Position.y;
 }
 

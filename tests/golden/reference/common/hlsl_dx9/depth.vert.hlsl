@@ -32,7 +32,7 @@ void vert_main()
     gl_Position = float4(position.xy * xy_scale, clip_z, position.z);
     light_z = position.z;
     gl_Position.x = gl_Position.x - gl_HalfPixel.x * gl_Position.w;
-    gl_Position.y = gl_Position.y + gl_HalfPixel.y * gl_Position.w;
+    gl_Position.y = gl_Position.y - gl_HalfPixel.y * gl_Position.w;
     gl_Position.y = -gl_Position.y;
 }
 

@@ -181,7 +181,7 @@ float minmax_pcf_count(vec2 first, float reference)
 {
     float count = 0.0;
     vec2 param = first;
-    vec2 param_1 = first + vec2(11.0);
+    vec2 param_1 = first + vec2(5.0);
     vec4 window = minmax_clip_window(param, param_1);
     vec4 param_2 = window;
     if (minmax_window_empty(param_2))
@@ -194,10 +194,10 @@ float minmax_pcf_count(vec2 first, float reference)
     for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
         SPIRV_CROSS_LOOP
-        for (int loop_middle = 0; all(bvec2(loop_middle < 2, !cursor.done)); loop_middle++)
+        for (int loop_middle = 0; all(bvec2(loop_middle < 1, !cursor.done)); loop_middle++)
         {
             SPIRV_CROSS_LOOP
-            for (int loop_inner = 0; all(bvec2(loop_inner < 255, !cursor.done)); loop_inner++)
+            for (int loop_inner = 0; all(bvec2(loop_inner < 149, !cursor.done)); loop_inner++)
             {
                 MinmaxCursor param_4 = cursor;
                 vec4 param_5 = window;
@@ -259,7 +259,7 @@ float minmax_pcf_count(vec2 first, float reference)
 
 float shadow_visibility(vec3 query)
 {
-    vec2 first = floor(query.xy * params.shadow_map_size.xy) - vec2(6.0);
+    vec2 first = floor(query.xy * params.shadow_map_size.xy) - vec2(3.0);
     float param = query.z;
     vec2 param_1 = first;
     float param_2 = shadow_reference(param);
@@ -268,7 +268,7 @@ float shadow_visibility(vec3 query)
     float _546;
     if (count > 0.0)
     {
-        _546 = (144.0 - count) * 0.0069444444961845874786376953125;
+        _546 = (36.0 - count) * 0.02777777798473834991455078125;
     }
     else
     {

@@ -181,7 +181,7 @@ float minmax_pcf_count(float2 first, float reference)
 {
     float count = 0.0f;
     float2 param = first;
-    float2 param_1 = first + 11.0f.xx;
+    float2 param_1 = first + 5.0f.xx;
     float4 window = minmax_clip_window(param, param_1);
     float4 param_2 = window;
     if (minmax_window_empty(param_2))
@@ -194,10 +194,10 @@ float minmax_pcf_count(float2 first, float reference)
     for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
         [loop]
-        for (int loop_middle = 0; all(bool2(loop_middle < 2, !cursor.done)); loop_middle++)
+        for (int loop_middle = 0; all(bool2(loop_middle < 1, !cursor.done)); loop_middle++)
         {
             [loop]
-            for (int loop_inner = 0; all(bool2(loop_inner < 255, !cursor.done)); loop_inner++)
+            for (int loop_inner = 0; all(bool2(loop_inner < 149, !cursor.done)); loop_inner++)
             {
                 MinmaxCursor param_4 = cursor;
                 float4 param_5 = window;
@@ -259,7 +259,7 @@ float minmax_pcf_count(float2 first, float reference)
 
 float shadow_visibility(float3 query)
 {
-    float2 first = floor(query.xy * params_shadow_map_size.xy) - 6.0f.xx;
+    float2 first = floor(query.xy * params_shadow_map_size.xy) - 3.0f.xx;
     float param = query.z;
     float2 param_1 = first;
     float param_2 = shadow_reference(param);
@@ -268,7 +268,7 @@ float shadow_visibility(float3 query)
     float _546;
     if (count > 0.0f)
     {
-        _546 = (144.0f - count) * 0.0069444444961845874786376953125f;
+        _546 = (36.0f - count) * 0.02777777798473834991455078125f;
     }
     else
     {
