@@ -87,6 +87,10 @@ std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTrans
 // scenes hold (vulkan_backend.cpp).
 std::unique_ptr<Backend> vulkan_backend(Engine& engine);
 
+// Why `entry` cannot run as `target`'s Direct3D bytecode (the library was
+// built without an HLSL compiler), or empty: the bytecode paths' not_executed().
+std::string lacking_bytecode(const LibraryVariant& entry, Target target);
+
 // The Direct3D targets' bytecode translated to SPIR-V by vkd3d-compiler
 // (`translator`), as Proton runs it, on the Vulkan engine like
 // vulkan_backend (bytecode_backend.cpp). No translator reports every run

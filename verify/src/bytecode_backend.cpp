@@ -27,12 +27,7 @@ class BytecodeBackend final : public Backend {
     return bytecode_format(target, ShaderStage::fragment).has_value();
   }
   std::string not_executed(const LibraryVariant& entry, Target target) const override {
-    const auto query = entry.passes.find(PassKind::query);
-    if (query == entry.passes.end() || !query->second.contains(target)) return {};
-    const PassFiles& files = query->second.at(target);
-    if (files.vert_bytecode && files.frag_bytecode) return {};
-    return "the library has no " + std::string(to_string(target)) +
-           " bytecode (built without an HLSL compiler: penumbra build --hlsl-compiler PATH)";
+    return lacking_bytecode(entry, target);
   }
 
   Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
@@ -48,6 +43,15 @@ class BytecodeBackend final : public Backend {
 };
 
 }  // namespace
+
+std::string lacking_bytecode(const LibraryVariant& entry, Target target) {
+  const auto query = entry.passes.find(PassKind::query);
+  if (query == entry.passes.end() || !query->second.contains(target)) return {};
+  const PassFiles& files = query->second.at(target);
+  if (files.vert_bytecode && files.frag_bytecode) return {};
+  return "the library has no " + std::string(to_string(target)) +
+         " bytecode (built without an HLSL compiler: penumbra build --hlsl-compiler PATH)";
+}
 
 std::unique_ptr<Backend> bytecode_backend(Engine& engine, BytecodeTranslator translator) {
   return std::make_unique<BytecodeBackend>(engine, std::move(translator));

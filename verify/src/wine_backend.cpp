@@ -96,12 +96,7 @@ class WineBackend final : public Backend {
   std::string missing() const override { return missing_; }
   bool executes(Target target) const override { return runtime_for(target) == runtime_; }
   std::string not_executed(const LibraryVariant& entry, Target target) const override {
-    const auto query = entry.passes.find(PassKind::query);
-    if (query == entry.passes.end() || !query->second.contains(target)) return {};
-    const PassFiles& files = query->second.at(target);
-    if (files.vert_bytecode && files.frag_bytecode) return {};
-    return "the library has no " + std::string(to_string(target)) +
-           " bytecode (built without an HLSL compiler: penumbra build --hlsl-compiler PATH)";
+    return lacking_bytecode(entry, target);
   }
 
   Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
