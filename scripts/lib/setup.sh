@@ -94,8 +94,13 @@ start_wine_session() {
   fi
   export DISPLAY=":$(head -n 1 "$PENUMBRA_WINE_DIR/display")"
   export WINEPREFIX="$PENUMBRA_WINE_DIR/prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
-  wineboot -i >/dev/null 2>&1
-  wineserver -p
+  mkdir -p "$WINEPREFIX"
+  wineserver -p  # before anything starts one: it answers 2 when one runs already
+  if ! wineboot -i >"$PENUMBRA_WINE_DIR/wineboot.log" 2>&1; then
+    echo "penumbra: error: wineboot could not make the Wine prefix $WINEPREFIX:" >&2
+    cat "$PENUMBRA_WINE_DIR/wineboot.log" >&2
+    return 1
+  fi
   echo "penumbra: Wine prefix $WINEPREFIX on display $DISPLAY"
 }
 
