@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <ostream>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -33,9 +34,14 @@ struct GuideHost {
 
 const std::vector<GuideHost> kGuides = {
     {"d3d9", {"d3d9_device.cpp"}},
-    {"d3d10", {"d3d10_device.cpp", "dxgi_names.cpp", "dxgi_names.hpp"}},
-    {"d3d11", {"d3d11_device.cpp", "dxgi_names.cpp", "dxgi_names.hpp"}},
+    {"d3d10", {"d3d10_device.cpp", "dxgi_device.hpp", "dxgi_names.cpp", "dxgi_names.hpp"}},
+    {"d3d11", {"d3d11_device.cpp", "dxgi_device.hpp", "dxgi_names.cpp", "dxgi_names.hpp"}},
 };
+
+// Test logs name the guide.
+void PrintTo(const GuideHost& guide, std::ostream* out) {
+  *out << guide.guide << ".md";
+}
 
 // What a guide may show that the host does not do, and why.
 const std::map<std::string, std::string> kNotTheHosts = {
