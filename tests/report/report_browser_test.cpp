@@ -137,7 +137,9 @@ TEST_F(ReportInBrowser, ShowsARowForEveryVariantTargetAndPath) {
   EXPECT_NE(page.find("data-rows=\"" + std::to_string(rows.size()) + "\""), std::string::npos);
   std::set<std::pair<std::string, std::string>> pairs;
   for (const auto& row : rows) {
-    EXPECT_EQ(row.at("status"), "ok") << row.dump();
+    // The Direct3D runtimes' rows are skipped here (--no-wine), and say so.
+    const bool skipped = row.at("path").get<std::string>().starts_with("d3d");
+    EXPECT_EQ(row.at("status"), skipped ? "not executed" : "ok") << row.dump();
     pairs.emplace(row.at("variant"), row.at("target"));
   }
   for (const Variant& variant : default_variants()) {
@@ -153,7 +155,9 @@ TEST_F(ReportInBrowser, ShowsARowForEveryVariantTargetAndPath) {
 TEST_F(ReportInBrowser, EveryLinkResolvesInsideTheReportOrTheLibrary) {
   std::size_t links = 0;
   for (const auto& row : json_.at("rows")) {
+    // A run not executed has no pictures, only its files.
     for (const char* key : {"image", "exact_error_image", "reference_error_image"}) {
+      if (row.at("status") != "ok") break;
       EXPECT_TRUE(fs::is_regular_file(report_dir() / row.at(key).get<std::string>())) << row.dump();
       ++links;
     }
