@@ -53,4 +53,12 @@ std::vector<float> receivers_to_rgba(const FloatImage& receivers) {
   return rgba;
 }
 
+FloatImage channel(const FloatImage& image, int c) {
+  FloatImage out(image.width, image.height, 1);
+  for (std::size_t p = 0; p < out.data.size(); ++p) {
+    out.data[p] = image.data[p * static_cast<std::size_t>(image.channels) + c];
+  }
+  return out;
+}
+
 }  // namespace penumbra

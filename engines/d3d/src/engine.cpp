@@ -6,6 +6,7 @@
 #include "job.hpp"
 #include "pass_binding.hpp"
 #include "penumbra/support/full_screen_triangle.hpp"
+#include "penumbra/support/image_checks.hpp"
 #include "penumbra/support/minmax_levels.hpp"
 
 namespace penumbra {
@@ -49,25 +50,6 @@ Result<PassTarget> pass_target(D3dRuntime runtime, const D3dPass& pass, const st
   return PassTarget{format, static_cast<int>(texel_components(*parsed))};
 }
 
-FloatImage channel(const FloatImage& image, int c) {
-  FloatImage out(image.width, image.height, 1);
-  for (std::size_t p = 0; p < out.pixel_count(); ++p) {
-    out.data[p] = image.data[p * static_cast<std::size_t>(image.channels) + c];
-  }
-  return out;
-}
-
-// (u, v, z_r) in 3 or 4 channels as the four floats a receivers texture holds.
-std::vector<float> rgba(const FloatImage& image) {
-  std::vector<float> out(image.pixel_count() * 4, 0.0f);
-  for (std::size_t p = 0; p < image.pixel_count(); ++p) {
-    for (int c = 0; c < std::min(image.channels, 4); ++c) {
-      out[p * 4 + c] = image.data[p * static_cast<std::size_t>(image.channels) + c];
-    }
-  }
-  return out;
-}
-
 // A pass drawn over a whole target of `width` x `height`.
 DrawTarget whole(int colour, int width, int height) {
   return {colour, 0, std::nullopt, width, height, std::nullopt, std::nullopt};
@@ -82,7 +64,7 @@ struct ScreenInputs {
 ScreenInputs screen_inputs(Job& job, const FloatImage& receivers) {
   const int id = job.texture(api_format(api_target(job.runtime()), TextureFormat::rgba32_float),
                              receivers.width, receivers.height, 1, "input");
-  job.upload(id, 0, rgba(receivers));
+  job.upload(id, 0, receivers_to_rgba(receivers));
   const std::vector<float> triangle(kFullScreenTriangle.begin(), kFullScreenTriangle.end());
   return {id, {job.vertices(triangle), 3}};
 }
@@ -298,7 +280,7 @@ Result<D3dScreenBlurOutput> D3dEngine::run_screen_blur(const D3dScreenBlurPasses
   const ScreenInputs screen = screen_inputs(job, receivers);
   const int colour = job.texture(api_format(api_target(runtime_), TextureFormat::rgba32_float),
                                  width, height, 1, "input");
-  job.upload(colour, 0, rgba(scene_colour));
+  job.upload(colour, 0, receivers_to_rgba(scene_colour));
   PassTextures textures{{TextureId::shadow_depth, map.id},
                         {TextureId::shadow_cmp, map.id},
                         {TextureId::receivers, screen.receivers},

@@ -4,6 +4,7 @@
 
 #include "full_screen_draw.hpp"
 #include "minmax_mip.hpp"
+#include "penumbra/support/image_checks.hpp"
 #include "textures.hpp"
 
 namespace penumbra::gl {

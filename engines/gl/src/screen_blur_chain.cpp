@@ -5,6 +5,7 @@
 
 #include "full_screen_draw.hpp"
 #include "pass_program.hpp"
+#include "penumbra/support/image_checks.hpp"
 #include "penumbra/support/minmax_levels.hpp"
 #include "query_pass.hpp"
 #include "textures.hpp"

@@ -108,11 +108,4 @@ Result<FloatImage> read_texture(const Texture& texture, const TexelFormat& forma
   return image;
 }
 
-FloatImage channel(const FloatImage& image, int c) {
-  FloatImage out(image.width, image.height, 1);
-  for (std::size_t p = 0; p < out.data.size(); ++p)
-    out.data[p] = image.data[p * image.channels + c];
-  return out;
-}
-
 }  // namespace penumbra::gl

@@ -44,7 +44,4 @@ Result<Texture> create_chain(const TexelFormat& format, int side, int levels,
 Result<FloatImage> read_texture(const Texture& texture, const TexelFormat& format, int level,
                                 int width, int height, const std::string& what);
 
-// Channel `c` of `image` as a one-channel image.
-FloatImage channel(const FloatImage& image, int c);
-
 }  // namespace penumbra::gl

@@ -1,5 +1,5 @@
-// The checks both engines make on a query pass's input images, and the
-// receivers' RGBA layout both upload.
+// The checks the engines make on a query pass's input images, the
+// receivers' RGBA layout they upload, and one channel of what they read back.
 #pragma once
 
 #include <vector>
@@ -19,5 +19,8 @@ Status check_receivers(const FloatImage& receivers);
 
 // The receivers as 4 channels per pixel, a missing fourth channel 0.
 std::vector<float> receivers_to_rgba(const FloatImage& receivers);
+
+// Channel `c` of `image`, as a one-channel image.
+FloatImage channel(const FloatImage& image, int c);
 
 }  // namespace penumbra
