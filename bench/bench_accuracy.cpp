@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_files.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/reference/accuracy_scenes.hpp"
@@ -190,10 +191,11 @@ Status run(const std::string& manifest, const std::string& device, int map_size)
 
 int main(int argc, char** argv) {
   CLI::App app{"penumbra_bench_accuracy: variants against the exact area light"};
-  std::string manifest = PENUMBRA_SOURCE_DIR "/permutations/default.json";
+  std::string manifest;  // default: the shipped default.json (bench_files.hpp)
   std::string device;
   int map_size = 512;
-  app.add_option("--manifest", manifest, "Manifest whose variants are measured");
+  app.add_option("--manifest", manifest,
+                 "Manifest whose variants are measured (default: the shipped default.json)");
   app.add_option("--device", device, "Vulkan device: index or name substring");
   app.add_option("--map-size", map_size,
                  "Shadow map width and height (default 512, the suite's; a larger one shows "
@@ -205,6 +207,14 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     std::cerr << "penumbra_bench_accuracy: " << e.what() << "\n";
     return 2;
+  }
+  if (manifest.empty()) {
+    auto shipped = penumbra::bench::default_manifest("default.json");
+    if (!shipped) {
+      std::cerr << "penumbra_bench_accuracy: " << shipped.error().to_string() << "\n";
+      return 2;
+    }
+    manifest = shipped->string();
   }
   const penumbra::Status status = penumbra::run(manifest, device, map_size);
   if (!status) {

@@ -32,6 +32,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_files.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
@@ -56,6 +57,7 @@ struct Options {
   bool bytecode = false;  // also a cold build with vkd3d-compiler, timed apart
   bool skip_j1 = false;   // no -j1 build or chain (manifests too large to build twice)
   std::filesystem::path hlsl_compiler = {};  // with --bytecode
+  std::filesystem::path penumbra = {};       // the executable measured (bench::penumbra_executable)
 };
 
 // Deletes the benchmark's folder however it ends.
@@ -179,8 +181,9 @@ struct Measured {
 
 class Bench {
  public:
-  explicit Bench(std::filesystem::path root)
+  Bench(std::filesystem::path root, std::filesystem::path penumbra)
       : root_(std::move(root)),
+        penumbra_(std::move(penumbra)),
         // No HLSL compiler is found unless given: PENUMBRA_HLSL_COMPILER is
         // empty and the default install (~/.cache/penumbra/vkd3d) is not
         // under this HOME. Every build names its cache, or --no-cache.
@@ -194,7 +197,7 @@ class Bench {
 
   // `penumbra ARGS`, which must succeed; `log` names its output file.
   Result<Measured> penumbra(std::vector<std::string> args, const std::string& log) const {
-    args.insert(args.begin(), PENUMBRA_EXECUTABLE);
+    args.insert(args.begin(), penumbra_.string());
     auto run = run_child(args, env_.get(), root_ / (log + ".log"));
     if (!run) return run.error();
     if (run->exit_code != 0) {
@@ -215,6 +218,7 @@ class Bench {
 
  private:
   std::filesystem::path root_;
+  std::filesystem::path penumbra_;  // the executable run
   Environment env_;
 };
 
@@ -443,7 +447,7 @@ Status bench_manifest(const Options& options, const ChainTools& tools,
                       const std::filesystem::path& manifest) {
   TempDir temp{std::filesystem::temp_directory_path() /
                ("penumbra-bench-build-" + std::to_string(::getpid()))};
-  const Bench bench(temp.root);
+  const Bench bench(temp.root, options.penumbra);
   const std::string j = "-j" + std::to_string(options.jobs);
   const std::vector<std::string> no_cache = {"--no-cache"};
 
@@ -609,9 +613,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "penumbra_bench_build: %s\n", e.what());
     return 2;
   }
-  if (options.manifests.empty()) {
-    options.manifests = {std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations/default.json"};
+  auto penumbra = penumbra::bench::penumbra_executable();
+  auto shipped = penumbra::bench::default_manifest("default.json");
+  if (!penumbra || (options.manifests.empty() && !shipped)) {
+    std::fprintf(stderr, "penumbra_bench_build: %s\n",
+                 (!penumbra ? penumbra.error() : shipped.error()).to_string().c_str());
+    return 2;
   }
+  options.penumbra = *penumbra;
+  if (options.manifests.empty()) options.manifests = {*shipped};
   if (options.bytecode) {
     const char* env = std::getenv("PENUMBRA_HLSL_COMPILER");
     if (env && *env) options.hlsl_compiler = env;
@@ -635,7 +645,8 @@ int main(int argc, char** argv) {
     }
   }
   std::printf("%u cores (%s), load average %s; penumbra: %s\n", std::thread::hardware_concurrency(),
-              penumbra::cpu_model().c_str(), penumbra::load_average().c_str(), PENUMBRA_EXECUTABLE);
+              penumbra::cpu_model().c_str(), penumbra::load_average().c_str(),
+              options.penumbra.c_str());
   for (const auto& manifest : options.manifests) {
     const penumbra::Status status = penumbra::bench_manifest(options, tools, manifest);
     if (!status) {

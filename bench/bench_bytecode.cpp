@@ -17,6 +17,7 @@
 #include <tuple>
 #include <vector>
 
+#include "bench_files.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
@@ -141,8 +142,6 @@ Status bench_manifest(const Options& options, const std::filesystem::path& manif
 int main(int argc, char** argv) {
   penumbra::Options options;
   CLI::App app{"vkd3d-compiler's time and instruction slots for each Direct3D file we emit"};
-  options.manifests = {std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations/default.json",
-                       std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations/largest.json"};
   const char* env = std::getenv("PENUMBRA_HLSL_COMPILER");
   if (env) options.compiler = env;
   app.add_option("manifests", options.manifests, "manifests to build (default: default, largest)");
@@ -152,6 +151,16 @@ int main(int argc, char** argv) {
   app.add_option("--repeats", options.repeats, "compiles per file; the median is printed")
       ->check(CLI::Range(1, 99));
   CLI11_PARSE(app, argc, argv);
+  const bool named = !options.manifests.empty();
+  for (const char* name : {"default.json", "largest.json"}) {
+    if (named) break;
+    auto manifest = penumbra::bench::default_manifest(name);
+    if (!manifest) {
+      std::fprintf(stderr, "penumbra_bench_bytecode: %s\n", manifest.error().to_string().c_str());
+      return 2;
+    }
+    options.manifests.push_back(*manifest);
+  }
   if (options.compiler.empty()) {
     std::fprintf(stderr,
                  "penumbra_bench_bytecode: --hlsl-compiler: no compiler given and "

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "hlsl_compiler.hpp"
+#include "jobs.hpp"
 #include "penumbra/report/report.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "validators.hpp"
@@ -23,6 +24,8 @@ struct ReportArgs {
   bool no_wine = false;
   bool validation = false;
   bool verbose = false;
+  bool quiet = false;  // no progress
+  int jobs = 0;        // 0: every core
 };
 
 Status run_report(const ReportArgs& args) {
@@ -34,6 +37,8 @@ Status run_report(const ReportArgs& args) {
   options.pictures.gl = !args.no_gl;
   options.pictures.wine = !args.no_wine;
   options.pictures.bytecode = {.compiler = compiler};
+  options.pictures.jobs = args.jobs;
+  options.pictures.progress = stderr_progress(args.quiet);
   options.final_dir = out;
   for (const std::string& name : args.targets) {
     auto target = parse_target(name);
@@ -50,6 +55,7 @@ Status run_report(const ReportArgs& args) {
     }
   }
   PENUMBRA_TRY(check_report_directory(out));
+  limit_software_rasterizers(args.jobs);
   PENUMBRA_TRY_ASSIGN(auto engine,
                       Engine::create({.device = args.device, .validation = args.validation},
                                      stderr_diagnostics(args.verbose)));
@@ -81,6 +87,8 @@ void add_report_command(CLI::App& app, int& exit_code) {
       "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
+  cmd->add_flag("-q,--quiet", args->quiet, "Print no progress (runs done of the total)");
+  add_jobs_option(cmd, args->jobs);
   cmd->callback([args, &exit_code] {
     const Status s = run_report(*args);
     exit_code = s ? kExitOk : report(s.error());

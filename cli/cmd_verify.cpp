@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "hlsl_compiler.hpp"
+#include "jobs.hpp"
 #include "output_file.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
@@ -25,6 +26,8 @@ struct VerifyArgs {
   std::vector<std::string> paths;
   bool validation = false;
   bool verbose = false;
+  bool quiet = false;  // only failures and the totals
+  int jobs = 0;        // 0: every core
 };
 
 std::string run_label(const VariantRun& v, const TargetRun& t) {
@@ -33,13 +36,16 @@ std::string run_label(const VariantRun& v, const TargetRun& t) {
   return label + "]";
 }
 
-void print_summary(const VerifyReport& report) {
+// Every check's line (with `quiet`, only the failed ones), then the totals.
+void print_summary(const VerifyReport& report, bool quiet) {
   for (const DepthCheck& c : report.depth_checks) {
+    if (quiet && c.pass) continue;
     std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass [" << to_string(c.target)
               << (c.backend == "vulkan" ? "" : " on " + c.backend) << "] on " << c.scene << ": "
               << c.mismatched << " of " << c.texels << " texels off\n";
   }
   for (const MinmaxCheck& c : report.minmax_checks) {
+    if (quiet && c.pass) continue;
     std::cout << (c.pass ? "PASS " : "FAIL ") << "min-max mip [" << to_string(c.target) << "] on "
               << c.scene << ": ";
     if (!c.error.empty()) {
@@ -68,6 +74,7 @@ void print_summary(const VerifyReport& report) {
           composite_error = std::max(composite_error, s.composite->max_abs_error);
         }
       }
+      if (quiet && t.pass) continue;
       std::cout << (t.pass ? "PASS " : "FAIL ") << run_label(v, t) << " max error " << max_error;
       // screen_blur: the factor's error above, then the blur's and composite's.
       if (chain) std::cout << ", blur " << blur_error << ", composite " << composite_error;
@@ -84,6 +91,7 @@ void print_summary(const VerifyReport& report) {
     }
   }
   for (const auto& [backend, why] : skipped) {
+    if (quiet) break;
     std::cout << "note: " << why.first << " " << backend << " runs not executed: " << why.second
               << "\n";
   }
@@ -113,6 +121,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
+  cmd->add_flag("-q,--quiet", args->quiet,
+                "Print no progress and only the failed checks, then the totals");
+  add_jobs_option(cmd, args->jobs);
   cmd->callback([args, &exit_code] {
     for (const std::string& path : args->paths) {
       if (!is_path_name(path)) {
@@ -154,6 +165,7 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(s.error());
       return;
     }
+    limit_software_rasterizers(args->jobs);
     auto engine = Engine::create({.device = args->device, .validation = args->validation},
                                  stderr_diagnostics(args->verbose));
     if (!engine) {
@@ -166,7 +178,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                           .wine = !args->no_wine,
                           .paths = args->paths,
                           .bytecode = {.compiler = *compiler},
-                          .shard = shard};
+                          .shard = shard,
+                          .jobs = args->jobs,
+                          .progress = stderr_progress(args->quiet)};
     for (const std::string& name : args->targets) {
       auto target = parse_target(name);
       if (!target) {
@@ -192,7 +206,7 @@ void add_verify_command(CLI::App& app, int& exit_code) {
         return;
       }
     }
-    print_summary(*result);
+    print_summary(*result, args->quiet);
     std::cout << "results: " << path.string() << (args->junit.empty() ? "" : ", " + args->junit)
               << "\n";
     exit_code = result->pass() ? kExitOk : kExitCheckFailed;

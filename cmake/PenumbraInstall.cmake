@@ -11,7 +11,7 @@
 #             SPIRV-Cross.
 #   runtime   Penumbra::runtime: Penumbra::vulkan, Penumbra::verify,
 #             Penumbra::reference and Penumbra::gl where built; needs Vulkan
-#             (and OpenGL/EGL with gl), looked up only when requested.
+#             and oneTBB (and OpenGL/EGL with gl), looked up only when requested.
 include(CMakePackageConfigHelpers)
 
 set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
@@ -31,6 +31,14 @@ install(TARGETS penumbra_shaderlib_sources penumbra_compiler EXPORT PenumbraComp
 install(DIRECTORY compiler/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT PenumbraCompilerTargets NAMESPACE Penumbra::
         DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
+
+# The shipped manifests, where the benchmarks look first (bench/bench_files.hpp):
+# share/penumbra/permutations, installed and in the build tree.
+set(PENUMBRA_MANIFESTS permutations/default.json permutations/largest.json)
+foreach(_manifest IN LISTS PENUMBRA_MANIFESTS)
+  configure_file(${_manifest} ${PROJECT_BINARY_DIR}/share/penumbra/${_manifest} COPYONLY)
+endforeach()
+install(FILES ${PENUMBRA_MANIFESTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/penumbra/permutations)
 
 # The shader library's sources as `penumbra build` embeds them, for engines
 # that read or ship them (Penumbra_SHADERLIB_DIR).

@@ -15,6 +15,9 @@
 #                                     binds, against the uncapped walk, on busy
 #                                     maps and the report's stage
 #                                     (penumbra_bench_capped, CPU only)
+#   scripts/bench.sh jobs [ARGS]      verify and report with --jobs 1 against
+#                                     --jobs N (every core), side by side, and
+#                                     their results compared (penumbra_bench_jobs)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,13 +25,15 @@ source scripts/lib/setup.sh
 
 bench=minmax
 if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy ||
-  $1 == capped) ]]; then
+  $1 == capped || $1 == jobs) ]]; then
   bench=$1
   shift
 fi
 install_missing_packages
-if [[ $bench == bytecode || ($bench == build && " $* " == *" --bytecode "*) ]]; then
+if [[ $bench == bytecode || $bench == jobs || ($bench == build && " $* " == *" --bytecode "*) ]]; then
   install_hlsl_compiler
 fi
 configure_and_build build "penumbra_bench_$bench"
+# One Xvfb and Wine prefix for every verify and report the benchmark runs.
+if [[ $bench == jobs ]]; then start_wine_session; fi
 "build/bench/penumbra_bench_$bench" "$@"

@@ -1,5 +1,7 @@
 // Geometry of the test scenes: every occluder and the receiver plane are met
 // by rays from the light's centre through texel or pixel centres.
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "penumbra/reference/scene.hpp"
@@ -53,7 +55,8 @@ FloatImage receivers(const Scene& scene, int width, int height) {
 FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_z,
                           std::array<double, 2> within) {
   FloatImage image(width, height, 1);
-  for (int j = 0; j < height; ++j) {
+  // Rows in parallel: each texel's ray is its own.
+  tbb::parallel_for(0, height, [&](int j) {
     for (int i = 0; i < width; ++i) {
       const UV slope =
           ray_slope(scene.light, (i + 0.5 + within[0]) / width, (j + 0.5 + within[1]) / height);
@@ -70,7 +73,7 @@ FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_
       }
       image.at(i, j) = float(nearest);
     }
-  }
+  });
   return image;
 }
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/support/file.hpp"
+
 namespace penumbra::report {
 namespace {
 
@@ -29,12 +31,19 @@ Status write_png(const std::filesystem::path& path, const Picture& picture) {
   image.width = static_cast<png_uint_32>(picture.width);
   image.height = static_cast<png_uint_32>(picture.height);
   image.format = PNG_FORMAT_RGB;
-  if (png_image_write_to_file(&image, path.c_str(), 0, picture.rgb.data(), 0, nullptr) == 0) {
-    const std::string why = image.message;
-    png_image_free(&image);
-    return make_error(Error::Kind::io, path.string(), "cannot write the PNG: " + why);
+  // Encoded in memory, then written by write_file(): libpng's own file
+  // writer loses the system's reason when the file cannot be created.
+  png_alloc_size_t size = 0;
+  if (png_image_write_to_memory(&image, nullptr, &size, 0, picture.rgb.data(), 0, nullptr) != 0) {
+    std::string bytes(size, '\0');
+    if (png_image_write_to_memory(&image, bytes.data(), &size, 0, picture.rgb.data(), 0, nullptr) !=
+        0) {
+      return write_file(path, std::string_view(bytes).substr(0, size));
+    }
   }
-  return {};
+  const std::string why = image.message;
+  png_image_free(&image);
+  return make_error(Error::Kind::io, path.string(), "cannot encode the PNG: " + why);
 }
 
 }  // namespace penumbra::report

@@ -3,8 +3,14 @@
 // picture for the contact sheet), so memory does not grow with the library.
 #include "penumbra/report/report.hpp"
 
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <map>
+#include <mutex>
 #include <optional>
+#include <tuple>
 
 #include "html_page.hpp"
 #include "penumbra/compiler/build.hpp"
@@ -30,8 +36,9 @@ struct ContactPanel {
   nlohmann::json row;  // the run's row, for the page's caption
   Picture crop;
   // Which run stands for its technique: SPIR-V on Vulkan before any other
-  // (hlsl_dx9 caps some loops), then the lowest exact_penumbra_mae.
-  std::pair<bool, double> rank;
+  // (hlsl_dx9 caps some loops), then the lowest exact_penumbra_mae, then the
+  // earliest run (so that the choice does not depend on the threads' order).
+  std::tuple<bool, double, std::size_t> rank;
 };
 
 class ReportWriter {
@@ -45,6 +52,8 @@ class ReportWriter {
 
   PictureScene scene() const { return {stage_.scene, view_.receivers}; }
 
+  // Called from several threads at once: each run's files are its own, and
+  // what is shared is taken under the mutex.
   Status add(PictureRun&& run) {
     nlohmann::json row = {{"variant", run.variant},
                           {"technique", to_string(run.technique)},
@@ -57,7 +66,8 @@ class ReportWriter {
     if (!run.not_executed.empty() || !run.error.empty()) {
       row["status"] = run.error.empty() ? "not executed" : "failed";
       row["reason"] = run.error.empty() ? run.not_executed : run.error;
-      rows_.push_back(std::move(row));
+      const std::lock_guard lock(mutex_);
+      rows_.emplace(run.order, std::move(row));
       return {};
     }
     const std::string base =
@@ -79,8 +89,9 @@ class ReportWriter {
     row["image"] = base + ".png";
     row["exact_error_image"] = base + "-exact-error.png";
     row["reference_error_image"] = base + "-reference-error.png";
+    const std::lock_guard lock(mutex_);
     keep_for_contact_sheet(run, figures, picture, row);
-    rows_.push_back(std::move(row));
+    rows_.emplace(run.order, std::move(row));
     return {};
   }
 
@@ -95,7 +106,7 @@ class ReportWriter {
                         {"variant", panel.row["variant"]},
                         {"target", panel.row["target"]},
                         {"path", panel.row["path"]},
-                        {"exact_penumbra_mae", panel.rank.second}});
+                        {"exact_penumbra_mae", std::get<1>(panel.rank)}});
     }
     PENUMBRA_TRY(report::write_png(dir_ / "contact_sheet.png", report::side_by_side(crops, 4)));
     const report::Region measured = report::region(view_, exact_);
@@ -117,7 +128,7 @@ class ReportWriter {
          {{"image", "contact_sheet.png"},
           {"crop", {kContactCrop.x, kContactCrop.y, kContactCrop.width, kContactCrop.height}},
           {"panels", panels}}},
-        {"rows", rows_}};
+        {"rows", rows()}};
     PENUMBRA_TRY(write_file_atomic(dir_ / "report.json", json.dump(2) + "\n"));
     return write_file_atomic(dir_ / "index.html", report::html_page(json));
   }
@@ -146,10 +157,18 @@ class ReportWriter {
     return links;
   }
 
+  // The rows in run order.
+  nlohmann::json rows() const {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& [order, row] : rows_) rows.push_back(row);
+    return rows;
+  }
+
   void keep_for_contact_sheet(const PictureRun& run, const report::Figures& figures,
                               const Picture& picture, const nlohmann::json& row) {
-    const std::pair<bool, double> rank{run.target != Target::spirv || run.backend != "vulkan",
-                                       figures.exact_penumbra_mae};
+    const std::tuple<bool, double, std::size_t> rank{
+        run.target != Target::spirv || run.backend != "vulkan", figures.exact_penumbra_mae,
+        run.order};
     auto it = best_.find(run.technique);
     if (it != best_.end() && it->second.rank <= rank) return;
     best_[run.technique] = {row, report::crop_scaled(picture, kContactCrop, kContactScale), rank};
@@ -161,8 +180,9 @@ class ReportWriter {
   reference::Stage stage_;
   reference::StageView view_;
   FloatImage exact_;
-  std::vector<nlohmann::json> rows_;
-  std::map<Technique, ContactPanel> best_;  // per technique, the run its panel shows
+  std::mutex mutex_;                            // guards rows_ and best_
+  std::map<std::size_t, nlohmann::json> rows_;  // by PictureRun::order
+  std::map<Technique, ContactPanel> best_;      // per technique, the run its panel shows
 };
 
 }  // namespace
@@ -173,12 +193,18 @@ Status check_report_directory(const fs::path& dir) {
 
 Status write_report(const Library& library, Engine& engine, const fs::path& dir,
                     const ReportOptions& options, const DiagnosticConsumer& diagnostics) {
-  ReportWriter writer(library, dir, options.final_dir.empty() ? dir : options.final_dir);
-  const PictureScene scene = writer.scene();
+  // The exact truth, computed as the writer is made, on no more threads than
+  // the pictures.
+  const int cores = tbb::info::default_concurrency();
+  tbb::task_arena arena(options.pictures.jobs > 0 ? std::min(options.pictures.jobs, cores) : cores);
+  std::optional<ReportWriter> writer;
+  arena.execute(
+      [&] { writer.emplace(library, dir, options.final_dir.empty() ? dir : options.final_dir); });
+  const PictureScene scene = writer->scene();
   PENUMBRA_TRY(render_pictures(
       library, engine, scene, options.pictures,
-      [&](PictureRun&& run) { return writer.add(std::move(run)); }, diagnostics));
-  return writer.finish(engine);
+      [&](PictureRun&& run) { return writer->add(std::move(run)); }, diagnostics));
+  return writer->finish(engine);
 }
 
 }  // namespace penumbra

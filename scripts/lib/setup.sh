@@ -9,6 +9,7 @@ PENUMBRA_PACKAGES=(
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   nlohmann-json3-dev libcli11-dev libpugixml-dev googletest libgtest-dev libxxhash-dev
   libpng-dev
+  libtbb-dev  # oneTBB: verify and report on every core
   chromium
   clang libclang-rt-14-dev  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh)
   # The real Direct3D 9/10/11 runtimes (Wine's, over llvmpipe under Xvfb) and

@@ -78,16 +78,16 @@ Error io_error(const fs::path& path, std::string message) {
 
 Status write_file_atomic(const fs::path& path, std::string_view bytes) {
   const fs::path temp = sibling(path, "tmp");
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) return io_error(path, "cannot create temporary file " + temp.string());
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temp, ignored);
-      return io_error(path, "cannot write " + std::to_string(bytes.size()) + " bytes");
+  if (Status written = write_file(temp, bytes); !written) {
+    // e.g. "cannot create temporary file DIR/.v.pfm.tmp-…: Permission denied"
+    std::string message = written.error().message;
+    const std::string_view created = "cannot create the file";
+    if (message.starts_with(created)) {
+      message.replace(0, created.size(), "cannot create temporary file " + temp.string());
+    } else {
+      message = "temporary file " + temp.string() + ": " + message;
     }
+    return io_error(path, std::move(message));
   }
   std::error_code ec;
   fs::rename(temp, path, ec);

@@ -2,6 +2,9 @@
 // errors; callers that need a friendlier message wrap this one.
 #include "penumbra/support/file.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -35,6 +38,34 @@ Result<std::string> read_file(const std::filesystem::path& path) {
   }
   if (std::ferror(file.get())) return io_error(path, "cannot read the file", errno);
   return bytes;
+}
+
+Status write_file(const std::filesystem::path& path, std::string_view bytes) {
+  if (path.empty()) {
+    return make_error(Error::Kind::io, "", "cannot write a file with an empty name");
+  }
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return io_error(path, "cannot create the file", errno);
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int error = errno;
+      ::close(fd);
+      ::unlink(path.c_str());
+      return io_error(path, ("cannot write " + std::to_string(bytes.size()) + " bytes").c_str(),
+                      error);
+    }
+    written += std::size_t(n);
+  }
+  // close() reports what a delayed write (NFS, a full disk) could not do.
+  if (::close(fd) != 0) {
+    const int error = errno;
+    ::unlink(path.c_str());
+    return io_error(path, "cannot write the file", error);
+  }
+  return {};
 }
 
 }  // namespace penumbra

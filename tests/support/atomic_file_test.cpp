@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/support/file.hpp"
 #include "temp_dir.hpp"
 
 namespace penumbra {
@@ -47,6 +48,31 @@ TEST(WriteFileAtomic, MissingDirectoryIsAnIoError) {
   ASSERT_FALSE(status.ok());
   EXPECT_EQ(status.error().kind, Error::Kind::io);
   EXPECT_NE(status.error().where.find("f.txt"), std::string::npos);
+}
+
+// The user learns why: the temporary's name and the system's reason.
+TEST(WriteFileAtomic, AnUncreatableTemporaryNamesItAndTheSystemsReason) {
+  testing::TempDir dir;
+  write_text(dir.path() / "plain", "a file, not a folder");
+  const auto status = write_file_atomic(dir.path() / "plain" / "v.pfm", "x");
+  ASSERT_FALSE(status.ok());
+  const std::string message = status.error().message;
+  EXPECT_EQ(
+      message.rfind(
+          "cannot create temporary file " + (dir.path() / "plain").string() + "/.v.pfm.tmp-", 0),
+      0u)
+      << message;
+  EXPECT_NE(message.find(": Not a directory"), std::string::npos) << message;
+}
+
+TEST(WriteFile, AFailureNamesWhatFailedAndTheSystemsReason) {
+  testing::TempDir dir;
+  const auto status = write_file(dir.path() / "missing" / "f.bin", "x");
+  ASSERT_FALSE(status.ok());
+  EXPECT_EQ(status.error().kind, Error::Kind::io);
+  EXPECT_EQ(status.error().message, "cannot create the file: No such file or directory");
+  ASSERT_TRUE(write_file(dir.path() / "f.bin", std::string(3, '\0')));
+  EXPECT_EQ(read_text(dir.path() / "f.bin"), std::string(3, '\0'));
 }
 
 TEST(StagedDirectory, StagingIsAHiddenSibling) {

@@ -1,13 +1,18 @@
 #include "penumbra/verify/pictures.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <deque>
 #include <map>
+#include <mutex>
 
 #include "backend.hpp"
+#include "cpu_work.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
+#include "progress_counter.hpp"
 #include "scene_fixture.hpp"
 
 namespace penumbra {
@@ -15,6 +20,10 @@ namespace {
 
 bool wanted(const std::vector<Target>& targets, Target target) {
   return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
+}
+
+bool wanted(const std::vector<std::string>& names, const std::string& name) {
+  return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
 }
 
 // The scene prepared for one target by the depth (and min-max) passes of
@@ -96,6 +105,70 @@ Status run_passes(PictureRun& run, const LoadedPasses& passes, const SceneFixtur
 
 }  // namespace
 
+namespace {
+
+// One (variant, target)'s runs on every path, the device's part done; the
+// CPU's part (the references, the sink) is one job.
+struct PendingPictures {
+  std::vector<PictureRun> runs;
+  std::vector<std::shared_ptr<const FloatImage>> own_maps;  // per run; null: the fixture's
+  const SceneFixture* fixture = nullptr;                    // null when no run executed
+};
+
+// The references of `pending`'s runs (the fixture's computed once), then
+// each run to the sink. A run whose reference fails is handed on failed.
+// Returns the first error of the sink, with its run's order.
+std::optional<std::pair<std::size_t, Error>> finish_pictures(
+    PendingPictures& pending, const Variant& variant, Target target,
+    const reference::SamplingPrecision& precision, const PictureSink& sink,
+    ProgressCounter& progress) {
+  std::optional<Result<reference::ReferenceImage>> on_fixture;
+  std::optional<std::pair<std::size_t, Error>> failed;
+  for (std::size_t r = 0; r < pending.runs.size(); ++r) {
+    PictureRun& run = pending.runs[r];
+    if (run.not_executed.empty() && run.error.empty()) {
+      const SceneFixture& fixture = *pending.fixture;
+      Result<reference::ReferenceImage> own =
+          pending.own_maps[r]
+              ? reference_image(variant, target, fixture, *pending.own_maps[r], precision)
+              : Result<reference::ReferenceImage>(reference::ReferenceImage{});
+      if (!pending.own_maps[r] && !on_fixture) {
+        on_fixture = reference_image(variant, target, fixture, fixture.linear_depth, precision);
+      }
+      const Result<reference::ReferenceImage>& expected = pending.own_maps[r] ? own : *on_fixture;
+      if (expected) {
+        run.reference = expected->visibility;
+        run.reference_ambiguous = expected->ambiguous;
+      } else {
+        run.error = expected.error().to_string();
+        run.visibility = run.texel_reads = FloatImage();
+      }
+    }
+    const std::string unit =
+        run.variant + " [" + std::string(to_string(run.target)) + " on " + run.backend + "]";
+    const std::size_t order = run.order;
+    if (Status s = sink(std::move(run)); !s && !failed) failed.emplace(order, s.error());
+    progress.finished(unit);
+  }
+  return failed;
+}
+
+// The runs render_pictures() makes: the progress's total.
+std::size_t count_runs(const Library& library, const PictureOptions& options,
+                       const std::vector<std::unique_ptr<Backend>>& backends) {
+  std::size_t runs = 0;
+  for (const LibraryVariant& entry : library.variants) {
+    if (!wanted(options.variants, entry.variant.name)) continue;
+    for (Target target : entry.variant.targets) {
+      if (!wanted(options.targets, target)) continue;
+      for (const auto& backend : backends) runs += backend->executes(target) ? 1 : 0;
+    }
+  }
+  return runs;
+}
+
+}  // namespace
+
 Status render_pictures(const Library& library, Engine& engine, const PictureScene& scene,
                        const PictureOptions& options, const PictureSink& sink,
                        const DiagnosticConsumer& diagnostics) {
@@ -109,61 +182,63 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
   const auto backends = all_backends(engine, options.bytecode, options.gl, options.wine);
   TargetStages stages(library, engine, scene);
+  ProgressCounter progress(options.progress, count_runs(library, options, backends));
+  // Each job's first failure; the earliest run's is returned.
+  std::mutex failures_mutex;
+  std::vector<std::pair<std::size_t, Error>> failures;
+  std::atomic<bool> stop{false};
+  std::deque<PendingPictures> pending;  // stable addresses for the jobs
+  std::size_t order = 0;
 
-  for (const LibraryVariant& entry : library.variants) {
-    const Variant& variant = entry.variant;
-    if (!options.variants.empty() && std::find(options.variants.begin(), options.variants.end(),
-                                               variant.name) == options.variants.end()) {
-      continue;
-    }
-    for (Target target : variant.targets) {
-      if (!wanted(options.targets, target)) continue;
-      // The reference depends on the target (its shader limits), not the path.
-      std::optional<Result<reference::ReferenceImage>> expected;
-      for (const std::unique_ptr<Backend>& backend : backends) {
-        if (!backend->executes(target)) continue;
-        PictureRun run;
-        run.variant = variant.name;
-        run.technique = variant.technique;
-        run.target = target;
-        run.backend = backend->name();
-        run.not_executed = backend->missing();
-        if (run.not_executed.empty()) run.not_executed = backend->not_executed(entry, target);
-        if (run.not_executed.empty()) {
+  CpuWork work(options.jobs);
+  work.run([&] {
+    for (const LibraryVariant& entry : library.variants) {
+      const Variant& variant = entry.variant;
+      if (!wanted(options.variants, variant.name)) continue;
+      for (Target target : variant.targets) {
+        if (!wanted(options.targets, target) || stop) continue;
+        PendingPictures& pictures = pending.emplace_back();
+        for (const std::unique_ptr<Backend>& backend : backends) {
+          if (!backend->executes(target)) continue;
+          PictureRun& run = pictures.runs.emplace_back();
+          std::shared_ptr<const FloatImage>& own_map = pictures.own_maps.emplace_back();
+          run.order = order++;
+          run.variant = variant.name;
+          run.technique = variant.technique;
+          run.target = target;
+          run.backend = backend->name();
+          run.not_executed = backend->missing();
+          if (run.not_executed.empty()) run.not_executed = backend->not_executed(entry, target);
+          if (!run.not_executed.empty()) continue;
           Status ran = [&]() -> Status {
             PENUMBRA_TRY_ASSIGN(const TargetScenes* scenes, stages.get(entry, target));
-            const SceneFixture& fixture = scenes->scenes.front();
+            pictures.fixture = &scenes->scenes.front();
             PENUMBRA_TRY_ASSIGN(auto passes, backend->load(library, entry, target, *scenes));
             run.device = backend->device();
-            std::shared_ptr<const FloatImage> own_map;
-            PENUMBRA_TRY(run_passes(run, passes, fixture, options.timed_runs, own_map));
-            if (own_map) {
-              PENUMBRA_TRY_ASSIGN(auto own,
-                                  reference_image(variant, target, fixture, *own_map, precision));
-              run.reference = std::move(own.visibility);
-              run.reference_ambiguous = std::move(own.ambiguous);
-              return {};
-            }
-            if (!expected) {
-              expected = reference_image(variant, target, fixture, fixture.linear_depth, precision);
-            }
-            if (!*expected) return expected->error();
-            run.reference = (*expected)->visibility;
-            run.reference_ambiguous = (*expected)->ambiguous;
-            return {};
+            return run_passes(run, passes, *pictures.fixture, options.timed_runs, own_map);
           }();
           if (!ran) {
             run.error = ran.error().to_string();
-            run.visibility = run.reference = run.reference_ambiguous = run.texel_reads =
-                FloatImage();
+            run.visibility = run.texel_reads = FloatImage();
           }
         }
-        PENUMBRA_TRY(sink(std::move(run)));
+        work.submit([&, &variant = variant, target] {
+          auto failed = finish_pictures(pictures, variant, target, precision, sink, progress);
+          pictures = {};  // its images are written: free them
+          if (!failed) return;
+          stop = true;
+          const std::lock_guard lock(failures_mutex);
+          failures.push_back(std::move(*failed));
+        });
       }
+      diagnostics({Severity::note, variant.name, "pictured"});
     }
-    diagnostics({Severity::note, variant.name, "pictured"});
-  }
-  return {};
+    work.wait();
+  });
+  if (failures.empty()) return {};
+  return std::min_element(failures.begin(), failures.end(),
+                          [](const auto& a, const auto& b) { return a.first < b.first; })
+      ->second;
 }
 
 }  // namespace penumbra

@@ -1,14 +1,16 @@
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <map>
 
 #include "backend.hpp"
-#include "chain_check.hpp"
+#include "cpu_work.hpp"
 #include "minmax_check.hpp"
 #include "penumbra/reference/precision.hpp"
-#include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/verify.hpp"
+#include "progress_counter.hpp"
+#include "scene_checks.hpp"
 #include "scene_fixture.hpp"
 
 namespace penumbra {
@@ -25,103 +27,49 @@ struct Context {
   std::map<Target, Error> broken_targets;
 };
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// A run that could not compile or execute its shaders is a failed check of
-// that variant and target, not a reason to stop verifying the others.
-TargetRun failed_run(Target target, std::string backend, const Error& error) {
-  TargetRun run;
-  run.target = target;
-  run.backend = std::move(backend);
-  run.executed = true;
-  run.error = error.to_string();
-  return run;
-}
-
-// The query's visibility against the reference of `target`'s shader
-// (screen_blur: the factor).
-// `linear_depth` is the map the GPU read: the fixture's, or a path's own.
-Result<SceneRun> check_scene(const Context& ctx, const FloatImage& visibility,
-                             const FloatImage& texel_reads, const Variant& variant, Target target,
-                             const SceneFixture& fixture, const FloatImage& linear_depth) {
-  auto expected =
-      reference::evaluate_image(variant, linear_depth, fixture.scene.light, fixture.receivers,
-                                ctx.precision, reference::shader_limits(target));
-  if (!expected) return expected.error();
-  auto comparison = reference::compare(visibility, expected->visibility, expected->ambiguous,
-                                       reference::tolerance(variant.technique, ctx.precision));
-  if (!comparison) return comparison.error();
-  double reads = 0.0;
-  for (float r : texel_reads.data) reads += r;
-  return SceneRun{fixture.scene.name, *comparison,
-                  reads / static_cast<double>(texel_reads.pixel_count()), std::nullopt,
-                  std::nullopt};
-}
-
-// screen_blur's chain checked step by step, so that one ambiguous point
-// compare in the factor does not spread through the blur: the factor against
-// the reference, then each later pass against the CPU's step applied to the
-// GPU's own input to it.
-Result<SceneRun> check_screen_blur_scene(const Context& ctx, const SceneOutput& gpu,
-                                         const ChainOutput& chain, const Variant& variant,
-                                         Target target, const SceneFixture& fixture) {
-  auto scene = check_scene(ctx, gpu.visibility, gpu.texel_reads, variant, target, fixture,
-                           gpu.own_linear_depth ? *gpu.own_linear_depth : fixture.linear_depth);
-  if (!scene) return scene.error();
-  auto blur =
-      check_chain(chain.blurred, reference::screen_blur(variant, gpu.visibility, fixture.receivers),
-                  reference::kBlurTolerance, "the blurred factor");
-  if (!blur) return blur.error();
-  auto composite = check_chain(chain.composite, reference::composite(fixture.colour, chain.blurred),
-                               reference::kCompositeTolerance, "the composite");
-  if (!composite) return composite.error();
-  scene->blur = *blur;
-  scene->composite = *composite;
-  return scene;
-}
-
-// `entry`'s passes for `target` on `backend`, each scene's output checked
-// against the reference.
-Result<TargetRun> run_on(Context& ctx, Backend& backend, const LibraryVariant& entry, Target target,
+// `entry`'s passes for `target` on `backend`, on the device: every scene's
+// output, to be checked. A run that cannot load or execute is failed here.
+PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& entry, Target target,
                          VerifyReport& report) {
-  TargetRun run;
+  const auto start = Clock::now();
+  PendingRun pending;
+  TargetRun& run = pending.run;
   run.target = target;
   run.backend = backend.name();
   if (std::string missing = backend.missing(); !missing.empty()) {
     run.not_executed = std::move(missing);
-    return run;
+    return pending;
   }
   if (std::string lacking = backend.not_executed(entry, target); !lacking.empty()) {
     run.not_executed = std::move(lacking);
-    return run;
+    return pending;
   }
   const TargetScenes& scenes = ctx.scenes.at(target);
   auto passes = backend.load(ctx.library, entry, target, scenes);
-  if (!passes) return passes.error();
+  if (!passes) {
+    run = failed_run(target, backend.name(), passes.error());
+    run.seconds = seconds_since(start);
+    return pending;
+  }
   run.device = backend.device();
   run.execution = passes->execution;
   run.executed = true;
-  run.pass = true;
   for (const SceneFixture& fixture : scenes.scenes) {
-    const auto start = Clock::now();
+    const auto scene_start = Clock::now();
     auto gpu = passes->run(fixture);
-    if (!gpu) return gpu.error();
+    if (!gpu) {
+      run = failed_run(target, backend.name(), gpu.error());
+      pending.outputs.clear();
+      break;
+    }
     if (gpu->own_depth_check) report.depth_checks.push_back(*gpu->own_depth_check);
-    auto scene =
-        gpu->chain
-            ? check_screen_blur_scene(ctx, *gpu, *gpu->chain, entry.variant, target, fixture)
-            : check_scene(ctx, gpu->visibility, gpu->texel_reads, entry.variant, target, fixture,
-                          gpu->own_linear_depth ? *gpu->own_linear_depth : fixture.linear_depth);
-    if (!scene) return scene.error();
-    scene->seconds = seconds_since(start);
-    run.pass = run.pass && scene->pass();
-    run.scenes.push_back(std::move(*scene));
+    pending.outputs.push_back(std::move(*gpu));
+    pending.device_seconds.push_back(seconds_since(scene_start));
   }
-  return run;
+  run.seconds = seconds_since(start);
+  pending.checked.resize(pending.outputs.size(), Result<SceneRun>(SceneRun{}));
+  pending.check_seconds.resize(pending.outputs.size(), 0.0);
+  return pending;
 }
 
 // Renders every scene with `target`'s depth pass (shared by all variants),
@@ -216,6 +164,19 @@ Preparers preparers(const Library& library, const VerifyOptions& options) {
   return first;
 }
 
+// The (variant, target) pairs verify runs: the progress's total.
+std::size_t pairs_in_shard(const Library& library, const VerifyOptions& options) {
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < library.variants.size(); ++i) {
+    const Variant& variant = library.variants[i].variant;
+    if (!wanted(options.variants, variant.name)) continue;
+    for (Target target : variant.targets) {
+      pairs += wanted(options.targets, target) && in_shard(options.shard, i, target) ? 1 : 0;
+    }
+  }
+  return pairs;
+}
+
 void count(VerifyReport& report, const TargetRun& run) {
   if (!run.executed) return;
   if (!run.error.empty()) {
@@ -278,49 +239,77 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   }
 
   const Preparers prepare_with = preparers(library, options);
-  for (std::size_t i = 0; i < library.variants.size(); ++i) {
-    const LibraryVariant& entry = library.variants[i];
-    if (!wanted(options.variants, entry.variant.name)) continue;
+  // The devices are driven from this thread; each (variant, target)'s checks
+  // go to the CPU workers meanwhile, and are gathered in order at the end.
+  struct PendingVariant {
+    std::size_t index;
+    std::vector<std::unique_ptr<PendingTarget>> targets;
+    std::vector<TargetRun> broken;  // runs of targets whose scenes could not be made
+    bool other_shards = false;      // some of its pairs are in other shards
+  };
+  std::vector<PendingVariant> pending;
+  ProgressCounter progress(options.progress, pairs_in_shard(library, options));
+  CpuWork work(options.jobs);
+  work.run([&] {
+    for (std::size_t i = 0; i < library.variants.size(); ++i) {
+      const LibraryVariant& entry = library.variants[i];
+      if (!wanted(options.variants, entry.variant.name)) continue;
+      PendingVariant& variant = pending.emplace_back(PendingVariant{i, {}, {}, false});
+      for (Target target : entry.variant.targets) {
+        if (!wanted(options.targets, target)) continue;
+        if (!in_shard(options.shard, i, target)) {
+          variant.other_shards = true;
+          continue;
+        }
+        if (!ctx.scenes.contains(target) && !ctx.broken_targets.contains(target)) {
+          // A depth pass that cannot run fails every run of its target, not verify.
+          const LibraryVariant& preparer = library.variants[prepare_with.depth.at(target)];
+          if (Status s = prepare_target(ctx, preparer, target, report); !s) {
+            ctx.broken_targets.emplace(target, s.error());
+          }
+        }
+        auto target_runs = std::make_unique<PendingTarget>();
+        target_runs->label = entry.variant.name + " [" + std::string(to_string(target)) + "]";
+        if (auto broken = ctx.broken_targets.find(target); broken != ctx.broken_targets.end()) {
+          // Reported once, on the path that prepares the scenes.
+          target_runs->runs.push_back(
+              {failed_run(target, ctx.backends.front()->name(), broken->second), {}, {}, {}, {}});
+          progress.finished(target_runs->label);
+          variant.targets.push_back(std::move(target_runs));
+          continue;
+        }
+        TargetScenes& scenes = ctx.scenes.at(target);
+        if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
+          const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(target)];
+          scenes.minmax = prepare_minmax(ctx, preparer, target, report);
+        }
+        for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+          if (!backend->executes(target) || !wanted(options.paths, backend->name())) continue;
+          target_runs->runs.push_back(run_on_device(ctx, *backend, entry, target, report));
+        }
+        target_runs->unchecked = scenes.scenes.size();
+        for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {
+          work.submit([&ctx, &runs = *target_runs, &entry, target, s, &fixture = scenes.scenes[s],
+                       &progress] {
+            check_scene_of_runs(runs, entry.variant, target, s, fixture, ctx.precision);
+            if (--runs.unchecked == 0) progress.finished(runs.label);
+          });
+        }
+        variant.targets.push_back(std::move(target_runs));
+      }
+    }
+    work.wait();
+  });
+  for (PendingVariant& variant : pending) {
+    const LibraryVariant& entry = library.variants[variant.index];
     VariantRun variant_run;
     variant_run.name = entry.variant.name;
     variant_run.technique = entry.variant.technique;
-    bool other_shards = false;  // some of its pairs are in other shards
-    for (Target target : entry.variant.targets) {
-      if (!wanted(options.targets, target)) continue;
-      if (!in_shard(options.shard, i, target)) {
-        other_shards = true;
-        continue;
-      }
-      if (!ctx.scenes.contains(target) && !ctx.broken_targets.contains(target)) {
-        // A depth pass that cannot run fails every run of its target, not verify.
-        const LibraryVariant& preparer = library.variants[prepare_with.depth.at(target)];
-        if (Status s = prepare_target(ctx, preparer, target, report); !s) {
-          ctx.broken_targets.emplace(target, s.error());
-        }
-      }
-      if (auto broken = ctx.broken_targets.find(target); broken != ctx.broken_targets.end()) {
-        // Reported once, on the path that prepares the scenes.
-        variant_run.runs.push_back(
-            failed_run(target, ctx.backends.front()->name(), broken->second));
-        count(report, variant_run.runs.back());
-        continue;
-      }
-      TargetScenes& scenes = ctx.scenes.at(target);
-      if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
-        const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(target)];
-        scenes.minmax = prepare_minmax(ctx, preparer, target, report);
-      }
-      for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-        if (!backend->executes(target) || !wanted(options.paths, backend->name())) continue;
-        const auto run_start = Clock::now();
-        auto run = run_on(ctx, *backend, entry, target, report);
-        variant_run.runs.push_back(run ? std::move(*run)
-                                       : failed_run(target, backend->name(), run.error()));
-        variant_run.runs.back().seconds = seconds_since(run_start);
-        count(report, variant_run.runs.back());
-      }
+    for (const std::unique_ptr<PendingTarget>& target_runs : variant.targets) {
+      finish_runs(*target_runs, variant_run);
     }
-    if (other_shards && variant_run.runs.empty()) continue;
+    for (const TargetRun& run : variant_run.runs) count(report, run);
+    if (variant.other_shards && variant_run.runs.empty()) continue;
     diagnostics({Severity::note, entry.variant.name, "verified"});
     report.variants.push_back(std::move(variant_run));
   }

@@ -399,7 +399,10 @@ Result<Library> parse_library(std::string_view text, const std::filesystem::path
 
 Result<std::vector<std::uint32_t>> read_spirv_file(const std::filesystem::path& path) {
   const Result<std::string> bytes = read_file(path);
-  if (!bytes) return make_error(Error::Kind::io, path.string(), "cannot open the SPIR-V file");
+  if (!bytes) {
+    return make_error(Error::Kind::io, path.string(),
+                      "cannot read the SPIR-V file (" + bytes.error().message + ")");
+  }
   const std::string& data = *bytes;
   if (data.size() < 20 || data.size() % 4 != 0) {
     return make_error(Error::Kind::bad_input, path.string(), "not a SPIR-V module (bad size)");

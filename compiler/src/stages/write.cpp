@@ -1,6 +1,5 @@
-#include <fstream>
-
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/support/file.hpp"
 #include "stages/stages.hpp"
 
 namespace penumbra {
@@ -10,7 +9,6 @@ Status WriteStage::process(ShaderJob& job) const {
   std::error_code ec;
   std::filesystem::create_directories(path.parent_path(), ec);
   if (ec) return make_error(Error::Kind::io, path.parent_path().string(), ec.message());
-  std::ofstream file(path, std::ios::binary);
   if (traits(job.target).is_text) {
     // GLSL ES requires #version to be the very first line: the banner follows it.
     std::string text = job.text;
@@ -20,16 +18,10 @@ Status WriteStage::process(ShaderJob& job) const {
       at = text.find('\n') + 1;
     }
     text.insert(at, "// " + job.banner() + "\n");
-    file << text;
-  } else {
-    file.write(reinterpret_cast<const char*>(job.spirv.data()),
-               static_cast<std::streamsize>(job.spirv.size() * sizeof(std::uint32_t)));
+    return write_file(path, text);
   }
-  file.close();
-  if (!file) {
-    return make_error(Error::Kind::io, path.string(), "could not write the shader file");
-  }
-  return {};
+  return write_file(path, {reinterpret_cast<const char*>(job.spirv.data()),
+                           job.spirv.size() * sizeof(std::uint32_t)});
 }
 
 }  // namespace penumbra

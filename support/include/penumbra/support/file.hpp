@@ -1,8 +1,9 @@
-// Reading a whole file.
+// Reading and writing a whole file.
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "penumbra/support/result.hpp"
 
@@ -13,5 +14,10 @@ namespace penumbra {
 // name), its message ending in the system's reason ("No such file or
 // directory").
 Result<std::string> read_file(const std::filesystem::path& path);
+
+// Creates or truncates `path` and writes `bytes`. An Error of kind io,
+// located at `path`, naming what failed and the system's reason ("cannot
+// create the file: Permission denied"); a file left half written is removed.
+Status write_file(const std::filesystem::path& path, std::string_view bytes);
 
 }  // namespace penumbra

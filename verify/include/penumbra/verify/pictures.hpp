@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "penumbra/reference/scene.hpp"
+#include "penumbra/verify/progress.hpp"
 #include "penumbra/verify/verify.hpp"
 
 namespace penumbra {
@@ -20,6 +21,8 @@ struct PictureOptions {
   bool wine = true;                   // also run the bytecode on Wine's d3d9, d3d10, d3d11
   BytecodeTranslator bytecode = {};   // the Direct3D bytecode path; none: not executed
   int timed_runs = 3;                 // runs of the passes timed; the fastest is reported
+  int jobs = 0;  // threads for the references and the sink, this one included; 0: every core
+  ProgressConsumer progress = {};  // told as each run is handed to the sink; none: nothing is
 };
 
 // A scene and the receivers to shade it at (u, v, z_r per pixel, the
@@ -31,6 +34,7 @@ struct PictureScene {
 
 // One variant on one target and path.
 struct PictureRun {
+  std::size_t order = 0;  // its place among the runs, in library order, from 0
   std::string variant;
   Technique technique = Technique::hard;
   Target target = Target::spirv;
@@ -50,10 +54,14 @@ struct PictureRun {
   double run_seconds = 0.0;  // the fastest timed run of the passes, read-back included
 };
 
+// Called from several threads at once (PictureOptions::jobs), in no set
+// order: PictureRun::order says where each run belongs.
 using PictureSink = std::function<Status(PictureRun&&)>;
 
-// Runs every wanted (variant, target, path) on `scene`, in library order,
-// and gives each to `sink`; stops at the first error the sink returns.
+// Runs every wanted (variant, target, path) on `scene`, the device's part
+// in library order on this thread, and gives each to `sink` with its
+// reference, computed on the CPU workers meanwhile. After an error the sink
+// returns, no more runs start; the error of the earliest run is returned.
 // Errors: bad_input for a variant the library lacks; a depth pass or
 // min-max mip that cannot be built fails the runs of its target, not the call.
 Status render_pictures(const Library& library, Engine& engine, const PictureScene& scene,

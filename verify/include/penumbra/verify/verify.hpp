@@ -11,6 +11,7 @@
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/support/shard.hpp"
+#include "penumbra/verify/progress.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 
@@ -36,6 +37,12 @@ struct VerifyOptions {
   // Only this shard's (variant, target) pairs: the library's i-th variant
   // (from 0) with kAllTargets' j-th target is in shard ((i + j) mod N) + 1.
   Shard shard = {};
+  // Threads for the CPU's part (the reference, the checks), the one that
+  // drives the devices included; 0 = every core. The results are the same
+  // whatever the count.
+  int jobs = 0;
+  // Told as each (variant, target)'s runs are checked; none: nothing is.
+  ProgressConsumer progress = {};
 };
 
 // A GPU image against the CPU's next step of screen_blur's chain run on the
@@ -91,8 +98,8 @@ struct DepthCheck {
   std::string scene;
   Target target = Target::spirv;
   std::string backend = "vulkan";  // the path whose map it is (verify.json's backend)
-  std::size_t texels = 0;      // texels whose centre is clear of every occluder edge
-  std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
+  std::size_t texels = 0;          // texels whose centre is clear of every occluder edge
+  std::size_t mismatched = 0;      // of those, |gpu - ray cast| > 1e-5 relative
   double max_abs_error = 0.0;
   bool pass = false;
   double seconds = 0.0;  // rendering and checking the map

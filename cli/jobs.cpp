@@ -1,0 +1,33 @@
+#include "jobs.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace penumbra::cli {
+
+void add_jobs_option(CLI::App* cmd, int& jobs) {
+  cmd->add_option("-j,--jobs", jobs,
+                  "Threads for the CPU reference, the checks and the pictures, and for Mesa's "
+                  "software rasterizers (LP_NUM_THREADS, unless set); default: every core. "
+                  "Results are the same for every N")
+      ->check(CLI::PositiveNumber);
+}
+
+void limit_software_rasterizers(int jobs) {
+  if (jobs < 1) return;
+  // Not overwritten: a user's own setting wins.
+  setenv("LP_NUM_THREADS", std::to_string(jobs).c_str(), 0);
+}
+
+ProgressConsumer stderr_progress(bool quiet) {
+  if (quiet) return {};
+  return [](const Progress& p) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f s", p.seconds);
+    std::cerr << "[" << p.done << "/" << p.total << "] " << seconds << " " << p.unit << "\n";
+  };
+}
+
+}  // namespace penumbra::cli

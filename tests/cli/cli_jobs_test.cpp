@@ -1,0 +1,130 @@
+// `penumbra verify` and `penumbra report` with --jobs: the same results for
+// every N (verify.json less its timings, the report's files less run_ms),
+// progress on stderr as each unit finishes, and none with -q.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "cli_harness.hpp"
+#include "penumbra/support/file.hpp"
+
+namespace penumbra::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+// A map-only technique, a mip one, screen_blur's chain, PCSS; a text target
+// with the GL path and a Direct3D one with its bytecode and runtime paths
+// (which draw their own maps: their references are their own).
+constexpr const char* kManifest = R"({
+  "schema": 1,
+  "targets": ["spirv", "glsl330", "hlsl_dx9"],
+  "sets": [
+    {"technique": ["hard"]},
+    {"technique": ["pcss"], "blocker_samples": [16], "pcf_samples": [16], "disk": ["whitepaper16"]},
+    {"technique": ["backprojection"]},
+    {"technique": ["screen_blur"], "blur_radius": [2]}
+  ]})";
+constexpr std::size_t kPairs = 4 * 3;        // (variant, target) pairs verify checks
+constexpr std::size_t kPictureRuns = 4 * 6;  // paths: spirv 1, glsl330 2, hlsl_dx9 3
+
+// `json` without the members named `key`, at any depth.
+nlohmann::json without(nlohmann::json json, const std::string& key) {
+  if (json.is_object()) {
+    json.erase(key);
+    for (auto& [name, value] : json.items()) value = without(value, key);
+  } else if (json.is_array()) {
+    for (auto& value : json) value = without(value, key);
+  }
+  return json;
+}
+
+// The progress lines "[done/total] seconds s unit" of `err`, as "done/total".
+std::vector<std::string> progress(const std::string& err) {
+  std::vector<std::string> lines;
+  const std::regex line(R"(^\[(\d+/\d+)\] \d+\.\d s \S.*$)");
+  std::istringstream in(err);
+  for (std::string text; std::getline(in, text);) {
+    std::smatch m;
+    if (std::regex_match(text, m, line)) lines.push_back(m[1]);
+  }
+  return lines;
+}
+
+std::vector<std::string> counted(std::size_t total) {
+  std::vector<std::string> lines;
+  for (std::size_t i = 1; i <= total; ++i) {
+    lines.push_back(std::to_string(i) + "/" + std::to_string(total));
+  }
+  return lines;
+}
+
+class Jobs : public EvalFixture {
+ protected:
+  static void SetUpTestSuite() { set_up_eval("jobs", kManifest); }
+  static void TearDownTestSuite() { tear_down_eval(); }
+
+  static nlohmann::json verify_json() {
+    auto text = read_file(lib() / "verify.json");
+    EXPECT_TRUE(text.ok());
+    return text ? without(nlohmann::json::parse(*text), "seconds") : nlohmann::json();
+  }
+};
+
+TEST_F(Jobs, VerifyGivesTheSameResultsForAnyNumberOfJobs) {
+  const CliRun one = run_penumbra("verify '" + lib().string() + "' --jobs 1");
+  ASSERT_EQ(one.exit_code, 0) << one.out << one.err;
+  const nlohmann::json serial = verify_json();
+  EXPECT_EQ(progress(one.err), counted(kPairs)) << one.err;
+
+  const CliRun many = run_penumbra("verify '" + lib().string() + "' -j 3");
+  ASSERT_EQ(many.exit_code, 0) << many.out << many.err;
+  EXPECT_EQ(verify_json(), serial);
+  EXPECT_EQ(many.out, one.out);  // every check's line, in the same order
+  EXPECT_EQ(progress(many.err), counted(kPairs)) << many.err;
+
+  const CliRun quiet = run_penumbra("verify '" + lib().string() + "' -q");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.out << quiet.err;
+  EXPECT_EQ(verify_json(), serial);
+  EXPECT_THAT(quiet.err, Not(HasSubstr("[1/")));
+  EXPECT_THAT(quiet.out, Not(HasSubstr("PASS")));
+  EXPECT_THAT(quiet.out, HasSubstr(" passed, 0 failed\n"));
+}
+
+TEST_F(Jobs, ReportWritesTheSameFilesForAnyNumberOfJobs) {
+  const CliRun one =
+      run_penumbra("report '" + lib().string() + "' --jobs 1 -o " + path("report-1"));
+  ASSERT_EQ(one.exit_code, 0) << one.out << one.err;
+  EXPECT_EQ(progress(one.err), counted(kPictureRuns)) << one.err;
+  const CliRun many = run_penumbra("report '" + lib().string() + "' -j 3 -o " + path("report-3"));
+  ASSERT_EQ(many.exit_code, 0) << many.out << many.err;
+  EXPECT_THAT(many.err, Not(HasSubstr("Warning"))) << "more jobs than cores are not an error";
+  EXPECT_EQ(progress(many.err), counted(kPictureRuns)) << many.err;
+
+  // run_ms is the wall time of each run's passes: the one thing that differs.
+  const auto timeless = [](std::map<std::string, std::string> tree) {
+    const std::regex run_ms("\"run_ms\":[-+.0-9eE]+,?");
+    tree.at("report.json") =
+        without(nlohmann::json::parse(tree.at("report.json")), "run_ms").dump();
+    tree.at("index.html") = std::regex_replace(tree.at("index.html"), run_ms, "");
+    return tree;
+  };
+  const auto serial = timeless(read_tree(dir_->path() / "report-1"));
+  const auto parallel = timeless(read_tree(dir_->path() / "report-3"));
+  ASSERT_EQ(parallel.size(), serial.size());
+  for (const auto& [name, bytes] : serial) {
+    ASSERT_TRUE(parallel.contains(name)) << name;
+    EXPECT_TRUE(parallel.at(name) == bytes) << name << " differs";
+  }
+
+  const CliRun quiet = run_penumbra("report '" + lib().string() + "' -q -o " + path("report-q"));
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.out << quiet.err;
+  EXPECT_TRUE(progress(quiet.err).empty()) << quiet.err;
+}
+
+}  // namespace
+}  // namespace penumbra::testing

@@ -1,0 +1,40 @@
+// CPU work handed off by the thread that drives the devices: the reference
+// and the checks (verify), the pictures' figures and files (report). The
+// engines are driven from one thread; what they return is checked on the
+// other cores meanwhile (oneTBB), so the device and the CPU overlap.
+#pragma once
+
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
+#include <functional>
+#include <semaphore>
+
+namespace penumbra {
+
+class CpuWork {
+ public:
+  // At most `jobs` threads (0: every core), the caller's included: with 1,
+  // each job runs at once in submit(), on the caller's thread.
+  explicit CpuWork(int jobs);
+  ~CpuWork();  // waits for every job
+  CpuWork(const CpuWork&) = delete;
+  CpuWork& operator=(const CpuWork&) = delete;
+
+  // Runs `body` (the device loop) with this work's thread limit applying to
+  // every parallel loop it starts, the reference's included.
+  void run(const std::function<void()>& body);
+  // Queues `job`, which must not throw. Blocks while 2 x jobs are queued or
+  // running, so that what waits for the CPU does not pile up in memory.
+  void submit(std::function<void()> job);
+  // Helps with, and waits for, every job submitted.
+  void wait();
+
+ private:
+  int jobs_;
+  tbb::task_arena arena_;
+  tbb::task_group group_;
+  std::counting_semaphore<> slots_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,101 @@
+#include "scene_checks.hpp"
+
+#include "chain_check.hpp"
+#include "penumbra/reference/screen_blur.hpp"
+#include "penumbra/reference/techniques.hpp"
+
+namespace penumbra {
+namespace {
+
+// The query's visibility against `expected` (screen_blur: the factor).
+Result<SceneRun> check_scene(const SceneOutput& gpu, const reference::ReferenceImage& expected,
+                             const Variant& variant, const SceneFixture& fixture,
+                             const reference::SamplingPrecision& precision) {
+  PENUMBRA_TRY_ASSIGN(auto comparison,
+                      reference::compare(gpu.visibility, expected.visibility, expected.ambiguous,
+                                         reference::tolerance(variant.technique, precision)));
+  double reads = 0.0;
+  for (float r : gpu.texel_reads.data) reads += r;
+  SceneRun scene{fixture.scene.name, comparison,
+                 reads / static_cast<double>(gpu.texel_reads.pixel_count()), std::nullopt,
+                 std::nullopt};
+  if (!gpu.chain) return scene;
+  // screen_blur's chain checked step by step, so that one ambiguous point
+  // compare in the factor does not spread through the blur: each later pass
+  // against the CPU's step applied to the GPU's own input to it.
+  const ChainOutput& chain = *gpu.chain;
+  PENUMBRA_TRY_ASSIGN(
+      scene.blur,
+      check_chain(chain.blurred, reference::screen_blur(variant, gpu.visibility, fixture.receivers),
+                  reference::kBlurTolerance, "the blurred factor"));
+  PENUMBRA_TRY_ASSIGN(
+      scene.composite,
+      check_chain(chain.composite, reference::composite(fixture.colour, chain.blurred),
+                  reference::kCompositeTolerance, "the composite"));
+  return scene;
+}
+
+}  // namespace
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+TargetRun failed_run(Target target, std::string backend, const Error& error) {
+  TargetRun run;
+  run.target = target;
+  run.backend = std::move(backend);
+  run.executed = true;
+  run.error = error.to_string();
+  return run;
+}
+
+void check_scene_of_runs(PendingTarget& target_runs, const Variant& variant, Target target,
+                         std::size_t s, const SceneFixture& fixture,
+                         const reference::SamplingPrecision& precision) {
+  const auto reference_on = [&](const FloatImage& linear_depth) {
+    return reference::evaluate_image(variant, linear_depth, fixture.scene.light, fixture.receivers,
+                                     precision, reference::shader_limits(target));
+  };
+  std::optional<Result<reference::ReferenceImage>> on_fixture;
+  for (PendingRun& pending : target_runs.runs) {
+    if (pending.outputs.empty()) continue;
+    const auto start = Clock::now();
+    const SceneOutput& gpu = pending.outputs[s];
+    std::optional<Result<reference::ReferenceImage>> own;
+    if (gpu.own_linear_depth) {
+      own = reference_on(*gpu.own_linear_depth);
+    } else if (!on_fixture) {
+      on_fixture = reference_on(fixture.linear_depth);
+    }
+    const Result<reference::ReferenceImage>& expected = own ? *own : *on_fixture;
+    pending.checked[s] = expected ? check_scene(gpu, *expected, variant, fixture, precision)
+                                  : Result<SceneRun>(expected.error());
+    pending.check_seconds[s] = seconds_since(start);
+    if (pending.checked[s]) {
+      pending.checked[s]->seconds = pending.device_seconds[s] + pending.check_seconds[s];
+    }
+  }
+}
+
+void finish_runs(PendingTarget& target_runs, VariantRun& variant_run) {
+  for (PendingRun& pending : target_runs.runs) {
+    TargetRun& run = pending.run;
+    if (!pending.outputs.empty()) run.pass = true;
+    for (std::size_t s = 0; s < pending.checked.size(); ++s) {
+      Result<SceneRun>& scene = pending.checked[s];
+      run.seconds += pending.check_seconds[s];
+      if (!scene) {
+        const double seconds = run.seconds;
+        run = failed_run(run.target, run.backend, scene.error());
+        run.seconds = seconds;
+        break;
+      }
+      run.pass = run.pass && scene->pass();
+      run.scenes.push_back(std::move(*scene));
+    }
+    variant_run.runs.push_back(std::move(run));
+  }
+}
+
+}  // namespace penumbra
