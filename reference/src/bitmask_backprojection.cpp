@@ -57,10 +57,10 @@ class LightSamples {
     // their float error in those units (shared edges: none on the sure side).
     const double scale = double(side_) * side_ / (2.0 * half_);
     auto unit = [&](double edge) { return (edge + half_) * scale - 0.5; };
-    auto error = [&](double edge) {
-      return projector.edge_error(edge, z) * scale + 1e-6 * (std::abs(unit(edge)) + 1.0);
+    auto error = [&](double edge, int axis) {
+      return projector.edge_error(edge, z, axis) * scale + 1e-6 * (std::abs(unit(edge)) + 1.0);
     };
-    const double e[4] = {error(r.x0), error(r.y0), error(r.x1), error(r.y1)};
+    const double e[4] = {error(r.x0, 0), error(r.y0, 1), error(r.x1, 0), error(r.y1, 1)};
     const double t[4] = {unit(r.x0), unit(r.y0), unit(r.x1), unit(r.y1)};
     const double maybe[4] = {t[0] - e[0], t[1] - e[1], t[2] + e[2], t[3] + e[3]};
     const double sure[4] = {t[0] + (shared.x0 ? 0.0 : e[0]), t[1] + (shared.y0 ? 0.0 : e[1]),
