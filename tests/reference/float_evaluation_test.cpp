@@ -169,7 +169,9 @@ class Emulation {
     float t[4];
     for (int k = 0; k < 4; ++k) {
       const bool fused = k < 2 ? e_.t_fma_lo : e_.t_fma_hi;
-      t[k] = fused ? std::fma(rect[k] + half_, s, -0.5f) : (rect[k] + half_) * s - 0.5f;
+      // Less half a unit and BITMASK_EDGE_MARGIN (1 / 16) outwards.
+      const float offset = k < 2 ? 0.5f + 0.0625f : 0.5f - 0.0625f;
+      t[k] = fused ? std::fma(rect[k] + half_, s, -offset) : (rect[k] + half_) * s - offset;
     }
     const int first_row = int(std::clamp(std::ceil((t[1] - (g - 1.0f)) / g), 0.0f, g));
     const int last_row = int(std::clamp(std::floor(t[3] / g), -1.0f, g - 1.0f));
@@ -328,7 +330,9 @@ TEST_P(ShaderFloatEvaluation, EveryDifferenceOnTiltedOverlapIsAmbiguousOrWithinT
 }
 
 INSTANTIATE_TEST_SUITE_P(Backprojections, ShaderFloatEvaluation,
-                         ::testing::Values(Case{testing::backprojection_variant()}),
+                         ::testing::Values(Case{testing::backprojection_variant()},
+                                           Case{testing::bitmask_backprojection_variant(64)},
+                                           Case{testing::bitmask_backprojection_variant(1024)}),
                          [](const ::testing::TestParamInfo<Case>& param) {
                            return param.param.variant.name;
                          });
