@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "backprojection_walk.hpp"
 #include "penumbra/reference/sampling.hpp"
 #include "technique_parts.hpp"
 
@@ -74,6 +76,22 @@ double backprojection_visibility(double area, const LightParams& light) {
 
 namespace detail {
 
+bool area_edges_close(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
+                      const Query& q, const TexelRect& window, const VariantKeys& keys, int steps) {
+  const Projector projector(map, light, q);
+  const double whole = 4.0 * projector.half() * projector.half();
+  double area = 0.0, error = 0.0;
+  walk_backprojection(
+      map, mip, projector, occluder_limit(light, q), window, keys, steps,
+      [&](const TexelRect& texels, double z) {
+        const PlaneRect r = projector.project(texels, z);
+        area += overlap(r.x0, r.x1, projector.half()) * overlap(r.y0, r.y1, projector.half());
+        error += projector.area_error(r, z);
+      },
+      [&] { return area >= whole; });
+  return error > kBackprojectionEdgeBudget * whole;
+}
+
 Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                       const Query& q, const VariantKeys& keys, std::optional<int> capped_steps) {
   const MinMax top = mip.node(mip.top_level(), 0, 0);
@@ -82,7 +100,12 @@ Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const Ligh
   if (capped_steps && !window.empty()) {
     return backprojection_capped(map, mip, light, q, window, keys, *capped_steps);
   }
-  return {backprojection_visibility(backprojected_area(map, light, q, window), light)};
+  // The GPU's walk hands over flat nodes: their edges, not the texels', are
+  // the ones float32 may move.
+  const bool close = !window.empty() && area_edges_close(map, mip, light, q, window, keys,
+                                                         std::numeric_limits<int>::max());
+  return {backprojection_visibility(backprojected_area(map, light, q, window), light),
+          ambiguous_if(close, Ambiguity::area_edges)};
 }
 
 }  // namespace detail

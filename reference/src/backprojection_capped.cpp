@@ -39,10 +39,11 @@ Sample backprojection_capped(const ShadowMapView& map, const MinMaxMip& mip,
   const Projector projector(map, light, q);
   const double whole = 4.0 * projector.half() * projector.half();
   const float limit = occluder_limit(light, q);
-  double area = 0.0;
+  double area = 0.0, error = 0.0;
   auto add = [&](const TexelRect& texels, double z, double share) {
     const PlaneRect r = projector.project(texels, z);
     area += share * overlap(r.x0, r.x1, projector.half()) * overlap(r.y0, r.y1, projector.half());
+    error += share * projector.area_error(r, z);
   };
   // The min-max walk finishes coarse: a node it cannot refine counts as one
   // patch at its min depth, whole where every texel occludes and half where
@@ -57,8 +58,10 @@ Sample backprojection_capped(const ShadowMapView& map, const MinMaxMip& mip,
   // A decision too close to call changes the result only through the steps
   // it costs, so only where the steps ran short.
   const bool close = end.close || window_edges_close(map, mip, light, q);
+  // The patches' edges, as in the uncapped walk (area_edges_close()).
   return {backprojection_visibility(area, light),
-          ambiguous_if(close && (end.truncated || end.coarse), Ambiguity::walk_decision)};
+          ambiguous_if(close && (end.truncated || end.coarse), Ambiguity::walk_decision) |
+              ambiguous_if(error > kBackprojectionEdgeBudget * whole, Ambiguity::area_edges)};
 }
 
 }  // namespace penumbra::reference::detail

@@ -41,11 +41,41 @@ class Projector {
     return {slope(texels.x0, map_.width(), q_.u), slope(texels.y0, map_.height(), q_.v),
             slope(texels.x1 + 1, map_.width(), q_.u), slope(texels.y1 + 1, map_.height(), q_.v)};
   }
-  // How far float32 may put an edge of a patch at depth z: a few ulps of
-  // the slopes it subtracts, scaled by g(z), and of the edge itself.
-  double edge_error(double edge, double z) const {
-    const double slopes = (0.5 + std::abs(q_.u - 0.5) + std::abs(q_.v - 0.5)) * to_slope_;
-    return 2.5e-7 * (std::abs(edge) + half_ + slopes * gain(z));
+  // How far float32 may put an edge of a patch at depth z along `axis` (0:
+  // X from u, 1: Y from v) under any evaluation GLSL allows where nothing is
+  // `precise` (GLSL 3.30 and ESSL 3.00 have no `precise`): a * b + c fused or
+  // not, products and the quotient of g(z) regrouped, each division within
+  // 2.5 ulp, Fw / n evaluated apart for the receiver and the texels, and
+  // each site (the x0/y0 and x1/y1 lanes) choosing for itself. With
+  // u = 2^-24, m the texel's u - 0.5 and m_r the receiver's, to first
+  // order: the slope difference a - a_r errs by at most
+  // u Fw/n (2 |u_tex| + 7 |m| + 7 |m_r|) + u |a - a_r| (t TS rounded twice,
+  // each slope's subtraction, product and 2.5-ulp Fw / n), which is below
+  // u (Fw/n (1 + 16 |m_r|) + 10 |a - a_r|); g(z) errs relatively by 7u and
+  // the last product by u: 18u |edge| in all, rounded up to 20u for the
+  // higher orders. An edge two patches share is computed by both lanes, so
+  // their values may differ by both errors.
+  double edge_error(double edge, double z, int axis) const {
+    constexpr double u = 0x1p-24;
+    const double m_r = std::abs((axis == 0 ? q_.u : q_.v) - 0.5);
+    return u * (gain(z) * to_slope_ * (1.0 + 16.0 * m_r) + 20.0 * std::abs(edge));
+  }
+  // How far float32 may move the area of `r` (a patch at depth z) inside
+  // the light: each edge within its error of the light, moved by that
+  // error, times the other axis's widest span inside the light.
+  double area_error(const PlaneRect& r, double z) const {
+    const double e[4] = {edge_error(r.x0, z, 0), edge_error(r.y0, z, 1), edge_error(r.x1, z, 0),
+                         edge_error(r.y1, z, 1)};
+    auto reach = [&](double edge, double error) {
+      return std::abs(edge) < half_ + error ? error : 0.0;
+    };
+    auto span = [&](double lo, double hi) {
+      return std::max(0.0, std::min(hi, half_) - std::max(lo, -half_));
+    };
+    const double x = span(r.x0 - e[0], r.x1 + e[2]);
+    const double y = span(r.y0 - e[1], r.y1 + e[3]);
+    return (reach(r.x0, e[0]) + reach(r.x1, e[2])) * y +
+           (reach(r.y0, e[1]) + reach(r.y1, e[3])) * x;
   }
   // Whether it reaches the light, and whether float32 might say otherwise.
   bool touches(const PlaneRect& r, bool& close) const {

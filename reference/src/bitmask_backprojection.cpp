@@ -5,10 +5,12 @@
 // in base G). A sample lies in a patch when it is within the patch's edges
 // on both axes; the shader decides that in float32, so where a sample lies
 // within an edge's float error its bit is undecided, and a receiver with an
-// undecided bit that no other patch surely sets is ambiguous. An edge shared
-// with occluding texels of the same depth is computed from the same
-// operands by both patches, so a sample near it is covered by one of the
-// two: there the sure side reaches the edge itself.
+// undecided bit that no other patch surely sets is ambiguous. The shader
+// widens every patch by BITMASK_EDGE_MARGIN (kEdgeMargin): an edge two
+// patches share is computed in the x0/y0 lane of one and the x1/y1 lane of
+// the other, which a compiler may evaluate differently where nothing is
+// `precise`, and overlapped by twice the margin one of them surely covers
+// a sample near it wherever its error is below the margin.
 #include <bit>
 #include <cstdint>
 #include <vector>
@@ -20,31 +22,8 @@
 namespace penumbra::reference::detail {
 namespace {
 
-// Which edges of a patch (x0, y0, x1, y1) the occluding texels beyond it,
-// at the same depth, share.
-struct SharedEdges {
-  bool x0 = false, y0 = false, x1 = false, y1 = false;
-};
-
-// Whether every texel of `strip` lies inside the map at depth z (as float).
-bool strip_at_depth(const ShadowMapView& map, const TexelRect& strip, double z) {
-  if (strip.x0 < 0 || strip.y0 < 0 || strip.x1 >= map.width() || strip.y1 >= map.height()) {
-    return false;
-  }
-  for (int j = strip.y0; j <= strip.y1; ++j) {
-    for (int i = strip.x0; i <= strip.x1; ++i) {
-      if (float(map.depth(i, j)) != float(z)) return false;
-    }
-  }
-  return true;
-}
-
-SharedEdges shared_edges(const ShadowMapView& map, const TexelRect& t, double z) {
-  return {strip_at_depth(map, {t.x0 - 1, t.y0, t.x0 - 1, t.y1}, z),
-          strip_at_depth(map, {t.x0, t.y0 - 1, t.x1, t.y0 - 1}, z),
-          strip_at_depth(map, {t.x1 + 1, t.y0, t.x1 + 1, t.y1}, z),
-          strip_at_depth(map, {t.x0, t.y1 + 1, t.x1, t.y1 + 1}, z)};
-}
+// The shader's BITMASK_EDGE_MARGIN, in units of 1 / N of the light's side.
+constexpr double kEdgeMargin = 0.0625;
 
 class LightSamples {
  public:
@@ -52,19 +31,21 @@ class LightSamples {
       : side_(side), half_(half), sure_(std::size_t(side), 0u), maybe_(std::size_t(side), 0u) {}
 
   // Sets the bits of the samples inside `r`, a patch at depth z.
-  void cover(const PlaneRect& r, const Projector& projector, double z, const SharedEdges& shared) {
+  void cover(const PlaneRect& r, const Projector& projector, double z) {
     // Edges in units of 1 / N of the light's side, less half a unit, and
-    // their float error in those units (shared edges: none on the sure side).
+    // their float error in those units: the edge's, and 1e-6 relative for
+    // (X + L) N / (2L) - 0.5 and the shader's division by G (about 13 ulp
+    // of a 2.5-ulp quotient, an fma or not).
     const double scale = double(side_) * side_ / (2.0 * half_);
     auto unit = [&](double edge) { return (edge + half_) * scale - 0.5; };
-    auto error = [&](double edge) {
-      return projector.edge_error(edge, z) * scale + 1e-6 * (std::abs(unit(edge)) + 1.0);
+    auto error = [&](double edge, int axis) {
+      return projector.edge_error(edge, z, axis) * scale + 1e-6 * (std::abs(unit(edge)) + 1.0);
     };
-    const double e[4] = {error(r.x0), error(r.y0), error(r.x1), error(r.y1)};
-    const double t[4] = {unit(r.x0), unit(r.y0), unit(r.x1), unit(r.y1)};
+    const double e[4] = {error(r.x0, 0), error(r.y0, 1), error(r.x1, 0), error(r.y1, 1)};
+    const double t[4] = {unit(r.x0) - kEdgeMargin, unit(r.y0) - kEdgeMargin,
+                         unit(r.x1) + kEdgeMargin, unit(r.y1) + kEdgeMargin};
     const double maybe[4] = {t[0] - e[0], t[1] - e[1], t[2] + e[2], t[3] + e[3]};
-    const double sure[4] = {t[0] + (shared.x0 ? 0.0 : e[0]), t[1] + (shared.y0 ? 0.0 : e[1]),
-                            t[2] - (shared.x1 ? 0.0 : e[2]), t[3] - (shared.y1 ? 0.0 : e[3])};
+    const double sure[4] = {t[0] + e[0], t[1] + e[1], t[2] - e[2], t[3] - e[3]};
     for (int row = 0; row < side_; ++row) {
       maybe_[std::size_t(row)] |= row_mask(maybe, row);
       // Counted as they are set, as the shader's state.set: covered() asks
@@ -120,11 +101,12 @@ Sample bitmask_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
   const WalkEnd end = walk_backprojection(
       map, mip, projector, limit, window, keys, steps,
       [&](const TexelRect& texels, double z) {
-        samples.cover(projector.project(texels, z), projector, z, shared_edges(map, texels, z));
+        samples.cover(projector.project(texels, z), projector, z);
       },
       [&] { return samples.full(); });
-  // A walk stopped short by its bound may not reach a shared edge's other
-  // patch, and where it stops depends on decisions too close to call.
+  // A walk stopped short by its bound may not reach the patch that would
+  // surely cover a sample, and where it stops depends on decisions too
+  // close to call.
   return {1.0 - double(samples.set()) / (side * side),
           ambiguous_if(samples.undecided(), Ambiguity::light_sample_edge) |
               ambiguous_if(end.truncated, Ambiguity::walk_truncated)};

@@ -42,6 +42,18 @@ Sample minmax_pcf(const ShadowMapView& map, const MinMaxMip& mip, const LightPar
 Sample backprojection(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                       const Query& q, const VariantKeys& keys, std::optional<int> capped_steps);
 
+// backprojection's tolerance (docs/verification.md, "Tolerances"): the
+// float32 error of its patches' edges where the receiver is not marked
+// (kBackprojectionEdgeBudget), and 1e-4 for the float32 sum of the areas.
+inline constexpr double kBackprojectionEdgeBudget = 2e-4;
+inline constexpr double kBackprojectionTolerance = kBackprojectionEdgeBudget + 1e-4;
+
+// Whether the float32 errors of the patch edges that backprojection's walk
+// over `window` (at most `steps` steps) hands over may move the visibility
+// by more than kBackprojectionEdgeBudget (Projector::area_error()).
+bool area_edges_close(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
+                      const Query& q, const TexelRect& window, const VariantKeys& keys, int steps);
+
 // The length of [lo, hi] inside [-half, half]: one axis of a projected
 // patch inside the light.
 double overlap(double lo, double hi, double half);

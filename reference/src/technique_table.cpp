@@ -120,7 +120,7 @@ constexpr TechniqueReference kReferences[] = {
        });
      },
      // Exact compares; only float32 sums of patch areas differ.
-     [](const SamplingPrecision&) { return 1e-4; }},
+     [](const SamplingPrecision&) { return kBackprojectionTolerance; }},
     {Technique::pcss_minmax, true, needs_pcf_disk,
      [](const ReceiverInputs& in) {
        bool seam = false;

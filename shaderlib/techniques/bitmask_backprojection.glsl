@@ -23,12 +23,23 @@ int bitmask_popcount(uint x) {
   return int((x * 0x01010101u) >> 24u);
 }
 
+// How far, in units of 1 / N of the light's side, each patch reaches past
+// its edges. Two patches that share an edge compute it in different lanes
+// (x1 of one, x0 of the other), which a compiler may evaluate differently
+// where nothing is `precise` (GLSL 3.30 and ESSL 3.00 have none); so
+// overlapped, a sample on the edge stays in one of them wherever the lanes
+// differ by less than the margin (docs/verification.md, "Evaluations a
+// compiler may choose"). A power of two: the offsets are exact.
+#define BITMASK_EDGE_MARGIN 0.0625
+
 // `state` with the bits of the samples inside a light-plane rectangle set.
 BackprojectionState backprojection_add(BackprojectionState state, vec4 rect) {
   // The rectangle in units of 1 / N of the light's side, less the samples'
-  // half unit: sample (c, r) sits at (c G + r, r G + c).
+  // half unit (sample (c, r) sits at (c G + r, r G + c)), widened by the
+  // margin.
   float g = float(LIGHT_GRID);
-  vec4 t = (rect + LIGHT_WORLD_SIZE) * (g * g / (2.0 * LIGHT_WORLD_SIZE)) - 0.5;
+  vec4 t = (rect + LIGHT_WORLD_SIZE) * (g * g / (2.0 * LIGHT_WORLD_SIZE)) -
+           vec4(vec2(0.5 + BITMASK_EDGE_MARGIN), vec2(0.5 - BITMASK_EDGE_MARGIN));
   // The rows with a sample whose y, r G + c, can lie in [t.y, t.w]; clamped
   // before the conversion: a far patch's index does not fit an int.
   int first_row = int(clamp(ceil((t.y - (g - 1.0)) / g), 0.0, g));

@@ -74,6 +74,10 @@ enum class Ambiguity : std::uint8_t {
   // receiver_plane: the depth slopes a GPU may derive give results further
   // apart than the tolerance.
   depth_slope = 64,
+  // backprojection: the float32 errors of its patches' edges inside the
+  // light (under any evaluation a compiler may choose) may move the
+  // visibility by more than 2e-4, all but 1e-4 of its tolerance.
+  area_edges = 128,
 };
 
 constexpr Ambiguity operator|(Ambiguity a, Ambiguity b) {
@@ -97,6 +101,7 @@ inline constexpr AmbiguityReason kAmbiguityReasons[] = {
     {Ambiguity::light_sample_edge, "a bitmask light sample at a patch edge"},
     {Ambiguity::walk_truncated, "a bitmask walk stopped short"},
     {Ambiguity::depth_slope, "receiver_plane's depth slopes disagree"},
+    {Ambiguity::area_edges, "backprojection's patch edges may move the area too far"},
 };
 
 // `reason` where `marked`, else none.

@@ -96,8 +96,8 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
 {
     vec3 param = query;
     limit = backprojection_limit(param);
-    vec2 _960 = minmax_top_node();
-    float map_min = _960.x;
+    vec2 _962 = minmax_top_node();
+    float map_min = _962.x;
     vec3 param_1 = query;
     float param_2 = map_min * params.sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -161,8 +161,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _377 = shadow_texel(param);
-        float depth = _377;
+        float _379 = shadow_texel(param);
+        float depth = _379;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -174,8 +174,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _569 = minmax_node(param, param_1);
-    return _569;
+    vec2 _571 = minmax_node(param, param_1);
+    return _571;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -203,17 +203,17 @@ vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slop
 
 bool backprojection_touches(vec4 rect)
 {
-    bool _719 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _730;
-    if (_719)
+    bool _721 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _732;
+    if (_721)
     {
-        _730 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _732 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _730 = _719;
+        _732 = _721;
     }
-    return _730;
+    return _732;
 }
 
 int bitmask_popcount(inout uint x)
@@ -227,7 +227,7 @@ int bitmask_popcount(inout uint x)
 BackprojectionState backprojection_add(inout BackprojectionState state, vec4 rect)
 {
     float g = 8.0;
-    vec4 t = ((rect + vec4(params.light.x)) * ((g * g) / (2.0 * params.light.x))) - vec4(0.5);
+    vec4 t = ((rect + vec4(params.light.x)) * ((g * g) / (2.0 * params.light.x))) - vec4(0.5625, 0.5625, 0.4375, 0.4375);
     int first_row = int(clamp(ceil((t.y - (g - 1.0)) / g), 0.0, g));
     int last_row = int(clamp(floor(t.w / g), -1.0, g - 1.0));
     SPIRV_CROSS_LOOP
@@ -246,8 +246,8 @@ BackprojectionState backprojection_add(inout BackprojectionState state, vec4 rec
         uint fresh = mask & (~state.rows[r]);
         state.rows[r] |= fresh;
         uint param = fresh;
-        int _354 = bitmask_popcount(param);
-        state.set += _354;
+        int _356 = bitmask_popcount(param);
+        state.set += _356;
     }
     return state;
 }
@@ -262,16 +262,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _592;
+    vec2 _594;
     if (root)
     {
-        _592 = cursor.first_root;
+        _594 = cursor.first_root;
     }
     else
     {
-        _592 = floor(cursor.node * 0.5) * 2.0;
+        _594 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _592;
+    vec2 first_sibling = _594;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -327,24 +327,24 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit, in
                 {
                     visits += 1.0;
                 }
-                bool _839 = !cursor.climbed;
-                bool _850;
-                if (_839)
+                bool _841 = !cursor.climbed;
+                bool _852;
+                if (_841)
                 {
                     MinmaxCursor param_2 = cursor;
                     vec4 param_3 = window;
                     vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _850 = !minmax_window_empty(param_4);
+                    _852 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _850 = _839;
+                    _852 = _841;
                 }
-                if (_850)
+                if (_852)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _856 = minmax_cursor_read(param_5);
-                    vec2 range = _856;
+                    vec2 _858 = minmax_cursor_read(param_5);
+                    vec2 range = _858;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     vec4 param_7 = texels;
@@ -356,24 +356,24 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit, in
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _891 = range.y < limit;
-                        bool _899;
-                        if (_891)
+                        bool _893 = range.y < limit;
+                        bool _901;
+                        if (_893)
                         {
-                            _899 = range.x == range.y;
+                            _901 = range.x == range.y;
                         }
                         else
                         {
-                            _899 = _891;
+                            _901 = _893;
                         }
-                        bool one_patch = _899;
+                        bool one_patch = _901;
                         descend = !one_patch;
                         if (one_patch)
                         {
                             BackprojectionState param_12 = state;
                             vec4 param_13 = rect;
-                            BackprojectionState _909 = backprojection_add(param_12, param_13);
-                            state = _909;
+                            BackprojectionState _911 = backprojection_add(param_12, param_13);
+                            state = _911;
                         }
                     }
                 }
@@ -404,16 +404,16 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _994 = shadow_compare_point(param, param_1);
-        return _994;
+        float _996 = shadow_compare_point(param, param_1);
+        return _996;
     }
     vec3 param_2 = query;
     float param_3;
     vec4 param_4;
-    bool _1002 = backprojection_start(param_2, param_3, param_4);
+    bool _1004 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     vec4 window = param_4;
-    if (!_1002)
+    if (!_1004)
     {
         return 1.0;
     }
@@ -428,8 +428,8 @@ float shadow_visibility(vec3 query)
     vec4 param_6 = window;
     float param_7 = limit;
     BackprojectionState param_8 = state;
-    BackprojectionState _1032 = backprojection_walk(param_5, param_6, param_7, param_8);
-    state = _1032;
+    BackprojectionState _1034 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1034;
     return 1.0 - (float(state.set) / 64.0);
 }
 
@@ -440,8 +440,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _1058 = shadow_visibility(param);
-    return _1058;
+    float _1060 = shadow_visibility(param);
+    return _1060;
 }
 
 void main()
@@ -450,8 +450,8 @@ void main()
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
     vec2 param_1 = floor(screen_uv * params.screen_size.xy);
-    float _1079 = receiver_visibility(param, param_1);
-    float visible = _1079;
+    float _1081 = receiver_visibility(param, param_1);
+    float visible = _1081;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -94,8 +94,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _960 = minmax_top_node();
-    float map_min = _960.x;
+    float2 _962 = minmax_top_node();
+    float map_min = _962.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -159,8 +159,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _377 = shadow_texel(param);
-        float depth = _377;
+        float _379 = shadow_texel(param);
+        float depth = _379;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -172,8 +172,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _569 = minmax_node(param, param_1);
-    return _569;
+    float2 _571 = minmax_node(param, param_1);
+    return _571;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -201,19 +201,19 @@ float4 backprojection_project(float4 texels, float z, float3 query, float2 recei
 
 bool backprojection_touches(float4 rect)
 {
-    float2 _717 = params_light.x.xx;
-    bool _719 = all(bool2(rect.xy.x <= _717.x, rect.xy.y <= _717.y));
-    bool _730;
-    if (_719)
+    float2 _719 = params_light.x.xx;
+    bool _721 = all(bool2(rect.xy.x <= _719.x, rect.xy.y <= _719.y));
+    bool _732;
+    if (_721)
     {
-        float2 _727 = (-params_light.x).xx;
-        _730 = all(bool2(rect.zw.x >= _727.x, rect.zw.y >= _727.y));
+        float2 _729 = (-params_light.x).xx;
+        _732 = all(bool2(rect.zw.x >= _729.x, rect.zw.y >= _729.y));
     }
     else
     {
-        _730 = _719;
+        _732 = _721;
     }
-    return _730;
+    return _732;
 }
 
 int bitmask_popcount(inout uint x)
@@ -227,7 +227,7 @@ int bitmask_popcount(inout uint x)
 BackprojectionState backprojection_add(inout BackprojectionState state, float4 rect)
 {
     float g = 8.0f;
-    float4 t = ((rect + params_light.x.xxxx) * ((g * g) / (2.0f * params_light.x))) - 0.5f.xxxx;
+    float4 t = ((rect + params_light.x.xxxx) * ((g * g) / (2.0f * params_light.x))) - float4(0.5625f, 0.5625f, 0.4375f, 0.4375f);
     int first_row = int(clamp(ceil((t.y - (g - 1.0f)) / g), 0.0f, g));
     int last_row = int(clamp(floor(t.w / g), -1.0f, g - 1.0f));
     [loop]
@@ -246,8 +246,8 @@ BackprojectionState backprojection_add(inout BackprojectionState state, float4 r
         uint fresh = mask & (~state.rows[r]);
         state.rows[r] |= fresh;
         uint param = fresh;
-        int _354 = bitmask_popcount(param);
-        state.set += _354;
+        int _356 = bitmask_popcount(param);
+        state.set += _356;
     }
     return state;
 }
@@ -262,16 +262,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _592;
+    float2 _594;
     if (root)
     {
-        _592 = cursor.first_root;
+        _594 = cursor.first_root;
     }
     else
     {
-        _592 = floor(cursor.node * 0.5f) * 2.0f;
+        _594 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _592;
+    float2 first_sibling = _594;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -327,24 +327,24 @@ BackprojectionState backprojection_walk(float3 query, float4 window, float limit
                 {
                     visits += 1.0f;
                 }
-                bool _839 = !cursor.climbed;
-                bool _850;
-                if (_839)
+                bool _841 = !cursor.climbed;
+                bool _852;
+                if (_841)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _850 = !minmax_window_empty(param_4);
+                    _852 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _850 = _839;
+                    _852 = _841;
                 }
-                if (_850)
+                if (_852)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _856 = minmax_cursor_read(param_5);
-                    float2 range = _856;
+                    float2 _858 = minmax_cursor_read(param_5);
+                    float2 range = _858;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float4 param_7 = texels;
@@ -356,24 +356,24 @@ BackprojectionState backprojection_walk(float3 query, float4 window, float limit
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _891 = range.y < limit;
-                        bool _899;
-                        if (_891)
+                        bool _893 = range.y < limit;
+                        bool _901;
+                        if (_893)
                         {
-                            _899 = range.x == range.y;
+                            _901 = range.x == range.y;
                         }
                         else
                         {
-                            _899 = _891;
+                            _901 = _893;
                         }
-                        bool one_patch = _899;
+                        bool one_patch = _901;
                         descend = !one_patch;
                         if (one_patch)
                         {
                             BackprojectionState param_12 = state;
                             float4 param_13 = rect;
-                            BackprojectionState _909 = backprojection_add(param_12, param_13);
-                            state = _909;
+                            BackprojectionState _911 = backprojection_add(param_12, param_13);
+                            state = _911;
                         }
                     }
                 }
@@ -404,16 +404,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _994 = shadow_compare_point(param, param_1);
-        return _994;
+        float _996 = shadow_compare_point(param, param_1);
+        return _996;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _1002 = backprojection_start(param_2, param_3, param_4);
+    bool _1004 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_1002)
+    if (!_1004)
     {
         return 1.0f;
     }
@@ -428,8 +428,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     BackprojectionState param_8 = state;
-    BackprojectionState _1032 = backprojection_walk(param_5, param_6, param_7, param_8);
-    state = _1032;
+    BackprojectionState _1034 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1034;
     return 1.0f - (float(state.set) / 64.0f);
 }
 
@@ -440,8 +440,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _1058 = shadow_visibility(param);
-    return _1058;
+    float _1060 = shadow_visibility(param);
+    return _1060;
 }
 
 void frag_main()
@@ -450,8 +450,8 @@ void frag_main()
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _1079 = receiver_visibility(param, param_1);
-    float visible = _1079;
+    float _1081 = receiver_visibility(param, param_1);
+    float visible = _1081;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
