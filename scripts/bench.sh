@@ -15,6 +15,11 @@
 #                                     binds, against the uncapped walk, on busy
 #                                     maps and the report's stage
 #                                     (penumbra_bench_capped, CPU only)
+#   scripts/bench.sh gpu [ARGS]       every variant's GPU time on the report's
+#                                     stage (timestamp queries) beside its error,
+#                                     against the device's fetch-only texel rate
+#                                     (penumbra_bench_gpu; --device D, --size WxH,
+#                                     --variant V...)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,7 +27,7 @@ source scripts/lib/setup.sh
 
 bench=minmax
 if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy ||
-  $1 == capped) ]]; then
+  $1 == capped || $1 == gpu) ]]; then
   bench=$1
   shift
 fi
