@@ -85,7 +85,7 @@ Status run(const Args& args) {
 
   const LibraryVariant* like = nullptr;
   for (const LibraryVariant& v : library.variants) {
-    if (!like && reads_comparison_sampler(library, v)) like = &v;
+    if (!like && reads_comparison_sampler(v)) like = &v;
   }
   if (!like) {
     return make_error(Error::Kind::bad_input, "--variant",

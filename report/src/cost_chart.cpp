@@ -29,6 +29,7 @@ constexpr std::uint32_t kPalette[] = {0x4e79a7, 0xf28e2b, 0xe15759, 0x76b7b2, 0x
 constexpr std::uint32_t kInk = 0x1b1d21;
 constexpr std::uint32_t kGrid = 0xdddddd;
 constexpr std::uint32_t kFront = 0x1b1d21;
+constexpr std::uint32_t kLeader = 0xaaaaaa;
 
 std::string hex(std::uint32_t colour) {
   char text[8];
@@ -206,6 +207,59 @@ void disc(Picture& p, int cx, int cy, double radius, Rgb c) {
   }
 }
 
+// Where each front point's label goes (its box's top-left corner, in
+// pixels), so that labels of nearby points do not overlap: above right of
+// the point if free (of other labels and of the front's points), else to
+// its left, else moved up or down a line at a time; `moved` labels get a
+// leader line to their point.
+struct LabelPlace {
+  std::size_t point;
+  int x, top, width;
+  bool moved;
+};
+std::vector<LabelPlace> place_labels(const Panel& panel, const std::vector<CostPoint>& points,
+                                     const std::vector<std::size_t>& front) {
+  constexpr int kLine = kGlyphHeight + 3;
+  struct Box {
+    int x, top, width, height;
+  };
+  // The front's points are in the way too.
+  std::vector<Box> taken;
+  for (std::size_t i : front) {
+    taken.push_back(
+        {panel.x(cost_of(points[i], panel.axis)) - 6, panel.y(points[i].mae) - 6, 12, 12});
+  }
+  const auto fits = [&](const Box& b) {
+    if (b.x < panel.left + 4 || b.x + b.width > panel.left + kPanelWidth - 4 ||
+        b.top < kPlotTop - 8 || b.top + b.height > kPlotBottom) {
+      return false;
+    }
+    return std::none_of(taken.begin(), taken.end(), [&](const Box& o) {
+      return b.x < o.x + o.width + 3 && o.x < b.x + b.width + 3 && b.top < o.top + o.height &&
+             o.top < b.top + b.height;
+    });
+  };
+  std::vector<LabelPlace> placed;
+  for (std::size_t i : front) {
+    const int x = panel.x(cost_of(points[i], panel.axis)), y = panel.y(points[i].mae);
+    const int width = text_width(points[i].variant);
+    LabelPlace place{i, x + 8, y - 12, width, false};
+    bool found = false;
+    for (int step = 0; step <= 24 && !found; ++step) {
+      const int dy = (step + 1) / 2 * kLine * (step % 2 ? 1 : -1);
+      for (int left : {x + 8, x - 8 - width}) {
+        if (!found && fits({left, y - 12 + dy, width, kLine})) {
+          place = {i, left, y - 12 + dy, width, left < x || dy != 0};
+          found = true;
+        }
+      }
+    }
+    taken.push_back({place.x, place.top, width, kLine});
+    placed.push_back(place);
+  }
+  return placed;
+}
+
 void draw_panel(Picture& pic, const Panel& panel, const std::vector<CostPoint>& points,
                 const std::vector<std::pair<std::string, std::uint32_t>>& colours) {
   const Rgb ink = linear(kInk), grid = linear(kGrid);
@@ -239,9 +293,14 @@ void draw_panel(Picture& pic, const Panel& panel, const std::vector<CostPoint>& 
     if (on_front) disc(pic, x, y, kPointRadius + 2, linear(kFront));
     disc(pic, x, y, kPointRadius, linear(colour_of(colours, points[i].technique)));
   }
-  for (std::size_t i : front) {
-    const int x = panel.x(cost_of(points[i], panel.axis)), y = panel.y(points[i].mae);
-    draw_text(pic, x + 8, y - 12, points[i].variant, ink);
+  for (const LabelPlace& label : place_labels(panel, points, front)) {
+    const CostPoint& p = points[label.point];
+    if (label.moved) {
+      line(pic, panel.x(cost_of(p, panel.axis)), panel.y(p.mae),
+           label.x < panel.x(cost_of(p, panel.axis)) ? label.x + label.width : label.x - 2,
+           label.top + 4, linear(kLeader), 1);
+    }
+    draw_text(pic, label.x, label.top, p.variant, ink);
   }
 }
 
@@ -298,10 +357,16 @@ void svg_panel(std::string& svg, const Panel& panel, const std::vector<CostPoint
            (panel.axis == CostAxis::gpu_ms ? " ms" : " reads/px") + ", exact_penumbra_mae " +
            number(p.mae) + "</title></circle>\n";
   }
-  for (std::size_t i : front) {
-    svg += "<text class=\"point-label\" " +
-           at(panel.x(cost_of(points[i], panel.axis)) + 8, panel.y(points[i].mae) - 6) + ">" +
-           escaped(points[i].variant) + "</text>\n";
+  for (const LabelPlace& label : place_labels(panel, points, front)) {
+    const CostPoint& p = points[label.point];
+    const int x = panel.x(cost_of(p, panel.axis)), y = panel.y(p.mae);
+    if (label.moved) {
+      svg += "<line class=\"leader\" x1=\"" + std::to_string(x) + "\" y1=\"" + std::to_string(y) +
+             "\" x2=\"" + std::to_string(label.x < x ? label.x + label.width : label.x - 2) +
+             "\" y2=\"" + std::to_string(label.top + 4) + "\" stroke=\"" + hex(kLeader) + "\"/>\n";
+    }
+    svg += "<text class=\"point-label\" " + at(label.x, label.top + 8) + ">" + escaped(p.variant) +
+           "</text>\n";
   }
   svg += "</g>\n";
 }

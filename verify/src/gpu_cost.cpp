@@ -135,7 +135,7 @@ double gigatexels_per_second(double pixels, double reads_per_pixel, double ms) {
   return ms > 0.0 ? pixels * reads_per_pixel / (ms * 1e-3) * 1e-9 : 0.0;
 }
 
-bool reads_comparison_sampler(const Library& /*library*/, const LibraryVariant& entry) {
+bool reads_comparison_sampler(const LibraryVariant& entry) {
   const PassReflection* query = spirv_query(entry);
   return query && find_texture(query->frag, "shadow_cmp") && find_texture(query->frag, "receivers");
 }

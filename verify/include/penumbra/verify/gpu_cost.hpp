@@ -61,6 +61,6 @@ Result<FetchCeiling> measure_fetch_ceiling(const Library& library, Engine& engin
 
 // Whether `entry`'s spirv query pass samples the map through shadow_cmp
 // (a variant measure_fetch_ceiling can take its sampler state from).
-bool reads_comparison_sampler(const Library& library, const LibraryVariant& entry);
+bool reads_comparison_sampler(const LibraryVariant& entry);
 
 }  // namespace penumbra
