@@ -13,7 +13,6 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -63,19 +62,41 @@ nlohmann::json without(nlohmann::json json, const std::string& key) {
   return json;
 }
 
-// What must not depend on --jobs: every file of the report (report.json and
-// index.html less each run's run_ms), and verify.json less its seconds.
+// `text` less the part from `begin` to the end of the `end` after it.
+std::string cut(std::string text, const std::string& begin, const std::string& end) {
+  const std::size_t from = text.find(begin);
+  const std::size_t to = text.find(end, from);
+  if (from == std::string::npos || to == std::string::npos) return text;
+  return text.erase(from, to + end.size() - from);
+}
+
+// A report's JSON less what is timed: run_ms (wall time) and gpu_cost.
+std::string timeless(const std::string& json) {
+  nlohmann::json report = nlohmann::json::parse(json);
+  report.erase("gpu_cost");
+  return without(report, "run_ms").dump();
+}
+
+// What must not depend on --jobs: verify.json less its seconds, and every
+// file of the report less what is timed (run_ms, the GPU costs and the cost
+// chart drawn from them: cost_chart.png and its SVG in index.html).
 std::map<std::string, std::string> results(const fs::path& library, const fs::path& report) {
   std::map<std::string, std::string> files;
   files["verify.json"] =
       without(nlohmann::json::parse(read_text(library / "verify.json")), "seconds").dump();
-  const std::regex run_ms("\"run_ms\":[-+.0-9eE]+,?");
   for (const auto& entry : fs::recursive_directory_iterator(report)) {
     if (!entry.is_regular_file()) continue;
     const std::string name = entry.path().lexically_relative(report).string();
+    if (name == "cost_chart.png") continue;
     std::string text = read_text(entry.path());
-    if (name == "report.json") text = without(nlohmann::json::parse(text), "run_ms").dump();
-    if (name == "index.html") text = std::regex_replace(text, run_ms, "");
+    if (name == "report.json") text = timeless(text);
+    if (name == "index.html") {
+      text = cut(text, "<svg id=\"cost-chart\"", "</svg>");
+      const std::string data = "id=\"report-data\">";
+      const std::size_t from = text.find(data) + data.size();
+      const std::size_t to = text.find("</script>", from);
+      text.replace(from, to - from, timeless(text.substr(from, to - from)));
+    }
     files["report/" + name] = std::move(text);
   }
   return files;

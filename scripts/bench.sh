@@ -18,6 +18,11 @@
 #   scripts/bench.sh jobs [ARGS]      verify and report with --jobs 1 against
 #                                     --jobs N (every core), side by side, and
 #                                     their results compared (penumbra_bench_jobs)
+#   scripts/bench.sh gpu [ARGS]       every variant's GPU time on the report's
+#                                     stage (timestamp queries) beside its error,
+#                                     against the device's fetch-only texel rate
+#                                     (penumbra_bench_gpu; --device D, --size WxH,
+#                                     --variant V...)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,7 +30,7 @@ source scripts/lib/setup.sh
 
 bench=minmax
 if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy ||
-  $1 == capped || $1 == jobs) ]]; then
+  $1 == capped || $1 == jobs || $1 == gpu) ]]; then
   bench=$1
   shift
 fi

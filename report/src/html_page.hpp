@@ -5,9 +5,11 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 namespace penumbra::report {
 
-std::string html_page(const nlohmann::json& report);
+// `cost_chart_svg` is placed inline, as it is (cost_chart_svg()).
+std::string html_page(const nlohmann::json& report, std::string_view cost_chart_svg);
 
 }  // namespace penumbra::report

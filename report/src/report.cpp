@@ -12,11 +12,14 @@
 #include <optional>
 #include <tuple>
 
+#include "cost_chart.hpp"
+#include "gpu_costs.hpp"
 #include "html_page.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/reference/stage.hpp"
 #include "penumbra/report/figures.hpp"
 #include "penumbra/support/atomic_file.hpp"
+#include "pixel_font.hpp"
 #include "png_file.hpp"
 #include "shading.hpp"
 
@@ -95,13 +98,22 @@ class ReportWriter {
     return {};
   }
 
+  // The cost chart's GPU times, measured after the pictures.
+  void time_costs(Engine& engine, const ReportOptions& options,
+                  const DiagnosticConsumer& diagnostics) {
+    gpu_ = options.gpu_cost;
+    timed_ = report::time_variants(library_, engine, scene(), view_, exact_, options.pictures, gpu_,
+                                   diagnostics);
+  }
+
   Status finish(const Engine& engine) {
     const Picture truth = report::shade(view_, exact_);
     PENUMBRA_TRY(report::write_png(dir_ / "truth.png", truth));
-    std::vector<Picture> crops{report::crop_scaled(truth, kContactCrop, kContactScale)};
+    std::vector<Picture> crops{
+        report::labelled(report::crop_scaled(truth, kContactCrop, kContactScale), "exact")};
     nlohmann::json panels = nlohmann::json::array({{{"label", "exact area light"}}});
     for (const auto& [technique, panel] : best_) {
-      crops.push_back(panel.crop);
+      crops.push_back(report::labelled(panel.crop, panel.row["variant"].get<std::string>()));
       panels.push_back({{"label", to_string(technique)},
                         {"variant", panel.row["variant"]},
                         {"target", panel.row["target"]},
@@ -109,6 +121,9 @@ class ReportWriter {
                         {"exact_penumbra_mae", std::get<1>(panel.rank)}});
     }
     PENUMBRA_TRY(report::write_png(dir_ / "contact_sheet.png", report::side_by_side(crops, 4)));
+    std::vector<report::CostPoint> points;
+    for (const report::TimedVariant& t : timed_) points.push_back(t.point);
+    PENUMBRA_TRY(report::write_png(dir_ / "cost_chart.png", report::cost_chart_picture(points)));
     const report::Region measured = report::region(view_, exact_);
     nlohmann::json json = {
         {"generator", "penumbra " + std::string(penumbra_version())},
@@ -128,9 +143,11 @@ class ReportWriter {
          {{"image", "contact_sheet.png"},
           {"crop", {kContactCrop.x, kContactCrop.y, kContactCrop.width, kContactCrop.height}},
           {"panels", panels}}},
+        {"gpu_cost", report::to_json(timed_, gpu_)},
         {"rows", rows()}};
     PENUMBRA_TRY(write_file_atomic(dir_ / "report.json", json.dump(2) + "\n"));
-    return write_file_atomic(dir_ / "index.html", report::html_page(json));
+    return write_file_atomic(dir_ / "index.html",
+                             report::html_page(json, report::cost_chart_svg(points)));
   }
 
  private:
@@ -183,6 +200,8 @@ class ReportWriter {
   std::mutex mutex_;                            // guards rows_ and best_
   std::map<std::size_t, nlohmann::json> rows_;  // by PictureRun::order
   std::map<Technique, ContactPanel> best_;      // per technique, the run its panel shows
+  GpuCostOptions gpu_;
+  std::vector<report::TimedVariant> timed_;  // the cost chart's variants
 };
 
 }  // namespace
@@ -204,6 +223,8 @@ Status write_report(const Library& library, Engine& engine, const fs::path& dir,
   PENUMBRA_TRY(render_pictures(
       library, engine, scene, options.pictures,
       [&](PictureRun&& run) { return writer->add(std::move(run)); }, diagnostics));
+  // After the pictures, one variant at a time: no CPU work beside the timings.
+  writer->time_costs(engine, options, diagnostics);
   return writer->finish(engine);
 }
 

@@ -1,8 +1,9 @@
 // The report as a user gets it: `penumbra build` of the default library,
 // `penumbra report`, and the page opened in headless Chromium. The page must
 // render with no console message and no missing picture, show a row for
-// every (variant, target, path), link only to files that exist, and its
-// screenshot is kept as a test artifact. The CLI's refusals are checked on
+// every (variant, target, path), link only to files that exist, chart every
+// spirv variant's error against its GPU time and texel reads with the Pareto
+// front marked, and its screenshot is kept as a test artifact. The CLI's refusals are checked on
 // the same library.
 #include <gtest/gtest.h>
 #include <png.h>
@@ -188,6 +189,81 @@ TEST_F(ReportInBrowser, FiguresRankTheTechniquesAsThePapersDo) {
   }
   EXPECT_LT(mae.at("pcss_b16_p16_whitepaper16"), mae.at("pcf_poisson_p16_whitepaper16"));
   EXPECT_LT(mae.at("backprojection"), mae.at("pcss_b16_p16_whitepaper16"));
+}
+
+// The cost chart, inline SVG: per panel one point per timed variant, the
+// Pareto front (the points no other variant beats on both cost and error,
+// recomputed here from report.json) ringed, joined and labelled, and a
+// legend of the techniques; report.json holds the GPU times it plots.
+TEST_F(ReportInBrowser, ChartsErrorAgainstGpuTimeAndTexelReadsWithTheParetoFront) {
+  const nlohmann::json& timed = json_.at("gpu_cost").at("variants");
+  std::set<std::string> expected, names, techniques;
+  for (const Variant& variant : default_variants()) {
+    if (std::ranges::find(variant.targets, Target::spirv) != variant.targets.end()) {
+      expected.insert(variant.name);
+    }
+  }
+  for (const auto& v : timed) {
+    names.insert(v.at("variant").get<std::string>());
+    techniques.insert(v.at("technique").get<std::string>());
+    EXPECT_GT(v.at("query_ms").get<double>(), 0.0) << v.dump();
+    EXPECT_GT(v.at("depth_ms").get<double>(), 0.0) << v.dump();
+    EXPECT_DOUBLE_EQ(v.at("gpu_ms").get<double>(), v.at("depth_ms").get<double>() +
+                                                       v.at("mip_ms").get<double>() +
+                                                       v.at("query_ms").get<double>())
+        << v.dump();
+  }
+  EXPECT_EQ(names, expected);
+  EXPECT_GE(json_.at("gpu_cost").at("runs").get<int>(), 5);
+
+  const std::string page = dom();
+  const std::size_t chart = page.find("<svg id=\"cost-chart\"");
+  ASSERT_NE(chart, std::string::npos) << "no cost chart";
+  for (const char* axis : {"gpu_ms", "texel_reads"}) {
+    SCOPED_TRACE(axis);
+    const std::size_t begin = page.find(std::string("data-axis=\"") + axis + "\"", chart);
+    ASSERT_NE(begin, std::string::npos);
+    const std::string panel = page.substr(begin, page.find("</g>", begin) - begin);
+    const std::string key = std::string(axis) == "gpu_ms" ? "gpu_ms" : "texel_reads_per_pixel";
+    // A point is on the front unless another beats it (or equals it, first).
+    std::set<std::string> front;
+    for (std::size_t i = 0; i < timed.size(); ++i) {
+      const double cost = timed[i].at(key), error = timed[i].at("exact_penumbra_mae");
+      bool beaten = false;
+      for (std::size_t j = 0; j < timed.size() && !beaten; ++j) {
+        const double c = timed[j].at(key), e = timed[j].at("exact_penumbra_mae");
+        beaten = j != i && c <= cost && e <= error && (c < cost || e < error || j < i);
+      }
+      if (!beaten) front.insert(timed[i].at("variant").get<std::string>());
+    }
+    ASSERT_FALSE(front.empty());
+    std::set<std::string> points, marked;
+    const std::regex point(
+        R"re(<circle class="point( pareto)?" data-variant="([^"]+)" data-technique="([^"]+)")re");
+    for (std::sregex_iterator it(panel.begin(), panel.end(), point), end; it != end; ++it) {
+      EXPECT_TRUE(points.insert((*it)[2]).second) << "twice: " << (*it)[2];
+      if ((*it)[1].matched) marked.insert((*it)[2]);
+    }
+    EXPECT_EQ(points, names);
+    EXPECT_EQ(marked, front);
+    EXPECT_NE(panel.find("<polyline class=\"pareto-front\""), std::string::npos);
+    for (const std::string& name : front) {
+      EXPECT_TRUE(std::regex_search(
+          panel, std::regex("<text class=\"point-label\"[^>]*>" + name + "</text>")))
+          << name;
+    }
+  }
+  for (const std::string& technique : techniques) {
+    EXPECT_TRUE(std::regex_search(
+        page, std::regex("<text class=\"technique-label\"[^>]*>" + technique + "</text>")))
+        << technique;
+  }
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  const fs::path png = report_dir() / json_.at("gpu_cost").at("chart_image").get<std::string>();
+  ASSERT_NE(png_image_begin_read_from_file(&image, png.c_str()), 0) << png;
+  EXPECT_GT(image.width, 1000u);
+  png_image_free(&image);
 }
 
 // The view in the address's fragment: the rows shown are the filter's, in

@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cost_chart.hpp"
 #include "html_page.hpp"
 #include "penumbra/report/figures.hpp"
+#include "pixel_font.hpp"
 #include "shading.hpp"
 
 namespace penumbra::report {
@@ -118,12 +120,75 @@ TEST(Pictures, CropScalesAndPanelsSitSideBySide) {
 TEST(Page, EmbedsTheReportSoThatNoStringEndsTheScript) {
   const nlohmann::json report = {{"generator", "penumbra test"},
                                  {"rows", {{{"variant", "</script><b>x"}}}}};
-  const std::string page = html_page(report);
+  const std::string page = html_page(report, "<svg id=\"cost-chart\"></svg>");
   EXPECT_EQ(page.find("{{PENUMBRA_REPORT_DATA}}"), std::string::npos);
+  EXPECT_EQ(page.find("{{PENUMBRA_COST_CHART}}"), std::string::npos);
+  EXPECT_NE(page.find("<svg id=\"cost-chart\"></svg>"), std::string::npos);
   EXPECT_EQ(page.find("</script><b>"), std::string::npos);
   EXPECT_NE(page.find("<\\/script><b>x"), std::string::npos);
   // No asset from elsewhere: every reference stays in the report's folder.
   EXPECT_EQ(page.find("http"), std::string::npos);
+}
+
+// Four variants: b is beaten by a (cheaper and closer) on time, d is the
+// most exact; on reads c is cheapest.
+std::vector<CostPoint> four_costs() {
+  return {{"a", "pcf_grid", 1.0, 36.0, 0.05},
+          {"b", "pcf_grid", 2.0, 40.0, 0.06},
+          {"c", "pcss", 3.0, 20.0, 0.04},
+          {"d", "bitmask_backprojection", 9.0, 90.0, 0.01}};
+}
+
+TEST(CostChart, ParetoFrontIsWhatNothingBeatsOnBothCostAndError) {
+  const auto points = four_costs();
+  EXPECT_EQ(pareto_front(points, CostAxis::gpu_ms), (std::vector<std::size_t>{0, 2, 3}));
+  EXPECT_EQ(pareto_front(points, CostAxis::texel_reads), (std::vector<std::size_t>{2, 3}));
+  EXPECT_TRUE(pareto_front({}, CostAxis::gpu_ms).empty());
+}
+
+TEST(CostChart, SvgHasAPointPerVariantPerPanelTheFrontAndTheLabels) {
+  const std::string svg = cost_chart_svg(four_costs());
+  const auto count = [&](const std::string& text) {
+    std::size_t n = 0;
+    for (std::size_t at = svg.find(text); at != std::string::npos; at = svg.find(text, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(svg.rfind("<svg id=\"cost-chart\"", 0), 0u);
+  EXPECT_EQ(count("<g class=\"panel\""), 2u);
+  EXPECT_EQ(count("<circle class=\"point"), 8u);
+  EXPECT_EQ(count("<circle class=\"point pareto\""), 5u);  // 3 on time, 2 on reads
+  EXPECT_EQ(count("<polyline class=\"pareto-front\""), 2u);
+  EXPECT_EQ(count("<text class=\"point-label\""), 5u);
+  EXPECT_EQ(count("<text class=\"technique-label\""), 3u);
+  for (const char* technique : {"pcf_grid", "pcss", "bitmask_backprojection"}) {
+    EXPECT_NE(svg.find(std::string(">") + technique + "</text>"), std::string::npos) << technique;
+  }
+}
+
+TEST(CostChart, PictureIsDrawnWithEveryTechniquesColour) {
+  const Picture chart = cost_chart_picture(four_costs());
+  ASSERT_GT(chart.width, 0);
+  std::size_t white = 0, orange = 0;
+  for (std::size_t i = 0; i < chart.rgb.size(); i += 3) {
+    const auto r = chart.rgb[i], g = chart.rgb[i + 1], b = chart.rgb[i + 2];
+    white += r == 255 && g == 255 && b == 255;
+    orange += r == 0xf2 && g == 0x8e && b == 0x2b;  // the second technique's colour
+  }
+  EXPECT_GT(white, chart.rgb.size() / 6);  // mostly background
+  EXPECT_GT(orange, 20u);                  // pcss's points and legend swatch
+}
+
+TEST(PixelFont, LabelsAThumbnailOnADarkBand) {
+  Picture thumb(60, 30);
+  for (auto& byte : thumb.rgb) byte = 128;
+  const Picture out = labelled(thumb, "pcss_k1");
+  std::size_t lit = 0;
+  for (int y = 0; y < 13; ++y) {
+    for (int x = 0; x < out.width; ++x) lit += out.rgb[(std::size_t(y) * out.width + x) * 3] == 255;
+  }
+  EXPECT_GT(lit, 30u);                          // the letters
+  EXPECT_EQ(out.rgb[(20 * 60 + 30) * 3], 128);  // below the band, the picture
+  EXPECT_EQ(text_width("abc"), 17);
 }
 
 TEST(ReportDirectory, OnlyAReportOrNothingMayBeReplaced) {

@@ -37,7 +37,9 @@ Result<std::unique_ptr<ShadowMapImages>> render_depth(
   draw.target.depth_final = kMapDepthLayout;
   draw.target.next_stages = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
   draw.target.next_access = VK_ACCESS_SHADER_READ_BIT;
-  if (auto drawn = draw_pass(context, draw); !drawn) return drawn.error();
+  auto drawn = draw_pass(context, draw);
+  if (!drawn) return drawn.error();
+  (*images)->depth_gpu_ms = *drawn;
   return std::move(*images);
 }
 

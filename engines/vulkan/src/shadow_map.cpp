@@ -27,8 +27,8 @@ Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context&
                                   VK_IMAGE_ASPECT_COLOR_BIT};
   auto colour = vk::Image::create(*context.device, colour_desc, "the shadow map's colour image");
   if (!colour) return colour.error();
-  return std::unique_ptr<ShadowMapImages>(
-      new ShadowMapImages{context.device, std::move(*depth), std::move(*colour), std::nullopt});
+  return std::unique_ptr<ShadowMapImages>(new ShadowMapImages{
+      context.device, std::move(*depth), std::move(*colour), std::nullopt, std::nullopt});
 }
 
 }  // namespace detail
@@ -48,6 +48,10 @@ int ShadowMap::height() const {
 
 int ShadowMap::minmax_levels() const {
   return images_->minmax ? static_cast<int>(images_->minmax->sizes.size()) : 0;
+}
+
+std::optional<double> ShadowMap::depth_gpu_ms() const {
+  return images_->depth_gpu_ms;
 }
 
 }  // namespace penumbra

@@ -31,9 +31,10 @@ struct ShadowMapImages {
   // First, so it is released after both images. Also identifies the only
   // Context that may use them: the one with the same device.
   std::shared_ptr<const vk::Device> device;
-  vk::Image depth;                  // D32_SFLOAT
-  vk::Image colour;                 // R32_SFLOAT, the same values
-  std::optional<MinmaxMip> minmax;  // once built (Engine::build_minmax)
+  vk::Image depth;                     // D32_SFLOAT
+  vk::Image colour;                    // R32_SFLOAT, the same values
+  std::optional<MinmaxMip> minmax;     // once built (Engine::build_minmax)
+  std::optional<double> depth_gpu_ms;  // the depth pass that drew it, when timed
 };
 
 // Both images, uninitialized (layout UNDEFINED), usable as attachments,

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/verify/gpu_cost.hpp"
 #include "penumbra/verify/pictures.hpp"
 
 namespace penumbra {
@@ -16,10 +17,15 @@ struct ReportOptions {
   // Where the report's links to the library's files point from: the folder
   // the report will finally be in (it may be written elsewhere first).
   std::filesystem::path final_dir;
+  // How the cost chart's spirv variants are timed: fewer runs than the GPU
+  // benchmark's 21, as the report times every variant (on lavapipe some
+  // query passes take seconds).
+  GpuCostOptions gpu_cost{.runs = 5};
 };
 
 // Writes the report of `library` into `dir` (an existing empty folder):
-// index.html, report.json, truth.png, contact_sheet.png and images/.
+// index.html, report.json, truth.png, contact_sheet.png, cost_chart.png and
+// images/.
 // Errors: those of render_pictures and of writing the files.
 Status write_report(const Library& library, Engine& engine, const std::filesystem::path& dir,
                     const ReportOptions& options, const DiagnosticConsumer& diagnostics);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 namespace penumbra {
 
@@ -25,6 +26,9 @@ class ShadowMap {
   int height() const;
   // The min-max mip's levels (its top level N), or 0 when it has none.
   int minmax_levels() const;
+  // The GPU time of the depth pass that drew it (Engine::render_depth), from
+  // timestamp queries; absent for an uploaded map or without timestamps.
+  std::optional<double> depth_gpu_ms() const;
 
  private:
   friend class Engine;
