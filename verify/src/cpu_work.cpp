@@ -6,13 +6,11 @@
 
 namespace penumbra {
 
-// No more threads than TBB has: with fewer, a submit() blocked on a slot
-// could wait for a worker that does not exist.
+// No more threads than TBB has workers for: more would only queue.
 CpuWork::CpuWork(int jobs)
     : jobs_(jobs < 1 ? tbb::info::default_concurrency()
                      : std::min(jobs, tbb::info::default_concurrency())),
-      arena_(jobs_),
-      slots_(std::ptrdiff_t{2} * jobs_) {}
+      arena_(jobs_) {}
 
 CpuWork::~CpuWork() {
   wait();
@@ -22,20 +20,21 @@ void CpuWork::run(const std::function<void()>& body) {
   arena_.execute(body);
 }
 
+void CpuWork::run_one() {
+  std::function<void()> job;
+  if (waiting_.try_pop(job)) job();
+}
+
 void CpuWork::submit(std::function<void()> job) {
-  // With one job, no worker would ever take a queued job while the caller
-  // blocks on a slot: it runs here.
   if (jobs_ == 1) {
     job();
     return;
   }
-  slots_.acquire();
-  arena_.execute([&] {
-    group_.run([this, job = std::move(job)] {
-      job();
-      slots_.release();
-    });
-  });
+  // One task per job, each running whichever job is oldest: a job the
+  // caller ran itself leaves its task nothing to do.
+  waiting_.push(std::move(job));
+  arena_.execute([&] { group_.run([this] { run_one(); }); });
+  while (waiting_.unsafe_size() > std::size_t(2 * jobs_)) run_one();
 }
 
 void CpuWork::wait() {

@@ -4,11 +4,11 @@
 // other cores meanwhile (oneTBB), so the device and the CPU overlap.
 #pragma once
 
+#include <tbb/concurrent_queue.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <functional>
-#include <semaphore>
 
 namespace penumbra {
 
@@ -24,17 +24,22 @@ class CpuWork {
   // Runs `body` (the device loop) with this work's thread limit applying to
   // every parallel loop it starts, the reference's included.
   void run(const std::function<void()>& body);
-  // Queues `job`, which must not throw. Blocks while 2 x jobs are queued or
-  // running, so that what waits for the CPU does not pile up in memory.
+  // Queues `job`, which must not throw. While 2 x jobs wait, the caller
+  // runs waiting jobs itself instead of going ahead: what waits for the CPU
+  // does not pile up in memory, and no core idles while the CPU lags.
   void submit(std::function<void()> job);
   // Helps with, and waits for, every job submitted.
   void wait();
 
  private:
+  // Runs the oldest waiting job, if any: whoever takes it, a worker or the
+  // caller.
+  void run_one();
+
   int jobs_;
   tbb::task_arena arena_;
   tbb::task_group group_;
-  std::counting_semaphore<> slots_;
+  tbb::concurrent_queue<std::function<void()>> waiting_;
 };
 
 }  // namespace penumbra
