@@ -32,6 +32,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_child.hpp"
 #include "bench_files.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/library.hpp"
@@ -69,56 +70,9 @@ struct TempDir {
   }
 };
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// One finished child process.
-struct ChildRun {
-  int exit_code = -1;  // -1: ended by a signal
-  double seconds = 0.0;
-  long peak_rss_kb = 0;  // the child's own ru_maxrss
-  std::string output;    // stdout and stderr
-};
-
-// Runs argv[0] (a path) with `env`, its output into `log`, read back after.
-// wait4 blocks until it exits and gives its peak RSS; no polling, so the
-// benchmark adds no latency of its own to each process.
-Result<ChildRun> run_child(const std::vector<std::string>& argv, char* const* env,
-                           const std::filesystem::path& log) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  std::vector<char*> args;
-  for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-  args.push_back(nullptr);
-  const auto start = Clock::now();
-  pid_t pid = 0;
-  const int spawned = ::posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, args.data(), env);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) {
-    return make_error(Error::Kind::io, argv[0],
-                      std::string("cannot run: ") + std::strerror(spawned));
-  }
-  int status = 0;
-  rusage usage{};
-  while (::wait4(pid, &status, 0, &usage) < 0) {
-    if (errno != EINTR) {
-      return make_error(Error::Kind::io, argv[0], std::string("wait4: ") + std::strerror(errno));
-    }
-  }
-  ChildRun run;
-  run.seconds = seconds_since(start);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.peak_rss_kb = usage.ru_maxrss;
-  run.output = read_text(log);
-  return run;
-}
+using bench::ChildRun;
+using bench::read_text;
+using bench::run_child;
 
 // An environment for child processes: this one's, with `overrides`.
 class Environment {

@@ -2,7 +2,8 @@
 // --jobs 1 against --jobs N on the same library, side by side in one run
 // (alternating, so that a change in the machine's load falls on both), and
 // a check that every N gives the same results: verify.json and the report's
-// files, less their timings (verify's "seconds", report's "run_ms").
+// files, less their timings (verify's "seconds"; the report's "run_ms", GPU
+// costs and the cost chart drawn from them).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -10,16 +11,16 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "bench_child.hpp"
 #include "bench_files.hpp"
-#include "penumbra/support/process.hpp"
+
+extern char** environ;
 
 namespace penumbra {
 namespace {
@@ -43,13 +44,6 @@ const std::vector<std::string> kDefaultVariants = {"hard",
                                                    "pcss_minmax_p16_poisson",
                                                    "screen_blur_r4",
                                                    "bitmask_backprojection_bits256"};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // `json` without the members named `key`, at any depth.
 nlohmann::json without(nlohmann::json json, const std::string& key) {
@@ -83,12 +77,12 @@ std::string timeless(const std::string& json) {
 std::map<std::string, std::string> results(const fs::path& library, const fs::path& report) {
   std::map<std::string, std::string> files;
   files["verify.json"] =
-      without(nlohmann::json::parse(read_text(library / "verify.json")), "seconds").dump();
+      without(nlohmann::json::parse(bench::read_text(library / "verify.json")), "seconds").dump();
   for (const auto& entry : fs::recursive_directory_iterator(report)) {
     if (!entry.is_regular_file()) continue;
     const std::string name = entry.path().lexically_relative(report).string();
     if (name == "cost_chart.png") continue;
-    std::string text = read_text(entry.path());
+    std::string text = bench::read_text(entry.path());
     if (name == "report.json") text = timeless(text);
     if (name == "index.html") {
       text = cut(text, "<svg id=\"cost-chart\"", "</svg>");
@@ -102,16 +96,14 @@ std::map<std::string, std::string> results(const fs::path& library, const fs::pa
   return files;
 }
 
-Result<double> timed(const std::vector<std::string>& argv) {
-  const auto start = std::chrono::steady_clock::now();
-  PENUMBRA_TRY_ASSIGN(ProcessRun run, run_process(argv, std::chrono::hours(2)));
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// The seconds `argv` takes to exit, its output into `log`.
+Result<double> timed(const std::vector<std::string>& argv, const fs::path& log) {
+  PENUMBRA_TRY_ASSIGN(const bench::ChildRun run, bench::run_child(argv, environ, log));
   if (run.exit_code != 0) {
     return make_error(Error::Kind::io, argv[0] + " " + argv[1],
                       "exited with " + std::to_string(run.exit_code) + ":\n" + run.output);
   }
-  return seconds;
+  return run.seconds;
 }
 
 double median(std::vector<double> values) {
@@ -134,9 +126,11 @@ Status run(const Options& options) {
     }
   } cleanup{root};
   const fs::path library = root / "library";
+  const fs::path log = root / "child.log";  // each child's output, read back when it fails
+  fs::create_directories(root);
   PENUMBRA_TRY_ASSIGN(
       const double build_seconds,
-      timed({penumbra.string(), "build", manifest.string(), "-o", library.string()}));
+      timed({penumbra.string(), "build", manifest.string(), "-o", library.string()}, log));
   std::vector<std::string> selection;
   if (!options.all) {
     for (const std::string& v : options.variants.empty() ? kDefaultVariants : options.variants) {
@@ -149,7 +143,7 @@ Status run(const Options& options) {
   // (the page cache, Wine's prefix and its runtimes' first start).
   std::vector<std::string> warm_up = {penumbra.string(), "verify", library.string(), "-q"};
   warm_up.insert(warm_up.end(), selection.begin(), selection.end());
-  PENUMBRA_TRY_ASSIGN(const double warm_up_seconds, timed(warm_up));
+  PENUMBRA_TRY_ASSIGN(const double warm_up_seconds, timed(warm_up, log));
   std::printf(
       "%u cores; penumbra: %s (library built in %.1f s, an untimed verify took %.1f s); %s; "
       "--jobs 1 against --jobs %d, %d repeats\n",
@@ -169,8 +163,8 @@ Status run(const Options& options) {
           penumbra.string(), "report", library.string(), "-q", "--jobs", n, "-o", report.string()};
       verify.insert(verify.end(), selection.begin(), selection.end());
       picture.insert(picture.end(), selection.begin(), selection.end());
-      PENUMBRA_TRY_ASSIGN(seconds["verify"][j].emplace_back(), timed(verify));
-      PENUMBRA_TRY_ASSIGN(seconds["report"][j].emplace_back(), timed(picture));
+      PENUMBRA_TRY_ASSIGN(seconds["verify"][j].emplace_back(), timed(verify, log));
+      PENUMBRA_TRY_ASSIGN(seconds["report"][j].emplace_back(), timed(picture, log));
       auto files = results(library, report);
       if (!first) {
         first = std::move(files);
