@@ -21,6 +21,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -292,6 +293,11 @@ double emulate(const Emulation& emulation, const Variant& variant, const ShadowM
 struct Case {
   Variant variant;
 };
+
+// ctest's test list names the variant, not the struct's bytes.
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.variant.name;
+}
 
 class ShaderFloatEvaluation : public ::testing::TestWithParam<Case> {};
 
