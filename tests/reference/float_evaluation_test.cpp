@@ -1,7 +1,7 @@
 // The back-projections' float32 arithmetic under every evaluation a
 // conformant GLSL compiler may choose for expressions that are not
 // `precise` (GLSL 4.50 section 4.7.1; GLSL 3.30 and ESSL 3.00 have no
-// `precise` at all): a * b + c contracted into an fma or not, a product and
+// `precise` at all): a * b + c fused into an fma or not, a product and
 // a quotient reassociated, a division within 2.5 ulp, and each code site
 // (the x0/y0 and x1/y1 lanes of backprojection_project(), the receiver's
 // slope) choosing for itself. Each choice applies to every patch, as one
@@ -48,7 +48,7 @@ float divide(float a, float b, int ulps) {
 }
 
 // How one lane of backprojection_project() forms (slope(t TS) - a_r).
-enum class Contract {
+enum class Fusion {
   none,      // every product and sum rounded
   uv,        // fma(t, TS, -0.5), then the rest rounded
   texel,     // fma(uv - 0.5, k, -a_r)
@@ -66,8 +66,8 @@ enum class Gain {
 
 struct Evaluation {
   std::string name;
-  Contract lo = Contract::none;  // x0, y0
-  Contract hi = Contract::none;  // x1, y1
+  Fusion lo = Fusion::none;  // x0, y0
+  Fusion hi = Fusion::none;  // x1, y1
   Gain gain = Gain::as_written;
   int k_ulps = 0;           // Fw / n in the texels' slopes
   int k_receiver_ulps = 0;  // Fw / n in the receiver's slope (another site)
@@ -81,16 +81,16 @@ std::vector<Evaluation> evaluations() {
   std::vector<Evaluation> all;
   const struct {
     const char* name;
-    Contract lo, hi;
-  } contractions[] = {
-      {"plain", Contract::none, Contract::none},
-      {"fma", Contract::both, Contract::both},
-      {"fma_lo", Contract::both, Contract::none},
-      {"fma_hi", Contract::none, Contract::both},
-      {"fma_uv", Contract::uv, Contract::uv},
-      {"fma_texel", Contract::texel, Contract::texel},
-      {"fma_receiver", Contract::receiver, Contract::receiver},
-      {"fma_receiver_lo", Contract::receiver, Contract::none},
+    Fusion lo, hi;
+  } fusions[] = {
+      {"plain", Fusion::none, Fusion::none},
+      {"fma", Fusion::both, Fusion::both},
+      {"fma_lo", Fusion::both, Fusion::none},
+      {"fma_hi", Fusion::none, Fusion::both},
+      {"fma_uv", Fusion::uv, Fusion::uv},
+      {"fma_texel", Fusion::texel, Fusion::texel},
+      {"fma_receiver", Fusion::receiver, Fusion::receiver},
+      {"fma_receiver_lo", Fusion::receiver, Fusion::none},
   };
   const struct {
     const char* name;
@@ -99,10 +99,10 @@ std::vector<Evaluation> evaluations() {
                {"_zfirst", Gain::z_first},
                {"_zrfirst", Gain::zr_first},
                {"_productlast", Gain::product_last}};
-  // Every grouping and quotient with the contractions that differ most
+  // Every grouping and quotient with the fusions that differ most
   // (none, all, one lane only); the others as written.
-  for (const auto& c : contractions) {
-    const bool extreme = c.lo == Contract::none || c.hi == Contract::none || c.lo == Contract::both;
+  for (const auto& c : fusions) {
+    const bool extreme = c.lo == Fusion::none || c.hi == Fusion::none || c.lo == Fusion::both;
     for (const auto& g : gains) {
       for (int ulps : {-2, 0, 2}) {
         if (!extreme && (g.gain != Gain::as_written || ulps != 0)) continue;
@@ -115,14 +115,14 @@ std::vector<Evaluation> evaluations() {
         e.k_ulps = -ulps;
         e.k_receiver_ulps = -ulps;
         e.scale_ulps = ulps;
-        e.t_fma_lo = c.lo != Contract::none;
-        e.t_fma_hi = c.hi != Contract::none;
+        e.t_fma_lo = c.lo != Fusion::none;
+        e.t_fma_hi = c.hi != Fusion::none;
         all.push_back(e);
       }
     }
   }
   // Fw / n evaluated apart for the receiver and the texels.
-  for (const auto& c : contractions) {
+  for (const auto& c : fusions) {
     for (int ulps : {-2, 2}) {
       Evaluation e;
       e.name = std::string(c.name) + (ulps > 0 ? "_ksplit+2" : "_ksplit-2");
@@ -130,8 +130,8 @@ std::vector<Evaluation> evaluations() {
       e.hi = c.hi;
       e.k_ulps = ulps;
       e.k_receiver_ulps = -ulps;
-      e.t_fma_lo = c.lo != Contract::none;
-      e.t_fma_hi = c.hi != Contract::none;
+      e.t_fma_lo = c.lo != Fusion::none;
+      e.t_fma_hi = c.hi != Fusion::none;
       all.push_back(e);
     }
   }
@@ -194,14 +194,14 @@ class Emulation {
 
  private:
   // (slope(t TS) - slope(u_r)) g(z) for map coordinate t (texels).
-  float lane_edge(float t, float ts, float ur, float z, float zr, Contract c) const {
-    const bool uv_fused = c == Contract::uv || c == Contract::both;
+  float lane_edge(float t, float ts, float ur, float z, float zr, Fusion c) const {
+    const bool uv_fused = c == Fusion::uv || c == Fusion::both;
     const float uv_m = uv_fused ? std::fma(t, ts, -0.5f) : t * ts - 0.5f;
     const float ur_m = ur - 0.5f;
     float d = 0.0f;
-    if (c == Contract::texel || c == Contract::both) {
+    if (c == Fusion::texel || c == Fusion::both) {
       d = std::fma(uv_m, k_, -(ur_m * kr_));
-    } else if (c == Contract::receiver) {
+    } else if (c == Fusion::receiver) {
       d = std::fma(-ur_m, kr_, uv_m * k_);
     } else {
       d = uv_m * k_ - ur_m * kr_;
