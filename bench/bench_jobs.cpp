@@ -1,9 +1,8 @@
 // penumbra_bench_jobs: `penumbra verify` and `penumbra report` with
 // --jobs 1 against --jobs N on the same library, side by side in one run
 // (alternating, so that a change in the machine's load falls on both), and
-// a check that every N gives the same results: verify.json and the report's
-// files, less their timings (verify's "seconds"; the report's "run_ms", GPU
-// costs and the cost chart drawn from them).
+// a check that every N gives the same results: verify.json, and the report's
+// files less their timings (untimed_report_files()).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -11,13 +10,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "bench_child.hpp"
 #include "bench_files.hpp"
+#include "penumbra/report/report.hpp"
 
 extern char** environ;
 
@@ -44,55 +43,20 @@ const std::vector<std::string> kDefaultVariants = {"hard",
                                                    "screen_blur_r4",
                                                    "bitmask_backprojection_bits256"};
 
-// `json` without the members named `key`, at any depth.
-nlohmann::json without(nlohmann::json json, const std::string& key) {
-  if (json.is_object()) {
-    json.erase(key);
-    for (auto& [name, value] : json.items()) value = without(value, key);
-  } else if (json.is_array()) {
-    for (auto& value : json) value = without(value, key);
-  }
-  return json;
-}
-
-// `text` less the part from `begin` to the end of the `end` after it.
-std::string cut(std::string text, const std::string& begin, const std::string& end) {
-  const std::size_t from = text.find(begin);
-  const std::size_t to = text.find(end, from);
-  if (from == std::string::npos || to == std::string::npos) return text;
-  return text.erase(from, to + end.size() - from);
-}
-
-// A report's JSON less what is timed: run_ms (wall time) and gpu_cost.
-std::string timeless(const std::string& json) {
-  nlohmann::json report = nlohmann::json::parse(json);
-  report.erase("gpu_cost");
-  return without(report, "run_ms").dump();
-}
-
-// What must not depend on --jobs: verify.json less its seconds, and every
-// file of the report less what is timed (run_ms, the GPU costs and the cost
-// chart drawn from them: cost_chart.png and its SVG in index.html).
+// What must not depend on --jobs: verify.json, byte for byte, and every
+// file of the report less what is timed (untimed_report_files()).
 std::map<std::string, std::string> results(const fs::path& library, const fs::path& report) {
   std::map<std::string, std::string> files;
-  files["verify.json"] =
-      without(nlohmann::json::parse(bench::read_text(library / "verify.json")), "seconds").dump();
   for (const auto& entry : fs::recursive_directory_iterator(report)) {
     if (!entry.is_regular_file()) continue;
-    const std::string name = entry.path().lexically_relative(report).string();
-    if (name == "cost_chart.png") continue;
-    std::string text = bench::read_text(entry.path());
-    if (name == "report.json") text = timeless(text);
-    if (name == "index.html") {
-      text = cut(text, "<svg id=\"cost-chart\"", "</svg>");
-      const std::string data = "id=\"report-data\">";
-      const std::size_t from = text.find(data) + data.size();
-      const std::size_t to = text.find("</script>", from);
-      text.replace(from, to - from, timeless(text.substr(from, to - from)));
-    }
-    files["report/" + name] = std::move(text);
+    files[entry.path().lexically_relative(report).string()] = bench::read_text(entry.path());
   }
-  return files;
+  std::map<std::string, std::string> results;
+  for (auto& [name, text] : untimed_report_files(std::move(files))) {
+    results["report/" + name] = std::move(text);
+  }
+  results["verify.json"] = bench::read_text(library / "verify.json");
+  return results;
 }
 
 // The seconds `argv` takes to exit, its output into `log`.

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/verify/gpu_cost.hpp"
@@ -29,6 +31,12 @@ struct ReportOptions {
 // Errors: those of render_pictures and of writing the files.
 Status write_report(const Library& library, Engine& engine, const std::filesystem::path& dir,
                     const ReportOptions& options, const DiagnosticConsumer& diagnostics);
+
+// A report's files (path relative to its folder -> bytes) less what is
+// timed: each row's run_ms (wall time), gpu_cost (timestamps) and the cost
+// chart drawn from it (cost_chart.png, its SVG in index.html). Two reports
+// of one library on one device are then equal whatever the thread count.
+std::map<std::string, std::string> untimed_report_files(std::map<std::string, std::string> files);
 
 // Whether `dir` may be replaced by a report: missing, empty, or a report
 // that write_report() wrote (report.json whose "generator" is penumbra);
