@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <map>
 
@@ -244,8 +243,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   struct PendingVariant {
     std::size_t index;
     std::vector<std::unique_ptr<PendingTarget>> targets;
-    std::vector<TargetRun> broken;  // runs of targets whose scenes could not be made
-    bool other_shards = false;      // some of its pairs are in other shards
+    bool other_shards = false;  // some of its pairs are in other shards
   };
   std::vector<PendingVariant> pending;
   ProgressCounter progress(options.progress, pairs_in_shard(library, options));
@@ -254,7 +252,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
     for (std::size_t i = 0; i < library.variants.size(); ++i) {
       const LibraryVariant& entry = library.variants[i];
       if (!wanted(options.variants, entry.variant.name)) continue;
-      PendingVariant& variant = pending.emplace_back(PendingVariant{i, {}, {}, false});
+      PendingVariant& variant = pending.emplace_back(PendingVariant{i, {}, false});
       for (Target target : entry.variant.targets) {
         if (!wanted(options.targets, target)) continue;
         if (!in_shard(options.shard, i, target)) {
