@@ -3,7 +3,7 @@
 // variants in-process, renders the report's stage (reference/stage.hpp) at
 // W x H on the Vulkan device, and times each variant's depth pass, min-max
 // mip and query pass with timestamp queries (measure_gpu_cost, the report's
-// method: the median of R runs after a warm-up). In the same run a
+// method: the median of R runs after an untimed one). In the same run a
 // fetch-only shader with the variants' comparison sampler gives the
 // device's texel-rate ceiling, so each variant's rate is also a fraction of
 // what this device can fetch, which makes a lavapipe figure comparable too.
@@ -43,9 +43,8 @@ struct Args {
   std::string device;                 // Vulkan device: index or name substring
   int width = 1600;                   // the stage's picture
   int height = 1200;
-  int runs = 21;          // timed runs per pass
-  double warmup_s = 0.2;  // untimed runs of each pass first, for this long
-  int fetches = 64;       // the fetch-only shader's comparisons per pixel
+  int runs = 21;     // timed runs per pass
+  int fetches = 64;  // the fetch-only shader's comparisons per pixel
 };
 
 // The variants to measure, spirv only; bad_input naming a --variant the
@@ -82,7 +81,7 @@ Status run(const Args& args) {
   const reference::StageView view = reference::view(stage, args.width, args.height);
   const FloatImage exact = reference::exact_visibility_image(stage.scene, view);
   const PictureScene scene{stage.scene, view.receivers};
-  const GpuCostOptions options{.runs = args.runs, .warmup_s = args.warmup_s};
+  const GpuCostOptions options{.runs = args.runs};
   const double pixels = double(args.width) * args.height;
 
   const LibraryVariant* like = nullptr;
@@ -103,8 +102,8 @@ Status run(const Args& args) {
   std::cout << "GPU cost on the report's stage, " << args.width << "x" << args.height << " ("
             << stage.scene.map_width << "x" << stage.scene.map_height << " map), spirv on "
             << info.name << " (" << info.driver << ")\n"
-            << "ms: median GPU time of " << args.runs << " runs after " << args.warmup_s
-            << " s of untimed ones (timestamp queries); Mpx/s: the query pass; "
+            << "ms: median GPU time of " << args.runs
+            << " runs after an untimed one (timestamp queries); Mpx/s: the query pass; "
                "reads/px: the query's .y over every pixel\n";
   std::printf(
       "fetch-only ceiling: %d comparisons/px with %s's sampler: %.3f ms, %.1f reads/px, "
@@ -144,12 +143,8 @@ int main(int argc, char** argv) {
   app.add_option("--variant", args.variants, "Only this variant (repeatable; default: all)");
   app.add_option("--device", args.device, "Vulkan device: index or name substring");
   app.add_option("--size", size, "The stage's picture, WxH (default 1600x1200)");
-  app.add_option("-r,--runs", args.runs, "Timed runs per pass after the warm-up (median)")
+  app.add_option("-r,--runs", args.runs, "Timed runs per pass after an untimed one (median)")
       ->check(CLI::Range(20, 1000));
-  app.add_option("--warmup", args.warmup_s,
-                 "Seconds of untimed runs of each pass first, at least one (default 0.2): an "
-                 "idle GPU raises its clock only under load")
-      ->check(CLI::Range(0.0, 10.0));
   app.add_option("--fetches", args.fetches, "The fetch-only shader's comparisons per pixel")
       ->check(CLI::Range(1, 1024));
   try {

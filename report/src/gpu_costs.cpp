@@ -57,12 +57,9 @@ nlohmann::json to_json(const std::vector<TimedVariant>& timed, const GpuCostOpti
                         {"exact_penumbra_mae", t.point.mae}});
   }
   return {{"method", "median GPU time of " + std::to_string(options.runs) +
-                         " runs of each pass after untimed ones for " +
-                         std::to_string(options.warmup_s) +
-                         " s, from Vulkan timestamp queries (penumbra_bench_gpu's method); "
-                         "gpu_ms = depth_ms + mip_ms + query_ms"},
+                         " runs of each pass after an untimed one, from Vulkan timestamp queries "
+                         "(penumbra_bench_gpu's method); gpu_ms = depth_ms + mip_ms + query_ms"},
           {"runs", options.runs},
-          {"warmup_s", options.warmup_s},
           {"chart_image", "cost_chart.png"},
           {"variants", variants}};
 }

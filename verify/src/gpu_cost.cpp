@@ -1,7 +1,6 @@
 #include "penumbra/verify/gpu_cost.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -18,18 +17,9 @@ constexpr Target kTarget = Target::spirv;
 
 using TimedRun = std::function<Result<std::optional<double>>()>;
 
-// `run` untimed for `warmup_s` (at least once), then `runs` times; the
-// median of their GPU times. The warm-up is wall time, not a count: an NVIDIA
-// H200 timed the same depth pass at 0.24 ms after one untimed run and 0.044
-// ms at full clock, while one run of a query pass on lavapipe outlasts it.
-Result<double> median_ms(const std::string& what, const GpuCostOptions& options,
-                         const TimedRun& run) {
-  const auto start = std::chrono::steady_clock::now();
-  do {
-    PENUMBRA_TRY(run());
-  } while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
-           options.warmup_s);
-  const int runs = options.runs;
+// `run` once untimed, then `runs` times; the median of their GPU times.
+Result<double> median_ms(const std::string& what, int runs, const TimedRun& run) {
+  PENUMBRA_TRY(run());
   std::vector<double> times;
   for (int i = 0; i < std::max(1, runs); ++i) {
     PENUMBRA_TRY_ASSIGN(std::optional<double> ms, run());
@@ -51,11 +41,10 @@ double mean(const FloatImage& image) {
   return image.data.empty() ? 0.0 : sum / double(image.data.size());
 }
 
-// The scene drawn by `entry`'s depth pass; with `depth_ms`, that pass's
-// median GPU time over more maps (median_ms()).
+// The scene drawn by `entry`'s depth pass (the untimed run); with
+// `depth_ms`, that pass's median GPU time over `runs` more maps.
 Result<SceneFixture> draw_scene(const Library& library, Engine& engine, const LibraryVariant& entry,
-                                const PictureScene& scene, const GpuCostOptions& options,
-                                double* depth_ms) {
+                                const PictureScene& scene, int runs, double* depth_ms) {
   PENUMBRA_TRY_ASSIGN(auto depth, load_executable(library, entry, PassKind::depth, kTarget));
   PENUMBRA_TRY_ASSIGN(SceneFixture fixture,
                       prepare_scene(engine, depth.program, kTarget, scene.scene, scene.receivers));
@@ -64,12 +53,11 @@ Result<SceneFixture> draw_scene(const Library& library, Engine& engine, const Li
   const auto triangles = reference::triangles(s);
   PENUMBRA_TRY_ASSIGN(
       *depth_ms,
-      median_ms(
-          entry.variant.name + " depth pass", options, [&]() -> Result<std::optional<double>> {
-            PENUMBRA_TRY_ASSIGN(auto map, engine.render_depth(depth.program, triangles, s.map_width,
-                                                              s.map_height, fixture.params));
-            return map->depth_gpu_ms();
-          }));
+      median_ms(entry.variant.name + " depth pass", runs, [&]() -> Result<std::optional<double>> {
+        PENUMBRA_TRY_ASSIGN(auto map, engine.render_depth(depth.program, triangles, s.map_width,
+                                                          s.map_height, fixture.params));
+        return map->depth_gpu_ms();
+      }));
   return fixture;
 }
 
@@ -160,19 +148,20 @@ Result<GpuCost> measure_gpu_cost(const Library& library, Engine& engine,
   cost.variant = variant.name;
   cost.technique = variant.technique;
   PENUMBRA_TRY_ASSIGN(SceneFixture fixture,
-                      draw_scene(library, engine, entry, scene, options, &cost.depth_ms));
+                      draw_scene(library, engine, entry, scene, options.runs, &cost.depth_ms));
 
   if (uses_minmax_mip(variant.technique)) {
     PENUMBRA_TRY_ASSIGN(auto init, load_executable(library, entry, PassKind::minmax_init, kTarget));
     PENUMBRA_TRY_ASSIGN(auto reduce,
                         load_executable(library, entry, PassKind::minmax_reduce, kTarget));
     PENUMBRA_TRY_ASSIGN(
-        cost.mip_ms,
-        median_ms(variant.name + " min-max mip", options, [&]() -> Result<std::optional<double>> {
-          PENUMBRA_TRY_ASSIGN(auto mip, engine.build_minmax(*fixture.map, init.program,
-                                                            reduce.program, fixture.params));
-          return mip.gpu_ms;
-        }));
+        cost.mip_ms, median_ms(variant.name + " min-max mip", options.runs,
+                               [&]() -> Result<std::optional<double>> {
+                                 PENUMBRA_TRY_ASSIGN(
+                                     auto mip, engine.build_minmax(*fixture.map, init.program,
+                                                                   reduce.program, fixture.params));
+                                 return mip.gpu_ms;
+                               }));
   }
 
   TimedRun query;
@@ -196,7 +185,7 @@ Result<GpuCost> measure_gpu_cost(const Library& library, Engine& engine,
       return out.gpu_ms;
     };
   }
-  PENUMBRA_TRY_ASSIGN(cost.query_ms, median_ms(variant.name + " query pass", options, query));
+  PENUMBRA_TRY_ASSIGN(cost.query_ms, median_ms(variant.name + " query pass", options.runs, query));
   cost.texel_reads_per_pixel = mean(cost.texel_reads);
   return cost;
 }
@@ -205,12 +194,11 @@ Result<FetchCeiling> measure_fetch_ceiling(const Library& library, Engine& engin
                                            const LibraryVariant& like, const PictureScene& scene,
                                            int fetches, const GpuCostOptions& options) {
   PENUMBRA_TRY_ASSIGN(PassProgram program, fetch_only_program(library, like, fetches));
-  PENUMBRA_TRY_ASSIGN(SceneFixture fixture,
-                      draw_scene(library, engine, like, scene, options, nullptr));
+  PENUMBRA_TRY_ASSIGN(SceneFixture fixture, draw_scene(library, engine, like, scene, 0, nullptr));
   FetchCeiling ceiling{like.variant.name, fetches, 0.0, 0.0};
   PENUMBRA_TRY_ASSIGN(
       ceiling.query_ms,
-      median_ms("the fetch-only shader", options, [&]() -> Result<std::optional<double>> {
+      median_ms("the fetch-only shader", options.runs, [&]() -> Result<std::optional<double>> {
         PENUMBRA_TRY_ASSIGN(auto out, engine.run_query_output(program, *fixture.map,
                                                               fixture.receivers, fixture.params));
         ceiling.texel_reads_per_pixel = mean(out.texel_reads);

@@ -1,8 +1,7 @@
 // What a variant costs on the GPU (docs/performance.md): its SPIR-V passes
 // on the Vulkan engine, each timed with timestamp queries around its draws,
-// the median of a number of runs after untimed ones (a driver may compile
-// a pipeline lazily on its first use, and a GPU raises its clocks only under
-// load). The same method serves the GPU
+// the median of a number of runs after an untimed one (a driver may compile
+// a pipeline lazily on its first use). The same method serves the GPU
 // benchmark (penumbra_bench_gpu) and the report's cost chart.
 #pragma once
 
@@ -13,10 +12,7 @@
 namespace penumbra {
 
 struct GpuCostOptions {
-  int runs = 21;  // timed runs of each pass after the warm-up; the median is reported
-  // Untimed runs of each pass first, for at least this long (at least one):
-  // an idle GPU runs at a fraction of its clock until load raises it.
-  double warmup_s = 0.2;
+  int runs = 21;  // timed runs of each pass after an untimed one; the median is reported
 };
 
 // One variant's passes on one scene.
@@ -27,7 +23,7 @@ struct GpuCost {
   double mip_ms = 0.0;                 // the min-max mip build's (minmax techniques; else 0)
   double query_ms = 0.0;               // the query pass's (screen_blur: its four passes summed)
   double texel_reads_per_pixel = 0.0;  // the query's .y, the mean over every screen pixel
-  // The last run's images: what the variant shows (screen_blur: the
+  // The untimed run's images: what the variant shows (screen_blur: the
   // blurred factor) and the query's texel reads per pixel.
   FloatImage visibility;
   FloatImage texel_reads;
