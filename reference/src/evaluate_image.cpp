@@ -45,20 +45,10 @@ Sample with_depth_slope(Evaluate evaluate_at, const Query& query, const FloatIma
   return first;
 }
 
-}  // namespace
-
-Status check_variant(const Variant& variant) {
-  return detail::reference_for(variant.technique).check(variant);
-}
-
-Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& shadow_map,
-                                      const LightParams& light, const FloatImage& receivers,
-                                      const SamplingPrecision& precision,
-                                      const ShaderLimits& limits) {
-  PENUMBRA_TRY(check_variant(variant));
+Status check_inputs(const FloatImage& shadow_map, const FloatImage& receivers) {
   if (shadow_map.channels != 1 || shadow_map.pixel_count() == 0) {
     return make_error(Error::Kind::bad_input, "shadow map",
-                      "needs a non-empty 1-channel image of linear z, got " +
+                      "needs a non-empty 1-channel image of depth, got " +
                           std::to_string(shadow_map.channels) + " channels");
   }
   if ((receivers.channels != 3 && receivers.channels != 4) || receivers.pixel_count() == 0) {
@@ -66,8 +56,13 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                       "needs a non-empty 3- or 4-channel image (u, v, z_r), got " +
                           std::to_string(receivers.channels) + " channels");
   }
+  return {};
+}
 
-  const ShadowMapView map(shadow_map);
+// Every receiver against `map`, the inputs checked.
+ReferenceImage evaluate_view(const Variant& variant, const ShadowMapView& map,
+                             const LightParams& light, const FloatImage& receivers,
+                             const SamplingPrecision& precision, const ShaderLimits& limits) {
   // Built once for the image, and only for a technique whose reference reads it.
   std::optional<MinMaxMip> mip;
   if (reference_reads_mip(variant.technique)) mip.emplace(map);
@@ -86,9 +81,57 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                 ? with_depth_slope(evaluate_at, query, receivers, i, j, light, tol)
                                 : evaluate_at(query);
       result.visibility.at(i, j) = float(sample.visibility);
-      result.ambiguous.at(i, j) = float(std::uint8_t(sample.ambiguous));
+      result.ambiguous.at(i, j) = float(std::uint16_t(sample.ambiguous));
     }
   });
+  return result;
+}
+
+}  // namespace
+
+Status check_variant(const Variant& variant) {
+  return detail::reference_for(variant.technique).check(variant);
+}
+
+Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& shadow_map,
+                                      const LightParams& light, const FloatImage& receivers,
+                                      const SamplingPrecision& precision,
+                                      const ShaderLimits& limits) {
+  PENUMBRA_TRY(check_variant(variant));
+  PENUMBRA_TRY(check_inputs(shadow_map, receivers));
+  return evaluate_view(variant, ShadowMapView(shadow_map), light, receivers, precision, limits);
+}
+
+Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& stored,
+                                      const EncodedDepth& encoded, const LightParams& light,
+                                      const FloatImage& receivers,
+                                      const SamplingPrecision& precision,
+                                      const ShaderLimits& limits) {
+  PENUMBRA_TRY(check_variant(variant));
+  PENUMBRA_TRY(check_inputs(stored, receivers));
+  if (reference_reads_mip(variant.technique)) {
+    return make_error(Error::Kind::bad_input, variant.name,
+                      "a map in the " + std::string(to_string(encoded.encoding)) +
+                          " encoding: the reference of " +
+                          std::string(to_string(variant.technique)) +
+                          " reads a min-max mip, which is built from linear depth only");
+  }
+  const auto at_shift = [&](int shift) {
+    EncodedDepth view = encoded;
+    view.shift = shift;
+    return evaluate_view(variant, ShadowMapView(stored, view), light, receivers, precision, limits);
+  };
+  ReferenceImage result = at_shift(0);
+  const ReferenceImage nearer = at_shift(-1);
+  const ReferenceImage farther = at_shift(+1);
+  const double half_tolerance = 0.5 * tolerance(variant.technique, precision);
+  for (std::size_t k = 0; k < result.visibility.data.size(); ++k) {
+    const bool tie =
+        std::abs(double(nearer.visibility.data[k]) - farther.visibility.data[k]) > half_tolerance;
+    const auto reasons = Ambiguity(std::uint16_t(result.ambiguous.data[k])) |
+                         ambiguous_if(tie, Ambiguity::depth_tie);
+    result.ambiguous.data[k] = float(std::uint16_t(reasons));
+  }
   return result;
 }
 

@@ -48,7 +48,7 @@ ShaderLimits shader_limits(Target target);
 // differ. One bit per reason, a receiver marked for several holding their
 // sum; these are the codes `penumbra eval --ambiguous` writes
 // (docs/verification.md, "The ambiguity rule").
-enum class Ambiguity : std::uint8_t {
+enum class Ambiguity : std::uint16_t {
   none = 0,
   // A point sample within the point window of a texel boundary whose two
   // sides compare differently: hard, each of screen_blur's nine compares,
@@ -78,10 +78,15 @@ enum class Ambiguity : std::uint8_t {
   // light (under any evaluation a compiler may choose) may move the
   // visibility by more than 2e-4, all but 1e-4 of its tolerance.
   area_edges = 128,
+  // A map in a hardware encoding: a texel's depth lies within tie_margin()
+  // of the receiver's, so a shader's float32 encoding of the receiver may
+  // compare it either way, and the two ways differ by more than half the
+  // tolerance.
+  depth_tie = 256,
 };
 
 constexpr Ambiguity operator|(Ambiguity a, Ambiguity b) {
-  return Ambiguity(std::uint8_t(a) | std::uint8_t(b));
+  return Ambiguity(std::uint16_t(a) | std::uint16_t(b));
 }
 
 constexpr Ambiguity& operator|=(Ambiguity& a, Ambiguity b) {
@@ -102,6 +107,7 @@ inline constexpr AmbiguityReason kAmbiguityReasons[] = {
     {Ambiguity::walk_truncated, "a bitmask walk stopped short"},
     {Ambiguity::depth_slope, "receiver_plane's depth slopes disagree"},
     {Ambiguity::area_edges, "backprojection's patch edges may move the area too far"},
+    {Ambiguity::depth_tie, "an encoded map's texel at the receiver's depth"},
 };
 
 // `reason` where `marked`, else none.
@@ -148,6 +154,18 @@ struct ReferenceImage {
 // `shadow_map` (1 channel, linear z). Errors name what is wrong with the inputs.
 Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& shadow_map,
                                       const LightParams& light, const FloatImage& receivers,
+                                      const SamplingPrecision& precision = {},
+                                      const ShaderLimits& limits = {});
+
+// The same against `stored`, a map as a GPU holds it in `encoded`'s
+// encoding (its shift is ignored): the visibility of the exactly decoded
+// depths, with depth_tie where moving every depth tie_margin() towards and
+// away from the light changes the result by more than half the tolerance.
+// Errors: bad_input also for a technique whose reference reads the min-max
+// mip (built from linear depth).
+Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& stored,
+                                      const EncodedDepth& encoded, const LightParams& light,
+                                      const FloatImage& receivers,
                                       const SamplingPrecision& precision = {},
                                       const ShaderLimits& limits = {});
 
