@@ -37,6 +37,8 @@ std::string ShaderJob::banner() const {
     out += "Shared by every variant that reads the min-max mip";
   } else if (pass == PassKind::blur_h || pass == PassKind::blur_v || pass == PassKind::composite) {
     out += "Shared by every screen_blur variant";
+  } else if (map_encoding != MapEncoding::linear) {
+    out += "Shared by every variant whose map is " + std::string(to_string(map_encoding));
   } else {
     out += "Shared by every variant";
   }

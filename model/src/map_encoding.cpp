@@ -1,15 +1,6 @@
 #include "penumbra/model/map_encoding.hpp"
 
-#include <array>
-
 namespace penumbra {
-namespace {
-
-constexpr std::array kEncodings = {MapEncoding::linear, MapEncoding::perspective,
-                                   MapEncoding::perspective_reversed};
-
-}  // namespace
-
 double encode_depth(MapEncoding encoding, double z, const DepthRange& range) {
   const double n = range.near_plane;
   const double f = range.far_plane;
@@ -30,10 +21,12 @@ double decode_depth(MapEncoding encoding, double d, const DepthRange& range) {
   switch (encoding) {
     case MapEncoding::linear:
       return d * f;
+    // The denominators as weighted sums of the planes, not f - d (f - n):
+    // exact at both ends (d = 1 gives f) however far the far plane.
     case MapEncoding::perspective:
-      return n * f / (f - d * (f - n));
+      return n * f / ((1.0 - d) * f + d * n);
     case MapEncoding::perspective_reversed:
-      return n * f / (n + d * (f - n));
+      return n * f / (d * f + (1.0 - d) * n);
   }
   return d;
 }
@@ -62,7 +55,7 @@ std::string_view to_string(MapEncoding encoding) {
 }
 
 std::optional<MapEncoding> parse_map_encoding(std::string_view name) {
-  for (const MapEncoding e : kEncodings) {
+  for (const MapEncoding e : kAllMapEncodings) {
     if (to_string(e) == name) return e;
   }
   return std::nullopt;
@@ -70,11 +63,16 @@ std::optional<MapEncoding> parse_map_encoding(std::string_view name) {
 
 std::string allowed_map_encodings() {
   std::string out;
-  for (const MapEncoding e : kEncodings) {
+  for (const MapEncoding e : kAllMapEncodings) {
     if (!out.empty()) out += ", ";
     out += to_string(e);
   }
   return out;
+}
+
+MapEncoding map_encoding(const VariantKeys& keys) {
+  return keys.map_encoding ? parse_map_encoding(*keys.map_encoding).value_or(MapEncoding::linear)
+                           : MapEncoding::linear;
 }
 
 }  // namespace penumbra

@@ -131,11 +131,13 @@ constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
 constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
                                           PassKind::blur_v, PassKind::composite};
 
-constexpr std::string_view kGridKeys[] = {"kernel"};
-constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk", "rotation", "receiver_plane"};
+constexpr std::string_view kEncoding[] = {"map_encoding"};
+constexpr std::string_view kGridKeys[] = {"kernel", "map_encoding"};
+constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk", "rotation", "receiver_plane",
+                                             "map_encoding"};
 constexpr std::string_view kMinmaxPoissonKeys[] = {"pcf_samples", "disk", "rotation"};
-constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples", "disk", "rotation",
-                                          "receiver_plane"};
+constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples",    "disk",
+                                          "rotation",        "receiver_plane", "map_encoding"};
 constexpr std::string_view kMinmaxPcfKeys[] = {"kernel", "traversal"};
 constexpr std::string_view kBackprojectionKeys[] = {"traversal", "max_nodes"};
 constexpr std::string_view kScreenBlurKeys[] = {"blur_radius", "depth_aware"};
@@ -143,14 +145,16 @@ constexpr std::string_view kBitmaskKeys[] = {"traversal", "max_nodes", "light_bi
 constexpr std::string_view kTraversal[] = {"traversal"};
 constexpr std::string_view kDepthAware[] = {"depth_aware"};
 constexpr std::string_view kRotation[] = {"rotation"};
-constexpr std::string_view kRotationAndPlane[] = {"rotation", "receiver_plane"};
+constexpr std::string_view kRotationPlaneEncoding[] = {"rotation", "receiver_plane",
+                                                       "map_encoding"};
 
 // Indexed by Technique.
 constexpr TechniqueDescription kTechniques[] = {
-    {Technique::hard, "hard", {}, {}, kSinglePass, false},
-    {Technique::pcf_grid, "pcf_grid", kGridKeys, {}, kSinglePass, false},
-    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, kRotationAndPlane, kSinglePass, false},
-    {Technique::pcss, "pcss", kPcssKeys, kRotationAndPlane, kSinglePass, false},
+    {Technique::hard, "hard", kEncoding, kEncoding, kSinglePass, false},
+    {Technique::pcf_grid, "pcf_grid", kGridKeys, kEncoding, kSinglePass, false},
+    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, kRotationPlaneEncoding, kSinglePass,
+     false},
+    {Technique::pcss, "pcss", kPcssKeys, kRotationPlaneEncoding, kSinglePass, false},
     {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversal, kMinmaxPasses, true},
     {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
      kMinmaxPasses, true},

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <nlohmann/json.hpp>
 
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
@@ -118,17 +119,20 @@ std::string_view to_string(MipFilter filter) {
 }
 
 void to_json(nlohmann::json& j, const SamplerState& s) {
-  j = {{"comparison", s.comparison ? "less_equal" : "none"},
+  j = {{"comparison", !s.comparison     ? "none"
+                      : s.greater_equal ? "greater_equal"
+                                        : "less_equal"},
        {"filter", to_string(s.filter)},
        {"mip_filter", to_string(s.mip_filter)},
        {"address", "clamp_to_edge"}};
 }
 void from_json(const nlohmann::json& j, SamplerState& s) {
   const std::string comparison = j.at("comparison").get<std::string>();
-  if (comparison != "none" && comparison != "less_equal") {
+  if (comparison != "none" && comparison != "less_equal" && comparison != "greater_equal") {
     throw nlohmann::json::other_error::create(501, "unknown comparison '" + comparison + "'", &j);
   }
-  s.comparison = comparison == "less_equal";
+  s.comparison = comparison != "none";
+  s.greater_equal = comparison == "greater_equal";
   s.filter = parse_enum<Filter>(j.at("filter"), kFilterNames, "filter");
   s.mip_filter = parse_enum<MipFilter>(j.at("mip_filter"), kMipFilterNames, "mip_filter");
   if (j.at("address").get<std::string>() != "clamp_to_edge") {
@@ -256,6 +260,7 @@ void to_json(nlohmann::json& j, const PassReflection& p) {
        {"vert", p.vert},
        {"frag", p.frag}};
   put(j, "depth_target", p.depth_target);
+  put(j, "map_encoding", p.map_encoding);
   put(j, "extensions", p.extensions);
 }
 void from_json(const nlohmann::json& j, PassReflection& p) {
@@ -264,6 +269,12 @@ void from_json(const nlohmann::json& j, PassReflection& p) {
   j.at("vert").get_to(p.vert);
   j.at("frag").get_to(p.frag);
   get(j, "depth_target", p.depth_target);
+  get(j, "map_encoding", p.map_encoding);
+  if (!p.map_encoding.empty() && !parse_map_encoding(p.map_encoding)) {
+    throw nlohmann::json::other_error::create(
+        501, "unknown map_encoding '" + p.map_encoding + "'; allowed " + allowed_map_encodings(),
+        &j);
+  }
   get(j, "extensions", p.extensions);
 }
 

@@ -1,10 +1,14 @@
 // Shadow-map reads and comparisons. This is the one place where targets
 // differ: PENUMBRA_HAS_COMPARISON_SAMPLER (set by the compiler per target)
 // chooses the hardware comparison sampler or in-shader compares (Direct3D 9).
-// The map holds normalized depth d = z * DEPTH_SCALE (a power of two, exact).
+// The map holds normalized depth d = z * DEPTH_SCALE (a power of two, exact),
+// or with PENUMBRA_MAP_ENCODING (the map_encoding key) an engine's hardware
+// depth for a perspective projection from NEAR_PLANE to 1 / DEPTH_SCALE:
+// 1, forward; 2, reversed-Z (docs/techniques.md, "Map encodings").
 #ifndef PENUMBRA_SHADOW_MAP_GLSL
 #define PENUMBRA_SHADOW_MAP_GLSL
 
+#include "common/map_encoding.glsl"
 #include "common/params.glsl"
 
 layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_DEPTH) uniform sampler2D shadow_depth;
@@ -53,18 +57,19 @@ vec2 receiver_depth_slope(vec3 dx, vec3 dy, float z) {
 // Linear light-view z of the texel nearest to uv (point sampling).
 float shadow_depth_point(vec2 uv) {
   penumbra_texel_reads += 1.0;
-  return textureLod(shadow_depth, uv, 0.0).r * INV_DEPTH_SCALE;
+  return shadow_linear(textureLod(shadow_depth, uv, 0.0).r);
 }
 
-// The comparison reference for a receiver: biased and normalized like the map.
+// The comparison reference for a receiver: biased and stored like the map.
 float shadow_reference(float z_receiver) {
-  return (z_receiver - DEPTH_BIAS) * DEPTH_SCALE;
+  return shadow_encode(z_receiver - DEPTH_BIAS);
 }
 
 // 1 when the nearest texel lets the receiver see the light (z_r <= depth).
 float shadow_compare_point(vec2 uv, float z_receiver) {
   penumbra_texel_reads += 1.0;
-  return shadow_reference(z_receiver) <= textureLod(shadow_depth, uv, 0.0).r ? 1.0 : 0.0;
+  return PENUMBRA_LIT(shadow_reference(z_receiver), textureLod(shadow_depth, uv, 0.0).r) ? 1.0
+                                                                                         : 0.0;
 }
 
 // Bilinear comparison: the four texels around uv, each compared, blended
@@ -81,10 +86,12 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver) {
   // Centres of the four texels; clamp addressing handles the map's edges.
   vec2 uv00 = (corner + 0.5) * TEXEL_SIZE;
   vec2 uv11 = uv00 + TEXEL_SIZE;
-  float lit00 = reference <= textureLod(shadow_depth, uv00, 0.0).r ? 1.0 : 0.0;
-  float lit10 = reference <= textureLod(shadow_depth, vec2(uv11.x, uv00.y), 0.0).r ? 1.0 : 0.0;
-  float lit01 = reference <= textureLod(shadow_depth, vec2(uv00.x, uv11.y), 0.0).r ? 1.0 : 0.0;
-  float lit11 = reference <= textureLod(shadow_depth, uv11, 0.0).r ? 1.0 : 0.0;
+  float lit00 = PENUMBRA_LIT(reference, textureLod(shadow_depth, uv00, 0.0).r) ? 1.0 : 0.0;
+  float lit10 =
+      PENUMBRA_LIT(reference, textureLod(shadow_depth, vec2(uv11.x, uv00.y), 0.0).r) ? 1.0 : 0.0;
+  float lit01 =
+      PENUMBRA_LIT(reference, textureLod(shadow_depth, vec2(uv00.x, uv11.y), 0.0).r) ? 1.0 : 0.0;
+  float lit11 = PENUMBRA_LIT(reference, textureLod(shadow_depth, uv11, 0.0).r) ? 1.0 : 0.0;
   return mix(mix(lit00, lit10, weight.x), mix(lit01, lit11, weight.x), weight.y);
 #endif
 }

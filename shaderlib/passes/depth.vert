@@ -12,7 +12,12 @@ layout(location = 0) out float light_z;
 void main() {
   float far_plane = INV_DEPTH_SCALE;
   float xy_scale = 2.0 * NEAR_PLANE / LIGHT_FRUSTUM_WIDTH;
+#if defined(PENUMBRA_MAP_ENCODING) && PENUMBRA_MAP_ENCODING == 2
+  // Reversed-Z: depth 1 at the near plane, 0 at the far one.
+  float clip_z = (far_plane - position.z) * NEAR_PLANE / (far_plane - NEAR_PLANE);
+#else
   float clip_z = (position.z - NEAR_PLANE) * far_plane / (far_plane - NEAR_PLANE);
+#endif
   gl_Position = vec4(position.xy * xy_scale, clip_z, position.z);
   light_z = position.z;
 }

@@ -1,6 +1,7 @@
 // Every manifest error names the file and the JSON path, and says what is allowed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "penumbra/compiler/manifest.hpp"
@@ -53,10 +54,11 @@ TEST(ManifestErrors, UnknownTopLevelKey) {
 }
 
 TEST(ManifestErrors, UnknownKeyInASet) {
-  expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
-                   "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
-                   "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, "
-                   "blur_radius, depth_aware, light_bits, rotation, receiver_plane, target");
+  expect_bad_input(
+      manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
+      "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
+      "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, "
+      "blur_radius, depth_aware, light_bits, rotation, receiver_plane, map_encoding, target");
 }
 
 TEST(ManifestErrors, UnknownTechnique) {
@@ -257,11 +259,40 @@ TEST(ManifestErrors, DiskDeclarations) {
                    "lowercase letters, digits and '_', starting with a letter");
 }
 
+// map_encoding names an encoding, for the techniques whose maps need no
+// min-max mip; linear is the key left out.
+TEST(ManifestErrors, MapEncodingIsAnEncodingOfATechniqueThatTakesOne) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": "hard",
+                                              "map_encoding": ["perspective", "reversed"]})")),
+                   "perms.json: /sets/1/map_encoding/1: unknown map_encoding 'reversed'; allowed "
+                   "map encodings: linear, perspective, perspective_reversed (docs/techniques.md, "
+                   "\"Map encodings\")");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "backprojection",
+                                              "map_encoding": "perspective"})")),
+                   "perms.json: /sets/1/map_encoding: key 'map_encoding' is used by none of this "
+                   "set's techniques");
+  const std::string both = R"({"schema": 1, "sets": [
+    {"technique": "hard", "map_encoding": ["linear", "perspective_reversed"]}],
+    "exclude": [{"map_encoding": "linear", "target": "spirv"}]})";
+  Result<Manifest> manifest = parse_manifest(both, "perms.json");
+  ASSERT_TRUE(manifest.ok()) << manifest.error().to_string();
+  Result<std::vector<Variant>> variants = expand(*manifest);
+  ASSERT_TRUE(variants.ok()) << variants.error().to_string();
+  ASSERT_EQ(variants->size(), 2u);
+  EXPECT_EQ((*variants)[0].name, "hard");
+  EXPECT_FALSE((*variants)[0].keys.map_encoding);
+  EXPECT_EQ(std::ranges::find((*variants)[0].targets, Target::spirv), (*variants)[0].targets.end());
+  EXPECT_EQ((*variants)[1].name, "hard_perspective_reversed");
+  EXPECT_EQ((*variants)[1].keys.map_encoding, "perspective_reversed");
+  EXPECT_NE(std::ranges::find((*variants)[1].targets, Target::spirv), (*variants)[1].targets.end());
+}
+
 TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "pcss", "pcf_samples": 16, "disk": "poisson"})")),
       "perms.json: /sets/1: technique pcss needs key 'blocker_samples'; pcss uses "
-      "blocker_samples, pcf_samples, disk, rotation (optional), receiver_plane (optional)");
+      "blocker_samples, pcf_samples, disk, rotation (optional), receiver_plane (optional), "
+      "map_encoding (optional)");
   expect_bad_input(manifest_error(with_set(R"({"kernel": 3})")),
                    "perms.json: /sets/1: missing key 'technique'; allowed techniques: hard, "
                    "pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
@@ -286,7 +317,7 @@ TEST(ManifestErrors, SetsAndExclusions) {
       manifest_error(R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{}]})"),
       "perms.json: /exclude/0: an exclusion needs at least one key; allowed keys: technique, "
       "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, blur_radius, "
-      "depth_aware, light_bits, rotation, receiver_plane, target");
+      "depth_aware, light_bits, rotation, receiver_plane, map_encoding, target");
   expect_bad_input(
       manifest_error(
           R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 0}]})"),

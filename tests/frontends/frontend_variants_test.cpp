@@ -11,6 +11,7 @@
 #include "default_library.hpp"
 #include "emitted_texts.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "spirv_inspect.hpp"
@@ -25,11 +26,13 @@ struct Expected {
   std::vector<std::string> shims;
 };
 
-Expected expected(Target target, const EmittedStage& emitted) {
+Expected expected(Target target, MapEncoding encoding, const EmittedStage& emitted) {
   const int model = traits(target).shader_model;
   if (model == 3) {
-    // Vertex shaders output POSITION, the depth pass's fragment shader DEPTH.
-    if (emitted.stage == ShaderStage::fragment && emitted.pass != PassKind::depth) {
+    // Vertex shaders output POSITION, the depth pass's fragment shader DEPTH
+    // (the library's linear map; an engine's hardware depth is the rasterizer's).
+    const bool writes_depth = emitted.pass == PassKind::depth && encoding == MapEncoding::linear;
+    if (emitted.stage == ShaderStage::fragment && !writes_depth) {
       return {"glslang HLSL (DX9-compatible)", {}};
     }
     return {"glslang HLSL (DX9-compatible)", {"dx9-output-semantics-as-sv"}};
@@ -67,11 +70,11 @@ std::map<std::string, std::uint32_t> locations(const std::vector<SpirvVariable>&
 }
 
 // Checks one compiled stage; returns its variables for the cross-stage check.
-std::vector<SpirvVariable> check_stage(Target target, const EmittedStage& emitted,
-                                       const FrontEndResult& result) {
+std::vector<SpirvVariable> check_stage(Target target, MapEncoding encoding,
+                                       const EmittedStage& emitted, const FrontEndResult& result) {
   EXPECT_EQ(vulkan_validation_errors(result.spirv), "");
-  EXPECT_EQ(result.front_end, expected(target, emitted).front_end);
-  EXPECT_EQ(result.shims, expected(target, emitted).shims);
+  EXPECT_EQ(result.front_end, expected(target, encoding, emitted).front_end);
+  EXPECT_EQ(result.shims, expected(target, encoding, emitted).shims);
   // Every target computes at full precision (ESSL: all highp), as the SPIR-V does.
   EXPECT_FALSE(has_relaxed_precision(result.spirv));
 
@@ -106,8 +109,13 @@ std::vector<SpirvVariable> check_stage(Target target, const EmittedStage& emitte
     const auto outputs = locations(vars, kStorageOutput);
     EXPECT_EQ(outputs.size(), 1u);  // depth_out, minmax, visibility, blurred or colour: target 0
     for (const auto& [name, location] : outputs) EXPECT_EQ(location, 0u) << name;
-    if (emitted.pass == PassKind::depth) {
+    // The library's linear map is written by the shader; an engine's
+    // hardware depth (a map_encoding) is the rasterizer's.
+    if (emitted.pass == PassKind::depth && encoding == MapEncoding::linear) {
       EXPECT_THAT(builtins, Contains(kBuiltInFragDepth));
+    }
+    if (emitted.pass == PassKind::depth && encoding != MapEncoding::linear) {
+      EXPECT_THAT(builtins, ::testing::Not(Contains(kBuiltInFragDepth)));
     }
   }
   return vars;
@@ -129,7 +137,8 @@ TEST_P(FrontEndVariant, EveryTextTargetCompilesToVulkanSpirvWithItsInterface) {
       SCOPED_TRACE(emitted.name);
       auto result = compile_target_text(target, emitted.stage, emitted.compiled.text, emitted.name);
       ASSERT_TRUE(result.ok()) << result.error().to_string();
-      const std::vector<SpirvVariable> vars = check_stage(target, emitted, *result);
+      const std::vector<SpirvVariable> vars =
+          check_stage(target, map_encoding(variant->keys), emitted, *result);
       ++compiled;
       if (emitted.stage == ShaderStage::vertex) {
         vertex = vars;

@@ -20,6 +20,7 @@
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/model/map_encoding.hpp"
 
 namespace penumbra {
 namespace {
@@ -43,7 +44,8 @@ constexpr const char* kRepresentatives[] = {"hard",
                                             "backprojection",
                                             "pcss_minmax_p16_whitepaper16",
                                             "screen_blur_r4",
-                                            "bitmask_backprojection_bits64"};
+                                            "bitmask_backprojection_bits64",
+                                            "pcss_b16_p16_poisson_perspective_reversed"};
 
 // Representatives the default manifest does not build: an even kernel that
 // every target counts exactly (hlsl_dx9 up to K = 8), and the NVIDIA PCSS
@@ -156,6 +158,13 @@ std::vector<const PassStageSource*> variant_sources(const Variant& variant) {
   return out;
 }
 
+// A representative's folder: its technique, and its map encoding unless linear.
+std::string golden_dir(const Variant& variant) {
+  const MapEncoding encoding = map_encoding(variant.keys);
+  return std::string(to_string(variant.technique)) +
+         (encoding == MapEncoding::linear ? "" : "_" + std::string(to_string(encoding)));
+}
+
 class VariantPasses : public ::testing::TestWithParam<std::tuple<const char*, Target>> {};
 
 TEST_P(VariantPasses, MatchTheReference) {
@@ -164,7 +173,7 @@ TEST_P(VariantPasses, MatchTheReference) {
   if (std::ranges::find(variant.targets, target) == variant.targets.end()) {
     GTEST_SKIP() << name << " is not emitted for " << to_string(target);
   }
-  const std::string dir(to_string(variant.technique));
+  const std::string dir = golden_dir(variant);
   for (const PassStageSource* source : variant_sources(variant)) {
     auto pass = compile_pass(variant, target, source->pass);
     ASSERT_TRUE(pass.ok()) << pass.error().to_string();
@@ -178,7 +187,7 @@ INSTANTIATE_TEST_SUITE_P(Golden, VariantPasses,
                                             ::testing::ValuesIn(kAllTargets)),
                          [](const auto& param_info) {
                            const Variant& v = representative(std::get<0>(param_info.param));
-                           return std::string(to_string(v.technique)) + "_" +
+                           return golden_dir(v) + "_" +
                                   std::string(to_string(std::get<1>(param_info.param)));
                          });
 
@@ -222,7 +231,7 @@ TEST(GoldenReference, HoldsOnlyCurrentGoldens) {
   for (Target target : kAllTargets) {
     for (const char* name : kRepresentatives) {
       const Variant& variant = representative(name);
-      const std::string dir(to_string(variant.technique));
+      const std::string dir = golden_dir(variant);
       for (const PassStageSource* source : variant_sources(variant)) {
         expected.insert(golden_path(dir, target, source->file_stem, ShaderStage::fragment));
       }

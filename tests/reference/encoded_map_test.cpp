@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "fixtures.hpp"
 #include "penumbra/model/map_encoding.hpp"
@@ -80,26 +81,26 @@ TEST(EncodedMap, ReceiverAtTheTexelsDepthIsATieUnlessBiased) {
 }
 
 // Whether every float32 encoding a shader may compute for the reference
-// z_ref compares with the stored value `stored` as `lit` says: A - B / z
-// (reversed: B / z - C) by a division rounded up to 2 ulp either way (GLSL
-// allows 2.5), or by a reciprocal and a fused multiply-add.
+// z_ref compares with the stored value `stored` as `lit` says. The shader
+// (shaderlib/common/map_encoding.glsl) computes (z - n) f / (z (f - n)),
+// reversed (f - z) n / (z (f - n)); a compiler may divide within 2.5 ulp
+// (here 2 either way), or multiply by the divisor's reciprocal, or by the
+// quotient of the far factor and the divisor.
 bool shader_lit_everywhere_as(bool lit, MapEncoding e, const DepthRange& range, double z_ref,
                               float stored) {
-  const double n = range.near_plane, f = range.far_plane;
   const bool forward = e == MapEncoding::perspective;
-  const float b = float(n * f / (f - n));
-  // The constant term: A = f / (f - n) forward, -C = -n / (f - n) reversed.
-  const float a = float(forward ? f / (f - n) : -n / (f - n));
-  const float sign = forward ? -1.0f : 1.0f;  // of the B / z term
-  const float z = float(z_ref);
-  const float quotient = b / z;
-  const float ulp = std::nextafter(quotient, 2.0f * quotient) - quotient;
-  for (int ulps = -2; ulps <= 2; ++ulps) {
-    const float q = quotient + float(ulps) * ulp;
-    for (const float reference : {a + sign * q, std::fma(sign * b, 1.0f / z, a)}) {
-      const bool shader_lit = forward ? reference <= stored : reference >= stored;
-      if (shader_lit != lit) return false;
-    }
+  const float n = float(range.near_plane), f = float(range.far_plane), z = float(z_ref);
+  const float difference = forward ? z - n : f - z;
+  const float factor = forward ? f : n;
+  const float divisor = z * (f - n);
+  const float quotient = difference * factor / divisor;
+  const float ulp = std::nextafter(std::abs(quotient), 2.0f) - std::abs(quotient);
+  std::vector<float> candidates = {difference * (factor / divisor),
+                                   difference * factor * (1.0f / divisor)};
+  for (int ulps = -2; ulps <= 2; ++ulps) candidates.push_back(quotient + float(ulps) * ulp);
+  for (const float reference : candidates) {
+    const bool shader_lit = forward ? reference <= stored : reference >= stored;
+    if (shader_lit != lit) return false;
   }
   return true;
 }

@@ -31,8 +31,10 @@ struct SceneOutput {
   FloatImage texel_reads;            // the query's .y (docs/shader-interface.md)
   std::optional<ChainOutput> chain;  // screen_blur only
   // A path that draws the scene's map with the target's depth pass itself:
-  // that map as linear z, which the reference then reads instead of the
-  // fixture's, and, on the run that drew it, its check against the ray cast.
+  // that map as stored and as linear z, which the reference then reads
+  // instead of the fixture's, and, on the run that drew it, its check
+  // against the ray cast.
+  std::shared_ptr<const FloatImage> own_stored_depth;
   std::shared_ptr<const FloatImage> own_linear_depth;
   std::optional<DepthCheck> own_depth_check;
 };

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/shadow_params.hpp"
@@ -38,6 +40,30 @@ FloatImage normalized_map(const FloatImage& map, float depth_scale) {
   FloatImage normalized = map;
   for (float& d : normalized.data) d = d * depth_scale <= 1.0f ? d * depth_scale : 1.0f;
   return normalized;
+}
+
+// The encoding of `variant`'s map with the projection eval gives it: the
+// light's near plane, and 1 / depth_scale for the far one; none for linear.
+std::optional<reference::EncodedDepth> encoding_of(const LibraryVariant& variant,
+                                                   const EvalInputs& inputs, float depth_scale) {
+  const MapEncoding encoding = map_encoding(variant.variant.keys);
+  if (encoding == MapEncoding::linear) return std::nullopt;
+  return reference::EncodedDepth{encoding, {inputs.light.near_plane, 1.0 / depth_scale}, 0};
+}
+
+// The linear map as the variant's programs read it: normalized, or stored in
+// its encoding, nearer than the near plane as the near plane and farther
+// than the far one as the far one, as a depth buffer clamps them.
+FloatImage stored_map(const FloatImage& map, const std::optional<reference::EncodedDepth>& encoded,
+                      float depth_scale) {
+  if (!encoded) return normalized_map(map, depth_scale);
+  FloatImage stored = map;
+  for (float& d : stored.data) {
+    const double z = std::clamp(double(d), encoded->range.near_plane, encoded->range.far_plane);
+    d = float(encode_depth(encoded->encoding, std::isnan(d) ? encoded->range.far_plane : z,
+                           encoded->range));
+  }
+  return stored;
 }
 
 // One light option's range; `name` is its argument.
@@ -99,7 +125,8 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
                                    Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
   const float depth_scale = depth_scale_for(max_depth(inputs));
-  auto map = engine.upload_shadow_map(normalized_map(inputs.shadow_map, depth_scale));
+  auto map = engine.upload_shadow_map(
+      stored_map(inputs.shadow_map, encoding_of(variant, inputs, depth_scale), depth_scale));
   if (!map) return map.error();
   const ParamBlock params = shadow_params(inputs.light,
                                           {inputs.shadow_map.width, inputs.shadow_map.height,
@@ -125,8 +152,14 @@ Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, 
                                                  const EvalInputs& inputs) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
   // The limits verify_library holds `target`'s runs to: hlsl_dx9's step cap.
-  auto image = reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light,
-                                         inputs.receivers, {}, reference::shader_limits(target));
+  const float depth_scale = depth_scale_for(max_depth(inputs));
+  const auto encoded = encoding_of(variant, inputs, depth_scale);
+  auto image =
+      encoded ? reference::evaluate_image(
+                    variant.variant, stored_map(inputs.shadow_map, encoded, depth_scale), *encoded,
+                    inputs.light, inputs.receivers, {}, reference::shader_limits(target))
+              : reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light,
+                                          inputs.receivers, {}, reference::shader_limits(target));
   if (!image) return image.error();
   if (variant.variant.technique == Technique::screen_blur) {
     image->visibility =

@@ -155,8 +155,12 @@ class GlBackend final : public Backend {
     auto output = engine_->run_query({pass(texts.query), minmax}, fixture.normalized_depth,
                                      fixture.receivers, fixture.params);
     if (!output) return output.error();
-    return SceneOutput{std::move(output->visibility), std::move(output->texel_reads), std::nullopt,
-                       nullptr, std::nullopt};
+    return SceneOutput{std::move(output->visibility),
+                       std::move(output->texel_reads),
+                       std::nullopt,
+                       nullptr,
+                       nullptr,
+                       std::nullopt};
   }
 
   Result<SceneOutput> run_screen_blur(const GlScreenBlurTexts& texts, const SceneFixture& fixture) {
@@ -164,9 +168,12 @@ class GlBackend final : public Backend {
         {pass(texts.query), pass(texts.blur_h), pass(texts.blur_v), pass(texts.composite)},
         fixture.normalized_depth, fixture.receivers, fixture.colour, fixture.params);
     if (!output) return output.error();
-    return SceneOutput{std::move(output->factor), std::move(output->texel_reads),
+    return SceneOutput{std::move(output->factor),
+                       std::move(output->texel_reads),
                        ChainOutput{std::move(output->blurred), std::move(output->composite)},
-                       nullptr, std::nullopt};
+                       nullptr,
+                       nullptr,
+                       std::nullopt};
   }
 
   std::unique_ptr<GlEngine> engine_;

@@ -9,6 +9,7 @@
 
 #include "backend.hpp"
 #include "cpu_work.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -26,16 +27,18 @@ bool wanted(const std::vector<std::string>& names, const std::string& name) {
   return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// The scene prepared for one target by the depth (and min-max) passes of
-// the first variant that needs them, as verify prepares its scenes.
+// The scene prepared for one target and map encoding by the depth (and
+// min-max) passes of the first variant that needs them, as verify prepares
+// its scenes.
 class TargetStages {
  public:
   TargetStages(const Library& library, Engine& engine, const PictureScene& scene)
       : library_(library), engine_(engine), scene_(scene) {}
 
   Result<const TargetScenes*> get(const LibraryVariant& entry, Target target) {
-    auto it = prepared_.find(target);
-    if (it == prepared_.end()) it = prepared_.emplace(target, prepare(entry, target)).first;
+    const auto key = std::pair(target, map_encoding(entry.variant.keys));
+    auto it = prepared_.find(key);
+    if (it == prepared_.end()) it = prepared_.emplace(key, prepare(entry, target)).first;
     Result<TargetScenes>& prepared = it->second;
     if (!prepared) return prepared.error();
     if (uses_minmax_mip(entry.variant.technique) && !prepared->minmax) {
@@ -65,20 +68,25 @@ class TargetStages {
   const Library& library_;
   Engine& engine_;
   const PictureScene& scene_;
-  std::map<Target, Result<TargetScenes>> prepared_;
+  std::map<std::pair<Target, MapEncoding>, Result<TargetScenes>> prepared_;
+};
+
+// A map a path drew itself (SceneOutput): as stored and as linear z.
+struct OwnMap {
+  std::shared_ptr<const FloatImage> stored;
+  std::shared_ptr<const FloatImage> linear;
 };
 
 // The CPU reference of what the run shows (screen_blur: the reference
-// factor blurred, every pixel decided), on `linear_depth`: the map the
-// target's own depth pass rendered (the fixture's, or the path's own).
+// factor blurred, every pixel decided), on the map the target's own depth
+// pass rendered (the fixture's, or the path's own), as stored and linear.
 Result<reference::ReferenceImage> reference_image(const Variant& variant, Target target,
                                                   const SceneFixture& fixture,
-                                                  const FloatImage& linear_depth,
+                                                  const FloatImage& stored,
+                                                  const FloatImage& linear,
                                                   const reference::SamplingPrecision& precision) {
-  PENUMBRA_TRY_ASSIGN(
-      auto expected,
-      reference::evaluate_image(variant, linear_depth, fixture.scene.light, fixture.receivers,
-                                precision, reference::shader_limits(target)));
+  PENUMBRA_TRY_ASSIGN(auto expected, reference_on_map(variant, fixture, stored, linear, precision,
+                                                      reference::shader_limits(target)));
   if (variant.technique != Technique::screen_blur) return expected;
   FloatImage blurred = reference::screen_blur(variant, expected.visibility, fixture.receivers);
   FloatImage none(blurred.width, blurred.height, 1);
@@ -87,7 +95,7 @@ Result<reference::ReferenceImage> reference_image(const Variant& variant, Target
 
 // `own_map`: the path's own map, when it draws one (SceneOutput).
 Status run_passes(PictureRun& run, const LoadedPasses& passes, const SceneFixture& fixture,
-                  int timed_runs, std::shared_ptr<const FloatImage>& own_map) {
+                  int timed_runs, OwnMap& own_map) {
   run.execution = passes.execution;
   run.run_seconds = 0.0;
   for (int i = 0; i < std::max(1, timed_runs); ++i) {
@@ -98,7 +106,7 @@ Status run_passes(PictureRun& run, const LoadedPasses& passes, const SceneFixtur
     if (i == 0 || seconds < run.run_seconds) run.run_seconds = seconds;
     run.visibility = output.chain ? std::move(output.chain->blurred) : std::move(output.visibility);
     run.texel_reads = std::move(output.texel_reads);
-    own_map = std::move(output.own_linear_depth);
+    own_map = {std::move(output.own_stored_depth), std::move(output.own_linear_depth)};
   }
   return {};
 }
@@ -111,8 +119,8 @@ namespace {
 // CPU's part (the references, the sink) is one job.
 struct PendingPictures {
   std::vector<PictureRun> runs;
-  std::vector<std::shared_ptr<const FloatImage>> own_maps;  // per run; null: the fixture's
-  const SceneFixture* fixture = nullptr;                    // null when no run executed
+  std::vector<OwnMap> own_maps;           // per run; null: the fixture's
+  const SceneFixture* fixture = nullptr;  // null when no run executed
 };
 
 // The references of `pending`'s runs (the fixture's computed once), then
@@ -128,14 +136,16 @@ std::optional<std::pair<std::size_t, Error>> finish_pictures(
     PictureRun& run = pending.runs[r];
     if (run.not_executed.empty() && run.error.empty()) {
       const SceneFixture& fixture = *pending.fixture;
+      const OwnMap& own_map = pending.own_maps[r];
       Result<reference::ReferenceImage> own =
-          pending.own_maps[r]
-              ? reference_image(variant, target, fixture, *pending.own_maps[r], precision)
-              : Result<reference::ReferenceImage>(reference::ReferenceImage{});
-      if (!pending.own_maps[r] && !on_fixture) {
-        on_fixture = reference_image(variant, target, fixture, fixture.linear_depth, precision);
+          own_map.linear ? reference_image(variant, target, fixture, *own_map.stored,
+                                           *own_map.linear, precision)
+                         : Result<reference::ReferenceImage>(reference::ReferenceImage{});
+      if (!own_map.linear && !on_fixture) {
+        on_fixture = reference_image(variant, target, fixture, fixture.normalized_depth,
+                                     fixture.linear_depth, precision);
       }
-      const Result<reference::ReferenceImage>& expected = pending.own_maps[r] ? own : *on_fixture;
+      const Result<reference::ReferenceImage>& expected = own_map.linear ? own : *on_fixture;
       if (expected) {
         run.reference = expected->visibility;
         run.reference_ambiguous = expected->ambiguous;
@@ -201,7 +211,7 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
         for (const std::unique_ptr<Backend>& backend : backends) {
           if (!backend->executes(target)) continue;
           PictureRun& run = pictures.runs.emplace_back();
-          std::shared_ptr<const FloatImage>& own_map = pictures.own_maps.emplace_back();
+          OwnMap& own_map = pictures.own_maps.emplace_back();
           run.order = order++;
           run.variant = variant.name;
           run.technique = variant.technique;

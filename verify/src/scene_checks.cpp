@@ -53,9 +53,9 @@ TargetRun failed_run(Target target, std::string backend, const Error& error) {
 void check_scene_of_runs(PendingTarget& target_runs, const Variant& variant, Target target,
                          std::size_t s, const SceneFixture& fixture,
                          const reference::SamplingPrecision& precision) {
-  const auto reference_on = [&](const FloatImage& linear_depth) {
-    return reference::evaluate_image(variant, linear_depth, fixture.scene.light, fixture.receivers,
-                                     precision, reference::shader_limits(target));
+  const auto reference_on = [&](const FloatImage& stored, const FloatImage& linear) {
+    return reference_on_map(variant, fixture, stored, linear, precision,
+                            reference::shader_limits(target));
   };
   std::optional<Result<reference::ReferenceImage>> on_fixture;
   for (PendingRun& pending : target_runs.runs) {
@@ -64,9 +64,9 @@ void check_scene_of_runs(PendingTarget& target_runs, const Variant& variant, Tar
     const SceneOutput& gpu = pending.outputs[s];
     std::optional<Result<reference::ReferenceImage>> own;
     if (gpu.own_linear_depth) {
-      own = reference_on(*gpu.own_linear_depth);
+      own = reference_on(*gpu.own_stored_depth, *gpu.own_linear_depth);
     } else if (!on_fixture) {
-      on_fixture = reference_on(fixture.linear_depth);
+      on_fixture = reference_on(fixture.normalized_depth, fixture.linear_depth);
     }
     const Result<reference::ReferenceImage>& expected = own ? *own : *on_fixture;
     pending.checked[s] = expected ? check_scene(gpu, *expected, variant, fixture, precision)

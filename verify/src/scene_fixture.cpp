@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 
@@ -69,15 +71,49 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Tar
       engine.render_depth(depth, triangles, scene.map_width, scene.map_height, fixture.params);
   if (!map) return map.error();
   fixture.map = *map;
-  auto normalized = engine.read_shadow_map(**map);
-  if (!normalized) return normalized.error();
-  fixture.normalized_depth = *normalized;
-  fixture.linear_depth = std::move(*normalized);
-  for (float& d : fixture.linear_depth.data) d /= depth_scale;  // exact: a power of two
+  const MapEncoding encoding =
+      parse_map_encoding(depth.reflection.map_encoding).value_or(MapEncoding::linear);
+  if (encoding != MapEncoding::linear) {
+    fixture.encoded =
+        reference::EncodedDepth{encoding, {scene.light.near_plane, 1.0 / depth_scale}, 0};
+  }
+  // A linear map's two images are the same; an encoded one's depth image is
+  // the rasterizer's depth and its colour image the shader's encoding.
+  auto stored = traits(target).comparison_sampler ? engine.read_shadow_depth(**map)
+                                                  : engine.read_shadow_map(**map);
+  if (!stored) return stored.error();
+  fixture.linear_depth = linear_depth_of(*stored, fixture.encoded, depth_scale);
+  fixture.normalized_depth = std::move(*stored);
   fixture.receivers = std::move(receivers);
   fixture.colour = reference::scene_colour(scene.receivers_width, scene.receivers_height);
   fixture.depth_check = check_depth(scene, target, fixture.linear_depth, "vulkan");
+  fixture.depth_check.map_encoding = encoding;
   return fixture;
+}
+
+FloatImage linear_depth_of(const FloatImage& stored,
+                           const std::optional<reference::EncodedDepth>& encoded,
+                           float depth_scale) {
+  FloatImage linear = stored;
+  for (float& d : linear.data) {
+    d = encoded ? float(decode_depth(encoded->encoding, d, encoded->range))
+                : d / depth_scale;  // exact: a power of two
+  }
+  return linear;
+}
+
+Result<reference::ReferenceImage> reference_on_map(const Variant& variant,
+                                                   const SceneFixture& fixture,
+                                                   const FloatImage& stored,
+                                                   const FloatImage& linear,
+                                                   const reference::SamplingPrecision& precision,
+                                                   const reference::ShaderLimits& limits) {
+  if (fixture.encoded) {
+    return reference::evaluate_image(variant, stored, *fixture.encoded, fixture.scene.light,
+                                     fixture.receivers, precision, limits);
+  }
+  return reference::evaluate_image(variant, linear, fixture.scene.light, fixture.receivers,
+                                   precision, limits);
 }
 
 }  // namespace penumbra

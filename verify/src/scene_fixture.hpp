@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "penumbra/reference/scene.hpp"
+#include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "penumbra/vulkan/engine.hpp"
 
@@ -17,10 +18,15 @@ struct SceneFixture {
   reference::Scene scene;
   ParamBlock params;
   std::shared_ptr<ShadowMap> map;
-  FloatImage normalized_depth;  // the rendered map as stored
-  FloatImage linear_depth;      // the same, linear z
-  FloatImage receivers;         // (u, v, z_r)
-  FloatImage colour;            // what screen_blur's composite draws over (reference::scene_colour)
+  // The rendered map as stored: what the target's programs read (the depth
+  // image where they compare through shadow_cmp, else the colour image).
+  FloatImage normalized_depth;
+  FloatImage linear_depth;  // the same, linear z
+  // The map's encoding, where the depth pass writes an engine's hardware
+  // depth (its reflection's map_encoding); none for linear z.
+  std::optional<reference::EncodedDepth> encoded;
+  FloatImage receivers;  // (u, v, z_r)
+  FloatImage colour;     // what screen_blur's composite draws over (reference::scene_colour)
   DepthCheck depth_check;
 };
 
@@ -43,5 +49,21 @@ DepthCheck check_depth(const reference::Scene& scene, Target target, const Float
 // scene's receivers_width x receivers_height).
 Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
                                    const reference::Scene& scene, FloatImage receivers);
+
+// `stored` (a map in `encoded`'s encoding, or linear z * depth_scale when
+// none) as linear z.
+FloatImage linear_depth_of(const FloatImage& stored,
+                           const std::optional<reference::EncodedDepth>& encoded,
+                           float depth_scale);
+
+// The reference of `variant` on `stored` and `linear` (the same map), with
+// the fixture's light and receivers: on the stored values where the map is
+// encoded (the reference marks the ties), on linear z otherwise.
+Result<reference::ReferenceImage> reference_on_map(const Variant& variant,
+                                                   const SceneFixture& fixture,
+                                                   const FloatImage& stored,
+                                                   const FloatImage& linear,
+                                                   const reference::SamplingPrecision& precision,
+                                                   const reference::ShaderLimits& limits);
 
 }  // namespace penumbra

@@ -5,13 +5,16 @@ namespace penumbra {
 namespace {
 
 nlohmann::json depth_json(const DepthCheck& c) {
-  return {{"scene", c.scene},
-          {"target", to_string(c.target)},
-          {"backend", c.backend},
-          {"texels_checked", c.texels},
-          {"mismatched", c.mismatched},
-          {"max_abs_error", c.max_abs_error},
-          {"pass", c.pass}};
+  nlohmann::json out = {{"scene", c.scene},
+                        {"target", to_string(c.target)},
+                        {"backend", c.backend},
+                        {"texels_checked", c.texels},
+                        {"mismatched", c.mismatched},
+                        {"max_abs_error", c.max_abs_error},
+                        {"pass", c.pass}};
+  // Linear maps, the library's own, are every check that has no encoding.
+  if (c.map_encoding != MapEncoding::linear) out["map_encoding"] = to_string(c.map_encoding);
+  return out;
 }
 
 nlohmann::json minmax_json(const MinmaxCheck& c) {

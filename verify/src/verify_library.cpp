@@ -5,6 +5,7 @@
 #include "backend.hpp"
 #include "cpu_work.hpp"
 #include "minmax_check.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/verify.hpp"
@@ -15,15 +16,22 @@
 namespace penumbra {
 namespace {
 
+// A target's maps in one encoding: drawn by that target's depth pass for it.
+using MapKey = std::pair<Target, MapEncoding>;
+
+MapKey map_key(const Variant& variant, Target target) {
+  return {target, map_encoding(variant.keys)};
+}
+
 struct Context {
   const Library& library;
   Engine& engine;  // prepares every target's scenes
   reference::SamplingPrecision precision;
   // The paths every run goes through, in report order.
   std::vector<std::unique_ptr<Backend>> backends;
-  std::map<Target, TargetScenes> scenes;
-  // Targets whose depth pass could not run: every run on them fails with this.
-  std::map<Target, Error> broken_targets;
+  std::map<MapKey, TargetScenes> scenes;
+  // Maps whose depth pass could not run: every run on them fails with this.
+  std::map<MapKey, Error> broken_targets;
 };
 
 // `entry`'s passes for `target` on `backend`, on the device: every scene's
@@ -43,7 +51,7 @@ PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& e
     run.not_executed = std::move(lacking);
     return pending;
   }
-  const TargetScenes& scenes = ctx.scenes.at(target);
+  const TargetScenes& scenes = ctx.scenes.at(map_key(entry.variant, target));
   auto passes = backend.load(ctx.library, entry, target, scenes);
   if (!passes) {
     run = failed_run(target, backend.name(), passes.error());
@@ -71,8 +79,8 @@ PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& e
   return pending;
 }
 
-// Renders every scene with `target`'s depth pass (shared by all variants),
-// taken from `entry`, a variant that has the target.
+// Renders every scene with `target`'s depth pass (shared by all variants of
+// a map encoding), taken from `entry`, a variant that has the target.
 Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
                       VerifyReport& report) {
   auto depth = load_executable(ctx.library, entry, PassKind::depth, target);
@@ -88,7 +96,7 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
     report.depth_checks.back().seconds = seconds_since(start);
     scenes.scenes.push_back(std::move(*fixture));
   }
-  ctx.scenes.emplace(target, std::move(scenes));
+  ctx.scenes.emplace(map_key(entry.variant, target), std::move(scenes));
   return {};
 }
 
@@ -101,7 +109,7 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
   if (!init) return init.error();
   auto reduce = load_executable(ctx.library, entry, PassKind::minmax_reduce, target);
   if (!reduce) return reduce.error();
-  for (SceneFixture& fixture : ctx.scenes.at(target).scenes) {
+  for (SceneFixture& fixture : ctx.scenes.at(map_key(entry.variant, target)).scenes) {
     const auto start = Clock::now();
     auto built =
         ctx.engine.build_minmax(*fixture.map, init->program, reduce->program, fixture.params);
@@ -145,7 +153,7 @@ bool in_shard(const Shard& shard, std::size_t variant_index, Target target) {
 // uses it. Every shard prepares with the same variant, so it runs what the
 // whole run runs.
 struct Preparers {
-  std::map<Target, std::size_t> depth;
+  std::map<MapKey, std::size_t> depth;
   std::map<Target, std::size_t> minmax;
 };
 
@@ -156,7 +164,7 @@ Preparers preparers(const Library& library, const VerifyOptions& options) {
     if (!wanted(options.variants, variant.name)) continue;
     for (Target target : variant.targets) {
       if (!wanted(options.targets, target)) continue;
-      first.depth.emplace(target, i);
+      first.depth.emplace(map_key(variant, target), i);
       if (uses_minmax_mip(variant.technique)) first.minmax.emplace(target, i);
     }
   }
@@ -259,16 +267,17 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
           variant.other_shards = true;
           continue;
         }
-        if (!ctx.scenes.contains(target) && !ctx.broken_targets.contains(target)) {
+        const MapKey key = map_key(entry.variant, target);
+        if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
           // A depth pass that cannot run fails every run of its target, not verify.
-          const LibraryVariant& preparer = library.variants[prepare_with.depth.at(target)];
+          const LibraryVariant& preparer = library.variants[prepare_with.depth.at(key)];
           if (Status s = prepare_target(ctx, preparer, target, report); !s) {
-            ctx.broken_targets.emplace(target, s.error());
+            ctx.broken_targets.emplace(key, s.error());
           }
         }
         auto target_runs = std::make_unique<PendingTarget>();
         target_runs->label = entry.variant.name + " [" + std::string(to_string(target)) + "]";
-        if (auto broken = ctx.broken_targets.find(target); broken != ctx.broken_targets.end()) {
+        if (auto broken = ctx.broken_targets.find(key); broken != ctx.broken_targets.end()) {
           // Reported once, on the path that prepares the scenes.
           target_runs->runs.push_back(
               {failed_run(target, ctx.backends.front()->name(), broken->second), {}, {}, {}, {}});
@@ -276,7 +285,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
           variant.targets.push_back(std::move(target_runs));
           continue;
         }
-        TargetScenes& scenes = ctx.scenes.at(target);
+        TargetScenes& scenes = ctx.scenes.at(key);
         if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
           const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(target)];
           scenes.minmax = prepare_minmax(ctx, preparer, target, report);
@@ -313,7 +322,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   }
   // The per-target checks of the pairs another shard runs are that shard's.
   std::erase_if(report.depth_checks, [&](const DepthCheck& c) {
-    return !in_shard(options.shard, prepare_with.depth.at(c.target), c.target);
+    return !in_shard(options.shard, prepare_with.depth.at({c.target, c.map_encoding}), c.target);
   });
   std::erase_if(report.minmax_checks, [&](const MinmaxCheck& c) {
     return !in_shard(options.shard, prepare_with.minmax.at(c.target), c.target);

@@ -36,8 +36,11 @@ LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded)
         auto gpu = engine.run_screen_blur(chain->programs(), *fixture.map, fixture.receivers,
                                           fixture.colour, fixture.params);
         if (!gpu) return gpu.error();
-        return SceneOutput{std::move(gpu->factor), std::move(gpu->texel_reads),
-                           ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)}, nullptr,
+        return SceneOutput{std::move(gpu->factor),
+                           std::move(gpu->texel_reads),
+                           ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)},
+                           nullptr,
+                           nullptr,
                            std::nullopt};
       }};
 }
@@ -63,8 +66,12 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                         auto gpu = engine.run_query_output(*program, *fixture.map,
                                                            fixture.receivers, fixture.params);
                         if (!gpu) return gpu.error();
-                        return SceneOutput{std::move(gpu->visibility), std::move(gpu->texel_reads),
-                                           std::nullopt, nullptr, std::nullopt};
+                        return SceneOutput{std::move(gpu->visibility),
+                                           std::move(gpu->texel_reads),
+                                           std::nullopt,
+                                           nullptr,
+                                           nullptr,
+                                           std::nullopt};
                       }};
 }
 

@@ -32,7 +32,8 @@ class SharedSession {
 // A scene's map drawn on the runtime: kept for every variant after the first.
 struct RuntimeMap {
   D3dMap map;
-  std::shared_ptr<const FloatImage> linear;  // map.normalized as linear z
+  std::shared_ptr<const FloatImage> stored;  // map.normalized
+  std::shared_ptr<const FloatImage> linear;  // the same as linear z
   bool checked = false;                      // its DepthCheck went out with a run
 };
 
@@ -123,9 +124,11 @@ class WineBackend final : public Backend {
             output.visibility = std::move(query.visibility);
             output.texel_reads = std::move(query.texel_reads);
           }
+          output.own_stored_depth = drawn->stored;
           output.own_linear_depth = drawn->linear;
           if (!drawn->checked) {
             output.own_depth_check = check_depth(fixture.scene, target, *drawn->linear, name());
+            output.own_depth_check->map_encoding = fixture.depth_check.map_encoding;
             drawn->checked = true;
           }
           return output;
@@ -143,19 +146,23 @@ class WineBackend final : public Backend {
   }
 
   // The fixture's scene drawn by the target's depth pass on this runtime,
-  // once per scene.
+  // once per scene and map encoding.
   Result<RuntimeMap*> map_of(const D3dPass& depth, const SceneFixture& fixture) {
     const std::string key = fixture.scene.name + "@" + std::to_string(fixture.scene.map_width) +
-                            "x" + std::to_string(fixture.scene.map_height);
+                            "x" + std::to_string(fixture.scene.map_height) + " " +
+                            depth.reflection.map_encoding;
     if (auto known = maps_.find(key); known != maps_.end()) return &known->second;
     PENUMBRA_TRY_ASSIGN(
         D3dMap map,
         engine_->render_depth(depth, reference::triangles(fixture.scene), fixture.scene.map_width,
                               fixture.scene.map_height, fixture.params));
-    auto linear = std::make_shared<FloatImage>(map.normalized);
-    const float depth_scale = depth_scale_for(fixture.scene.far_z);
-    for (float& d : linear->data) d /= depth_scale;  // exact: a power of two
-    return &maps_.emplace(key, RuntimeMap{std::move(map), std::move(linear), false}).first->second;
+    auto stored = std::make_shared<const FloatImage>(map.normalized);
+    auto linear = std::make_shared<const FloatImage>(
+        linear_depth_of(*stored, fixture.encoded, depth_scale_for(fixture.scene.far_z)));
+    return &maps_
+                .emplace(key,
+                         RuntimeMap{std::move(map), std::move(stored), std::move(linear), false})
+                .first->second;
   }
 
   D3dRuntime runtime_;

@@ -21,24 +21,27 @@
 namespace penumbra {
 namespace {
 
-// Shared shaders once per target, when a variant for that target uses their
-// pass; then each variant's own.
+// Shared shaders once per target and map encoding, when a variant for that
+// target and encoding uses their pass; then each variant's own.
 std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
   std::vector<ShaderJob> jobs;
   for (Target target : kAllTargets) {
     for (const PassStageSource& source : pass_plan()) {
       if (source.per_variant) continue;
-      const bool used = std::ranges::any_of(variants, [&](const Variant& v) {
-        return std::ranges::find(v.targets, target) != v.targets.end() && runs_pass(source.pass, v);
-      });
-      if (used) jobs.push_back(make_job(source, target, nullptr));
+      for (const MapEncoding encoding : kAllMapEncodings) {
+        const auto user = std::ranges::find_if(variants, [&](const Variant& v) {
+          return std::ranges::find(v.targets, target) != v.targets.end() &&
+                 runs_pass(source.pass, v) && shared_encoding(source.pass, v) == encoding;
+        });
+        if (user != variants.end()) jobs.push_back(make_job(source, target, *user));
+      }
     }
   }
   for (const Variant& variant : variants) {
     for (Target target : variant.targets) {
       for (const PassStageSource& source : pass_plan()) {
         if (source.per_variant && runs_pass(source.pass, variant)) {
-          jobs.push_back(make_job(source, target, &variant));
+          jobs.push_back(make_job(source, target, variant));
         }
       }
     }
@@ -187,7 +190,7 @@ Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKin
   PassReflection frag;
   for (const PassStageSource& source : pass_plan()) {
     if (source.pass != pass) continue;
-    ShaderJob job = make_job(source, target, &variant);
+    ShaderJob job = make_job(source, target, variant);
     PENUMBRA_TRY(pipeline.run(job));
     const bool is_vertex = source.stage == ShaderStage::vertex;
     (is_vertex ? vert : frag) = std::move(job.reflection);
@@ -205,7 +208,7 @@ Result<std::string> preprocess_shader(const Variant& variant, Target target, Pas
   const auto source = std::ranges::find_if(
       pass_plan(), [&](const PassStageSource& s) { return s.pass == pass && s.stage == stage; });
   // pass_plan() lists both stages of every pass.
-  ShaderJob job = make_job(*source, target, &variant);
+  ShaderJob job = make_job(*source, target, variant);
   const PreprocessStage preprocess(shaderlib ? std::move(shaderlib) : embedded_shaderlib());
   if (Status status = preprocess.process(job); !status) {
     Error error = status.error();

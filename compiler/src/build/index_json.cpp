@@ -70,14 +70,19 @@ nlohmann::json variant_keys_json(const VariantKeys& keys) {
 }
 
 JobTable::JobTable(const std::vector<ShaderJob>& jobs) {
-  for (const ShaderJob& job : jobs) jobs_[{job.variant, job.target, job.pass, job.stage}] = &job;
+  for (const ShaderJob& job : jobs) {
+    jobs_[{job.variant, job.target, job.pass, job.stage, job.map_encoding}] = &job;
+  }
 }
 
 const ShaderJob* JobTable::find(const Variant& variant, Target target, PassKind pass,
                                 ShaderStage stage) const {
   for (const PassStageSource& source : pass_plan()) {
     if (source.pass != pass || source.stage != stage) continue;
-    const auto found = jobs_.find({source.per_variant ? &variant : nullptr, target, pass, stage});
+    const auto found =
+        source.per_variant
+            ? jobs_.find({&variant, target, pass, stage, map_encoding(variant.keys)})
+            : jobs_.find({nullptr, target, pass, stage, shared_encoding(pass, variant)});
     return found == jobs_.end() ? nullptr : found->second;
   }
   return nullptr;

@@ -30,7 +30,7 @@ class JobTable {
                         ShaderStage stage) const;
 
  private:
-  using Key = std::tuple<const Variant*, Target, PassKind, ShaderStage>;
+  using Key = std::tuple<const Variant*, Target, PassKind, ShaderStage, MapEncoding>;
   std::map<Key, const ShaderJob*> jobs_;
 };
 

@@ -21,20 +21,31 @@ std::span<const PassStageSource> pass_plan() {
   return kPlan;
 }
 
-std::string output_path(const PassStageSource& source, Target target, const Variant* variant) {
+std::string output_path(const PassStageSource& source, Target target, const Variant* variant,
+                        MapEncoding encoding) {
   std::string dir = std::string(to_string(target)) + "/";
   dir += source.per_variant && variant ? variant->name : std::string("common");
-  return dir + "/" + output_file_name(target, source.file_stem, source.stage);
+  std::string stem(source.file_stem);
+  if (!source.per_variant && encoding != MapEncoding::linear) {
+    stem += "_" + std::string(to_string(encoding));
+  }
+  return dir + "/" + output_file_name(target, stem, source.stage);
 }
 
-ShaderJob make_job(const PassStageSource& source, Target target, const Variant* variant) {
+MapEncoding shared_encoding(PassKind pass, const Variant& variant) {
+  return pass == PassKind::depth ? map_encoding(variant.keys) : MapEncoding::linear;
+}
+
+ShaderJob make_job(const PassStageSource& source, Target target, const Variant& variant) {
   ShaderJob job;
-  job.variant = source.per_variant ? variant : nullptr;
+  job.variant = source.per_variant ? &variant : nullptr;
+  job.map_encoding =
+      source.per_variant ? map_encoding(variant.keys) : shared_encoding(source.pass, variant);
   job.target = target;
   job.pass = source.pass;
   job.stage = source.stage;
   job.source_path = std::string(source.source);
-  job.output_path = output_path(source, target, variant);
+  job.output_path = output_path(source, target, job.variant, job.map_encoding);
   return job;
 }
 

@@ -24,10 +24,19 @@ struct PassStageSource {
 // compiled once per pass. Which passes a variant runs: runs_pass().
 std::span<const PassStageSource> pass_plan();
 
-// "spirv/common/depth.vert.spv" or "hlsl_dx9/pcss_b16_p16_whitepaper16/query.frag.hlsl".
-std::string output_path(const PassStageSource& source, Target target, const Variant* variant);
+// "spirv/common/depth.vert.spv", "hlsl_dx9/pcss_b16_p16_whitepaper16/query.frag.hlsl";
+// a shared pass for a map encoding other than linear gets the encoding's
+// name: "spirv/common/depth_perspective.vert.spv".
+std::string output_path(const PassStageSource& source, Target target, const Variant* variant,
+                        MapEncoding encoding);
 
-// A job for `source`, ready to run through the pipeline.
-ShaderJob make_job(const PassStageSource& source, Target target, const Variant* variant);
+// The map encoding `pass`'s shared shaders are made for when `variant` runs
+// them: its own for the depth pass, which writes the map; linear for every
+// other shared pass, which does not depend on it.
+MapEncoding shared_encoding(PassKind pass, const Variant& variant);
+
+// A job for `source`, ready to run through the pipeline: `variant`'s own,
+// or for a shared pass the one that serves `variant`'s map encoding.
+ShaderJob make_job(const PassStageSource& source, Target target, const Variant& variant);
 
 }  // namespace penumbra

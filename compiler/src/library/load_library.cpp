@@ -12,6 +12,7 @@
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/support/file.hpp"
 #include "penumbra/support/text.hpp"
 
@@ -104,6 +105,10 @@ Status read_keys(const std::filesystem::path& file, const json& keys, const std:
       Result<std::string> text = string_at(file, value, at);
       if (!text)
         status = text.error();
+      else if (name == "map_encoding" && !parse_map_encoding(*text))
+        status = index_error(
+            file, at,
+            "unknown map_encoding '" + shorten(*text) + "'; allowed " + allowed_map_encodings());
       else
         key = *text;
     }

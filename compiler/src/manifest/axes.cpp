@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/text.hpp"
 
@@ -76,6 +77,14 @@ Result<std::string> read_rotation(const JsonNode& node) {
   return node.error("unknown rotation '" + shorten(*name) +
                     "'; allowed rotations: " + std::string(kIgnRotation) +
                     " (leave the key out for the same samples at every pixel)");
+}
+
+Result<std::string> read_map_encoding(const JsonNode& node) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (parse_map_encoding(*name)) return name;
+  return node.error("unknown map_encoding '" + shorten(*name) + "'; allowed map encodings: " +
+                    allowed_map_encodings() + " (docs/techniques.md, \"Map encodings\")");
 }
 
 Result<int> read_max_nodes(const JsonNode& node) {
@@ -159,6 +168,8 @@ bool is_given(const AxisValues& values, Axis axis) {
       return !values.rotation.empty();
     case Axis::receiver_plane:
       return !values.receiver_plane.empty();
+    case Axis::map_encoding:
+      return !values.map_encoding.empty();
   }
   return false;
 }
@@ -208,6 +219,9 @@ Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& 
   }
   if (node.has("receiver_plane")) {
     PENUMBRA_TRY(read_list(node.member("receiver_plane"), read_flag, out.receiver_plane));
+  }
+  if (node.has("map_encoding")) {
+    PENUMBRA_TRY(read_list(node.member("map_encoding"), read_map_encoding, out.map_encoding));
   }
   if (node.has("target")) PENUMBRA_TRY(read_targets(node.member("target"), out.target));
   return {};

@@ -14,10 +14,10 @@
 namespace penumbra::manifest_detail {
 
 // The keys of a set or an exclusion.
-inline constexpr std::array<std::string_view, 13> kAxisKeys = {
-    "technique", "blocker_samples", "pcf_samples", "kernel",      "disk",
-    "traversal", "max_nodes",       "blur_radius", "depth_aware", "light_bits",
-    "rotation",  "receiver_plane",  "target"};
+inline constexpr std::array<std::string_view, 14> kAxisKeys = {
+    "technique", "blocker_samples", "pcf_samples",  "kernel",      "disk",
+    "traversal", "max_nodes",       "blur_radius",  "depth_aware", "light_bits",
+    "rotation",  "receiver_plane",  "map_encoding", "target"};
 
 // The keys a technique may take, in kVariantKeyNames order; every variant has
 // targets.
@@ -32,20 +32,21 @@ enum class Axis {
   depth_aware,
   light_bits,
   rotation,
-  receiver_plane
+  receiver_plane,
+  map_encoding
 };
-inline constexpr std::array kKeyAxes = {Axis::kernel,      Axis::blocker_samples, Axis::pcf_samples,
-                                        Axis::disk,        Axis::traversal,       Axis::max_nodes,
-                                        Axis::blur_radius, Axis::depth_aware,     Axis::light_bits,
-                                        Axis::rotation,    Axis::receiver_plane};
+inline constexpr std::array kKeyAxes = {
+    Axis::kernel,     Axis::blocker_samples, Axis::pcf_samples,    Axis::disk,
+    Axis::traversal,  Axis::max_nodes,       Axis::blur_radius,    Axis::depth_aware,
+    Axis::light_bits, Axis::rotation,        Axis::receiver_plane, Axis::map_encoding};
 
 std::string_view axis_name(Axis axis);
 // Whether `technique` takes the key (its TechniqueDescription's keys); it
 // ignores the keys it does not take.
 bool uses(Technique technique, Axis axis);
 // Whether a set may leave the key out for `technique` (its description's
-// optional_keys: traversal, max_nodes, depth_aware, rotation and
-// receiver_plane have defaults).
+// optional_keys: traversal, max_nodes, depth_aware, rotation,
+// receiver_plane and map_encoding have defaults).
 bool is_optional(Technique technique, Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
 // "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or
@@ -57,7 +58,8 @@ std::string describe_axes(Technique technique);
 // for pcf_grid: check_kernels), disks built in or declared in `disks`,
 // traversal kBruteForceTraversal, max_nodes 1..kMaxMaxNodes, blur_radius
 // 1..kMaxBlurRadius, depth_aware true or false, light_bits in kAllowedLightBits,
-// rotation kIgnRotation, receiver_plane true or false.
+// rotation kIgnRotation, receiver_plane true or false, map_encoding a
+// MapEncoding's name.
 Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& disks,
                  AxisValues& out);
 

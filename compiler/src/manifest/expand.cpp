@@ -11,6 +11,7 @@
 #include "manifest/axes.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/map_encoding.hpp"
 
 namespace penumbra {
 namespace {
@@ -52,9 +53,11 @@ std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes
   multiply(out, technique, Axis::light_bits, axes.light_bits, &VariantKeys::light_bits);
   multiply(out, technique, Axis::rotation, axes.rotation, &VariantKeys::rotation);
   multiply(out, technique, Axis::receiver_plane, axes.receiver_plane, &VariantKeys::receiver_plane);
+  multiply(out, technique, Axis::map_encoding, axes.map_encoding, &VariantKeys::map_encoding);
   for (VariantKeys& keys : out) {
     if (!keys.depth_aware.value_or(true)) keys.depth_aware.reset();
     if (!keys.receiver_plane.value_or(true)) keys.receiver_plane.reset();
+    if (keys.map_encoding == to_string(MapEncoding::linear)) keys.map_encoding.reset();
   }
   return out;
 }
@@ -105,6 +108,9 @@ std::uint64_t product_size(Technique technique, const AxisValues& axes) {
         break;
       case Axis::receiver_plane:
         count = axes.receiver_plane.size();
+        break;
+      case Axis::map_encoding:
+        count = axes.map_encoding.size();
         break;
     }
     size = saturating_multiply(size, std::max<std::size_t>(count, 1));
@@ -202,6 +208,14 @@ bool allows_flag(const std::vector<bool>& values, const Variant& variant, Axis a
   return contains(values, flag.value_or(false));
 }
 
+// map_encoding is unset for linear, which a technique that takes the key
+// matches without it; the others never have it.
+bool allows_encoding(const std::vector<std::string>& values, const Variant& variant) {
+  if (values.empty()) return true;
+  if (!uses(variant.technique, Axis::map_encoding)) return false;
+  return contains(values, std::string(to_string(map_encoding(variant.keys))));
+}
+
 bool matches(const AxisValues& match, const Variant& variant) {
   return (match.technique.empty() || contains(match.technique, variant.technique)) &&
          allows(match.kernel, variant.keys.kernel) &&
@@ -214,7 +228,8 @@ bool matches(const AxisValues& match, const Variant& variant) {
          allows(match.light_bits, variant.keys.light_bits) &&
          allows(match.rotation, variant.keys.rotation) &&
          allows_flag(match.receiver_plane, variant, Axis::receiver_plane,
-                     variant.keys.receiver_plane);
+                     variant.keys.receiver_plane) &&
+         allows_encoding(match.map_encoding, variant);
 }
 
 void apply(const Exclusion& exclusion, Variant& variant) {

@@ -13,8 +13,12 @@ using Dialect = ReflectionDialect;
 // targets of one dialect reflect alike.
 class TargetReflector {
  public:
-  TargetReflector(Target target, PassKind pass, const Variant* variant)
-      : target_(target), dialect_(traits(target).dialect), pass_(pass), variant_(variant) {}
+  TargetReflector(Target target, PassKind pass, const Variant* variant, MapEncoding encoding)
+      : target_(target),
+        dialect_(traits(target).dialect),
+        pass_(pass),
+        variant_(variant),
+        encoding_(encoding) {}
 
   // The stage's part: its bindings, and the vertex inputs (vertex stage) or
   // the render targets, depth target and extensions (fragment stage).
@@ -47,6 +51,7 @@ class TargetReflector {
       out.depth_target = dialect_ == Dialect::d3d10
                              ? "DXGI_FORMAT_D32_FLOAT"
                              : std::string(api_format(target_, TextureFormat::d32_float));
+      out.map_encoding = std::string(to_string(encoding_));
     }
     // WebGL2 and OpenGL ES 3.0 render to float formats only with this.
     if (dialect_ == Dialect::essl300) out.extensions.push_back("EXT_color_buffer_float");
@@ -151,6 +156,8 @@ class TargetReflector {
     out.view_format = std::string(api_view_format(target_, format));
     out.mipmapped = texture.mipmapped;
     out.sampler.state = texture.sampler;
+    // A reversed-Z map lights a receiver whose reference is at or above the texel.
+    out.sampler.state.greater_equal = texture.sampler.comparison && !depth_increases(encoding_);
     const std::string slot = std::to_string(texture.slot);
     switch (dialect_) {
       case Dialect::spirv:
@@ -207,19 +214,21 @@ class TargetReflector {
   Dialect dialect_;
   PassKind pass_;
   const Variant* variant_;  // null for passes shared by every variant
+  MapEncoding encoding_;    // the map's: the variant's, or the shared pass's
 };
 
 }  // namespace
 
 Result<PassReflection> reflect_target(Target target, PassKind pass, const Variant* variant,
-                                      const ShaderInterface& iface) {
-  return TargetReflector(target, pass, variant).reflect(iface);
+                                      MapEncoding encoding, const ShaderInterface& iface) {
+  return TargetReflector(target, pass, variant, encoding).reflect(iface);
 }
 
 PassReflection join_stages(PassReflection vert, const PassReflection& frag) {
   vert.frag = frag.frag;
   vert.render_targets = frag.render_targets;
   vert.depth_target = frag.depth_target;
+  vert.map_encoding = frag.map_encoding;
   vert.extensions = frag.extensions;
   return vert;
 }

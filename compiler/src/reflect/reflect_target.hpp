@@ -6,6 +6,7 @@
 #pragma once
 
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/result.hpp"
 
@@ -15,9 +16,11 @@ namespace penumbra {
 // inputs (vertex stage) or the render targets, depth target and extensions
 // (fragment stage). Errors (compile, where = the pass and target) name a
 // resource shader_contract.hpp lacks or one whose binding differs from the
-// one there, or a constant texture `variant` has no contents for.
+// one there, or a constant texture `variant` has no contents for. `encoding`
+// is the map's (ShaderJob::map_encoding): the depth pass's depth test and the
+// comparison sampler's function follow it.
 Result<PassReflection> reflect_target(Target target, PassKind pass, const Variant* variant,
-                                      const ShaderInterface& iface);
+                                      MapEncoding encoding, const ShaderInterface& iface);
 
 // The pass's reflection from the parts of its two stages.
 PassReflection join_stages(PassReflection vert, const PassReflection& frag);

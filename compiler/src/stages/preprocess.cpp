@@ -30,7 +30,8 @@ Status PreprocessStage::process(ShaderJob& job) const {
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure_environment(shader, job.stage);
 
-  ShaderlibIncluder includer(*shaderlib_, variant_header(job.variant, job.target), job.inputs);
+  ShaderlibIncluder includer(*shaderlib_, variant_header(job.variant, job.target, job.map_encoding),
+                             job.inputs);
   std::string output;
   if (!shader.preprocess(GetDefaultResources(), 450, ENoProfile, false, false, EShMsgDefault,
                          &output, includer)) {

@@ -52,6 +52,8 @@ struct D3D10Api {
   static constexpr auto comparison_always = D3D10_COMPARISON_ALWAYS;
   static constexpr auto comparison_less = D3D10_COMPARISON_LESS;
   static constexpr auto comparison_less_equal = D3D10_COMPARISON_LESS_EQUAL;
+  static constexpr auto comparison_greater = D3D10_COMPARISON_GREATER;
+  static constexpr auto comparison_greater_equal = D3D10_COMPARISON_GREATER_EQUAL;
   static constexpr auto comparison_never = D3D10_COMPARISON_NEVER;
   static constexpr auto depth_write_mask_all = D3D10_DEPTH_WRITE_MASK_ALL;
   static constexpr auto depth_write_mask_zero = D3D10_DEPTH_WRITE_MASK_ZERO;

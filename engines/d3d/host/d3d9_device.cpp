@@ -400,7 +400,7 @@ std::string D3d9Device::submit(const Draw& draw, std::vector<DWORD>& bound) {
   check(device_->SetDepthStencilSurface(depth), "SetDepthStencilSurface" + what);
   const std::pair<D3DRENDERSTATETYPE, DWORD> states[] = {
       {D3DRS_ZENABLE, depth ? D3DZB_TRUE : D3DZB_FALSE},
-      {D3DRS_ZFUNC, D3DCMP_LESS},
+      {D3DRS_ZFUNC, DWORD(draw.depth_greater ? D3DCMP_GREATER : D3DCMP_LESS)},
       {D3DRS_ZWRITEENABLE, TRUE},
       {D3DRS_CULLMODE, D3DCULL_NONE},
       {D3DRS_ALPHABLENDENABLE, FALSE},

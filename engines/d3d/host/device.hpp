@@ -44,7 +44,8 @@ struct SamplerDesc {
   std::string filter = "nearest";   // nearest | linear
   std::string mip_filter = "none";  // none | nearest
   std::string address = "clamp_to_edge";
-  bool comparison = false;  // LESS_EQUAL comparison (D3D10/11 only)
+  bool comparison = false;     // LESS_EQUAL comparison (D3D10/11 only)
+  bool greater_equal = false;  // with comparison: GREATER_EQUAL instead (a reversed-Z map)
 };
 
 // One vertex element: "TEXCOORD0" as SEMANTIC "TEXCOORD", index 0.
@@ -84,13 +85,15 @@ struct SamplerBind {
 
 // One draw into level `colour_level` of `colour` (and/or `depth`), cleared
 // first when asked, with the viewport covering that level. Triangle lists,
-// no culling; depth test LESS with writes when `depth` is set, else off.
+// no culling; depth test LESS (GREATER with `depth_greater`) with writes
+// when `depth` is set, else off.
 struct Draw {
   std::optional<int> colour;
   int colour_level = 0;
   std::optional<int> depth;
   std::optional<std::array<float, 4>> clear_colour;
   std::optional<float> clear_depth;
+  bool depth_greater = false;
   int vs = 0;
   int ps = 0;
   std::vector<InputElement> inputs;

@@ -114,6 +114,7 @@ class DxgiDevice final : public Device {
   std::string description_;
   ComPtr<typename Api::RasterizerState> rasterizer_;
   ComPtr<typename Api::DepthStencilState> depth_test_;
+  ComPtr<typename Api::DepthStencilState> depth_greater_;  // reversed-Z maps
   ComPtr<typename Api::DepthStencilState> no_depth_;
   std::map<int, Texture> textures_;
   std::map<int, Buffer> buffers_;
@@ -143,6 +144,10 @@ std::string DxgiDevice<Api>::init() {
   depth.BackFace = keep;
   if (hr = device_->CreateDepthStencilState(&depth, &depth_test_); FAILED(hr)) {
     return failed("CreateDepthStencilState", hr, "depth test");
+  }
+  depth.DepthFunc = Api::comparison_greater;
+  if (hr = device_->CreateDepthStencilState(&depth, &depth_greater_); FAILED(hr)) {
+    return failed("CreateDepthStencilState", hr, "reversed depth test");
   }
   depth.DepthEnable = FALSE;
   depth.DepthWriteMask = Api::depth_write_mask_zero;
@@ -421,7 +426,9 @@ std::string DxgiDevice<Api>::sampler(const SamplerDesc& desc, SamplerState*& sta
     }
     s.AddressU = s.AddressV = s.AddressW = Api::texture_address_clamp;
     s.MaxAnisotropy = 1;
-    s.ComparisonFunc = settings.comparison ? Api::comparison_less_equal : Api::comparison_never;
+    s.ComparisonFunc = !settings.comparison     ? Api::comparison_never
+                       : settings.greater_equal ? Api::comparison_greater_equal
+                                                : Api::comparison_less_equal;
     s.MaxLOD = settings.mips ? Api::float32_max : 0.0f;
     const HRESULT hr = device_->CreateSamplerState(&s, &cached);
     if (FAILED(hr)) {
@@ -542,7 +549,10 @@ std::string DxgiDevice<Api>::draw(const Draw& d) {
   }
 
   context_->OMSetRenderTargets(rtv ? 1 : 0, rtv ? &rtv : nullptr, dsv);
-  context_->OMSetDepthStencilState(dsv ? depth_test_.Get() : no_depth_.Get(), 0);
+  context_->OMSetDepthStencilState(!dsv              ? no_depth_.Get()
+                                   : d.depth_greater ? depth_greater_.Get()
+                                                     : depth_test_.Get(),
+                                   0);
   Api::set_blend_state(context_.Get());
   context_->RSSetState(rasterizer_.Get());
   context_->RSSetViewports(1, &viewport);

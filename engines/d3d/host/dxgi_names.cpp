@@ -152,6 +152,7 @@ std::string parse_sampler(const SamplerDesc& desc, SamplerSettings& settings) {
   }
   settings.linear = desc.filter == "linear";
   settings.comparison = desc.comparison;
+  settings.greater_equal = desc.comparison && desc.greater_equal;
   settings.mips = desc.mip_filter == "nearest";
   return {};
 }

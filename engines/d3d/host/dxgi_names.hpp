@@ -50,9 +50,10 @@ std::string split_semantic(const std::string& semantic, std::string& name, UINT&
 
 // A sampler state in API-neutral terms, ordered so it can key a cache.
 struct SamplerSettings {
-  bool linear = false;      // MIN_MAG_LINEAR_MIP_POINT, else MIN_MAG_MIP_POINT
-  bool comparison = false;  // the COMPARISON_ filter with LESS_EQUAL, else NEVER
-  bool mips = false;        // MaxLOD FLOAT32_MAX (point mips), else 0 (level 0 only)
+  bool linear = false;         // MIN_MAG_LINEAR_MIP_POINT, else MIN_MAG_MIP_POINT
+  bool comparison = false;     // the COMPARISON_ filter with LESS_EQUAL, else NEVER
+  bool greater_equal = false;  // with comparison: GREATER_EQUAL
+  bool mips = false;           // MaxLOD FLOAT32_MAX (point mips), else 0 (level 0 only)
   auto operator<=>(const SamplerSettings&) const = default;
 };
 

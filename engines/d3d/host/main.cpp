@@ -9,11 +9,12 @@
 //   buffer ID PATH                raw float32 vertices
 //   shader ID vs|ps PATH          compiled bytecode (.d3dbc, .dxbc)
 //   draw                          then the draw's lines, then `end`:
-//     colour ID LEVEL | depth ID | clear_colour R G B A | clear_depth D
+//     colour ID LEVEL | depth ID | clear_colour R G B A | clear_depth D | depth_greater
 //     vs ID | ps ID | input SEMANTIC FORMAT OFFSET | vertices ID STRIDE COUNT
 //     constant vs|ps REG X Y Z W                     (Direct3D 9)
 //     member vs|ps REG BLOCK_SIZE OFFSET X Y Z W     (Direct3D 10, 11)
-//     texture REG ID [VIEW_FORMAT] | sampler REG FILTER MIP_FILTER ADDRESS compare|plain
+//     texture REG ID [VIEW_FORMAT]
+//     sampler REG FILTER MIP_FILTER ADDRESS compare|compare_greater|plain
 //   copy SRC SRC_LEVEL DST DST_LEVEL
 //   read ID LEVEL PATH            raw float32 texels
 //   release ID
@@ -112,6 +113,8 @@ std::string parse_draw_line(const std::string& line, Draw& draw) {
     float d = 0.0f;
     in >> d;
     draw.clear_depth = d;
+  } else if (word == "depth_greater") {
+    draw.depth_greater = true;
   } else if (word == "vs") {
     in >> draw.vs;
   } else if (word == "ps") {
@@ -147,10 +150,12 @@ std::string parse_draw_line(const std::string& line, Draw& draw) {
     SamplerBind bind;
     std::string compare;
     in >> bind.reg >> bind.state.filter >> bind.state.mip_filter >> bind.state.address >> compare;
-    if (compare != "compare" && compare != "plain") {
-      return "comparison '" + compare + "' (allowed: compare, plain) in '" + line + "'";
+    if (compare != "compare" && compare != "compare_greater" && compare != "plain") {
+      return "comparison '" + compare + "' (allowed: compare, compare_greater, plain) in '" + line +
+             "'";
     }
-    bind.state.comparison = compare == "compare";
+    bind.state.comparison = compare != "plain";
+    bind.state.greater_equal = compare == "compare_greater";
     draw.samplers.push_back(bind);
   } else {
     return "unknown draw line '" + line + "'";

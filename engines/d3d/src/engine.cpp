@@ -5,6 +5,7 @@
 #include "host_process.hpp"
 #include "job.hpp"
 #include "pass_binding.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/support/full_screen_triangle.hpp"
 #include "penumbra/support/image_checks.hpp"
 #include "penumbra/support/minmax_levels.hpp"
@@ -190,7 +191,11 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
   D3dMap map;
   map.width = width;
   map.height = height;
-  DrawTarget target{std::nullopt, 0, std::nullopt, width, height, std::nullopt, 1.0f};
+  // A reversed-Z map is cleared to 0, its far plane, and keeps the greater depth.
+  const bool reversed =
+      depth.reflection.map_encoding == to_string(MapEncoding::perspective_reversed);
+  const float far = reversed ? 0.0f : 1.0f;
+  DrawTarget target{std::nullopt, 0, std::nullopt, width, height, std::nullopt, far, reversed};
   if (runtime_ == D3dRuntime::d3d9) {
     // The whitepaper's map: an R32F colour target, and a depth buffer that
     // only depth-tests (docs/engines/d3d9.md).
@@ -199,7 +204,7 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
     map.format = format->format;
     map.id = job.texture(map.format, width, height, 1, "target");
     target.colour = map.id;
-    target.clear_colour = std::array<float, 4>{1.0f, 1.0f, 1.0f, 1.0f};  // far
+    target.clear_colour = std::array<float, 4>{far, far, far, far};
     target.depth = job.texture(depth.reflection.depth_target, width, height, 1, "depth");
   } else {
     // One typeless texture: written through its D32_FLOAT depth view, read

@@ -68,9 +68,11 @@ Status write_constants(std::string& block, const StageBindings& stage, const cha
 }
 
 std::string sampler_line(const std::string& reg, const SamplerState& state) {
+  const char* comparison = !state.comparison     ? "plain"
+                           : state.greater_equal ? "compare_greater"
+                                                 : "compare";
   return "sampler " + reg + " " + std::string(to_string(state.filter)) + " " +
-         std::string(to_string(state.mip_filter)) + " clamp_to_edge " +
-         (state.comparison ? "compare" : "plain") + "\n";
+         std::string(to_string(state.mip_filter)) + " clamp_to_edge " + comparison + "\n";
 }
 
 Status write_textures(Job& job, std::string& block, const StageBindings& frag,
@@ -114,6 +116,7 @@ Status draw_pass(Job& job, const D3dPass& pass, const std::string& where,
   if (target.depth) block += "depth " + std::to_string(*target.depth) + "\n";
   if (target.clear_colour) block += "clear_colour " + vec4(*target.clear_colour) + "\n";
   if (target.clear_depth) block += "clear_depth " + number(*target.clear_depth) + "\n";
+  if (target.depth_greater) block += "depth_greater\n";
   block += "vs " + std::to_string(*vs) + "\nps " + std::to_string(*ps) + "\n";
   unsigned offset = 0;
   for (const VertexAttribute& input : reflection.vertex_inputs) {

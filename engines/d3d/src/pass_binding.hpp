@@ -24,6 +24,7 @@ struct DrawTarget {
   int height = 0;
   std::optional<std::array<float, 4>> clear_colour;
   std::optional<float> clear_depth;
+  bool depth_greater = false;  // the depth test GREATER (a reversed-Z map), else LESS
 };
 
 struct DrawGeometry {

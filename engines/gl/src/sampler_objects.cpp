@@ -22,7 +22,10 @@ Result<Sampler> create_sampler_object(const SamplerState& state) {
   glSamplerParameteri(sampler.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glSamplerParameteri(sampler.get(), GL_TEXTURE_COMPARE_MODE,
                       state.comparison ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-  if (state.comparison) glSamplerParameteri(sampler.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  if (state.comparison) {
+    glSamplerParameteri(sampler.get(), GL_TEXTURE_COMPARE_FUNC,
+                        state.greater_equal ? GL_GEQUAL : GL_LEQUAL);
+  }
   PENUMBRA_TRY(check_gl("creating a sampler object"));
   return sampler;
 }

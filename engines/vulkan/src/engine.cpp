@@ -65,6 +65,13 @@ Result<FloatImage> Engine::read_shadow_map(const ShadowMap& map) {
   });
 }
 
+Result<FloatImage> Engine::read_shadow_depth(const ShadowMap& map) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<FloatImage> {
+    PENUMBRA_TRY(check_owner(*map.images_, *context_));
+    return detail::read_shadow_depth(*context_, *map.images_);
+  });
+}
+
 Result<MinmaxBuild> Engine::build_minmax(ShadowMap& map, const PassProgram& init,
                                          const PassProgram& reduce, const ParamBlock& params) {
   return detail::run_validated(*context_->validation, [&]() -> Result<MinmaxBuild> {

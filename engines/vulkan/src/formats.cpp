@@ -30,6 +30,8 @@ constexpr Requirement kRequirements[] = {
      "SAMPLED_IMAGE_DEPTH_COMPARISON", "the comparison sampler of shadow_cmp"},
     {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
      "shadow map uploads"},
+    {kMapDepthFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
+     "depth readbacks of hardware-encoded maps"},
     {kMapColourFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
      "the depth pass"},
     {kMapColourFormat, false, VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT, "SAMPLED_IMAGE",

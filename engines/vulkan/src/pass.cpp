@@ -117,9 +117,11 @@ void record_draw(VkCommandBuffer cmd, const PassDraw& draw, VkRenderPass render_
                  const PassDescriptors& descriptors, const std::optional<vk::Buffer>& vertices,
                  const vk::TimestampQueries* timer) {
   const VkExtent2D extent = draw.target.colour->extent();
+  // The far plane, in the map's depth (reversed-Z: 0).
+  const float far = draw.shape.depth_greater ? 0.0f : 1.0f;
   VkClearValue clears[2]{};
-  clears[0].color.float32[0] = 1.0f;  // the far plane, in normalized depth
-  clears[1].depthStencil.depth = 1.0f;
+  clears[0].color.float32[0] = far;
+  clears[1].depthStencil.depth = far;
   VkRenderPassBeginInfo begin{};
   begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
   begin.renderPass = render_pass;

@@ -42,6 +42,7 @@ vk::SamplerDesc sampler_desc(const SamplerState& state) {
   // The min-max mip is read at explicit levels (textureLod(shadow_minmax, uv, l - 1)).
   desc.max_lod = state.mip_filter == MipFilter::nearest ? VK_LOD_CLAMP_NONE : 0.0f;
   desc.comparison = state.comparison;
+  desc.greater_equal = state.greater_equal;
   return desc;
 }
 

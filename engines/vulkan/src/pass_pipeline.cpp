@@ -155,6 +155,7 @@ Result<PassPipeline> PassPipeline::create(VkDevice device, const PassProgram& pr
   desc.position_format = shape.position_format;
   desc.position_stride = shape.position_components * static_cast<std::uint32_t>(sizeof(float));
   desc.depth_test = shape.depth_test;
+  desc.depth_greater = shape.depth_greater;
   desc.gl_clip_depth = program.gl_clip_depth;
   auto pipeline = vk::create_graphics_pipeline(device, desc);
   if (!pipeline) return pipeline.error();

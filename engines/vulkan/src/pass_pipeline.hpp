@@ -25,6 +25,8 @@ struct PassShape {
   std::uint32_t position_components = 0;           // floats per vertex
   bool depth_test = false;
   bool fragment_depth = false;  // the fragment shader must write the fragment depth
+  // With depth_test: GREATER, depth and colour cleared to 0 (a reversed-Z map).
+  bool depth_greater = false;
 };
 
 class PassPipeline {

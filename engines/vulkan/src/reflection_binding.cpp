@@ -13,7 +13,7 @@ namespace penumbra::detail {
 namespace {
 
 bool same_state(const SamplerState& a, const SamplerState& b) {
-  return a.comparison == b.comparison && a.filter == b.filter && a.mip_filter == b.mip_filter;
+  return a == b;
 }
 
 bool same_resource(const PlannedBinding& a, const PlannedBinding& b) {

@@ -16,7 +16,8 @@ Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context&
   const auto h = static_cast<std::uint32_t>(height);
   const vk::ImageDesc depth_desc{w, h, kMapDepthFormat,
                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                  VK_IMAGE_ASPECT_DEPTH_BIT};
   auto depth = vk::Image::create(*context.device, depth_desc, "the shadow map's depth image");
   if (!depth) return depth.error();

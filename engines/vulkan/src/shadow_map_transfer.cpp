@@ -21,14 +21,25 @@ Result<std::unique_ptr<ShadowMapImages>> upload_shadow_map(Context& context,
   return std::move(*images);
 }
 
-Result<FloatImage> read_shadow_map(Context& context, const ShadowMapImages& map) {
-  auto texels = read_image(*context.device, *context.commands, map.colour, kMapColourLayout, 1,
-                           "the shadow map's colour image");
+namespace {
+
+Result<FloatImage> read_map_image(Context& context, const vk::Image& image, VkImageLayout layout,
+                                  const std::string& what) {
+  auto texels = read_image(*context.device, *context.commands, image, layout, 1, what);
   if (!texels) return texels.error();
-  FloatImage image(static_cast<int>(map.colour.desc().width),
-                   static_cast<int>(map.colour.desc().height), 1);
-  image.data = std::move(*texels);
-  return image;
+  FloatImage out(static_cast<int>(image.desc().width), static_cast<int>(image.desc().height), 1);
+  out.data = std::move(*texels);
+  return out;
+}
+
+}  // namespace
+
+Result<FloatImage> read_shadow_map(Context& context, const ShadowMapImages& map) {
+  return read_map_image(context, map.colour, kMapColourLayout, "the shadow map's colour image");
+}
+
+Result<FloatImage> read_shadow_depth(Context& context, const ShadowMapImages& map) {
+  return read_map_image(context, map.depth, kMapDepthLayout, "the shadow map's depth image");
 }
 
 }  // namespace penumbra::detail

@@ -13,7 +13,8 @@ namespace penumbra::detail {
 Result<std::unique_ptr<ShadowMapImages>> upload_shadow_map(Context& context,
                                                            const FloatImage& normalized_depth);
 
-// See Engine::read_shadow_map.
+// See Engine::read_shadow_map and read_shadow_depth.
 Result<FloatImage> read_shadow_map(Context& context, const ShadowMapImages& map);
+Result<FloatImage> read_shadow_depth(Context& context, const ShadowMapImages& map);
 
 }  // namespace penumbra::detail

@@ -15,8 +15,8 @@
 
 #include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/target_reflection.hpp"
-#include "reflection_binding.hpp"
 #include "penumbra/model/target_traits.hpp"
+#include "reflection_binding.hpp"
 
 namespace penumbra::detail {
 

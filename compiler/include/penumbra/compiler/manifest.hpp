@@ -42,11 +42,12 @@ struct AxisValues {
   std::vector<std::string> disk;       // family names
   std::vector<std::string> traversal;  // kBruteForceTraversal
   std::vector<int> max_nodes;
-  std::vector<int> blur_radius;       // 1..kMaxBlurRadius
-  std::vector<bool> depth_aware;      // false gives variants with the key unset
-  std::vector<std::string> rotation;  // kIgnRotation
-  std::vector<bool> receiver_plane;   // false gives variants with the key unset
-  std::vector<int> light_bits;        // kAllowedLightBits
+  std::vector<int> blur_radius;           // 1..kMaxBlurRadius
+  std::vector<bool> depth_aware;          // false gives variants with the key unset
+  std::vector<std::string> rotation;      // kIgnRotation
+  std::vector<bool> receiver_plane;       // false gives variants with the key unset
+  std::vector<std::string> map_encoding;  // "linear" gives variants with the key unset
+  std::vector<int> light_bits;            // kAllowedLightBits
   std::vector<Target> target;
 };
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/pass.hpp"
 #include "penumbra/model/target_reflection.hpp"
@@ -34,6 +35,9 @@ struct BytecodeFile {
 struct ShaderJob {
   // Inputs.
   const Variant* variant = nullptr;  // null: the shader does not depend on the variant
+  // The map's encoding (map_encoding.hpp): the variant's, or for a shared
+  // pass that of the variants it serves (the depth pass writes it).
+  MapEncoding map_encoding = MapEncoding::linear;
   Target target = Target::spirv;
   PassKind pass = PassKind::query;
   ShaderStage stage = ShaderStage::fragment;

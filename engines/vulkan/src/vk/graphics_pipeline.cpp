@@ -62,7 +62,7 @@ Result<GraphicsPipeline> create_graphics_pipeline(VkDevice device,
   depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
   depth.depthTestEnable = desc.depth_test ? VK_TRUE : VK_FALSE;
   depth.depthWriteEnable = desc.depth_test ? VK_TRUE : VK_FALSE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  depth.depthCompareOp = desc.depth_greater ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
 
   VkPipelineColorBlendAttachmentState blend_attachment{};
   blend_attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |

@@ -27,6 +27,7 @@ struct GraphicsPipelineDesc {
   std::uint32_t position_stride = 0;
   // Depth test LESS with writes; needs a render pass with a depth attachment.
   bool depth_test = false;
+  bool depth_greater = false;  // with depth_test: GREATER instead (a reversed-Z map)
   // OpenGL's clip volume, z in [-w, w] (VK_EXT_depth_clip_control enabled).
   bool gl_clip_depth = false;
 };

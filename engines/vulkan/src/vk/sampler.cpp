@@ -16,7 +16,9 @@ Result<Sampler> create_sampler(VkDevice device, const SamplerDesc& desc) {
   info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.compareEnable = desc.comparison ? VK_TRUE : VK_FALSE;
-  info.compareOp = desc.comparison ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_NEVER;
+  info.compareOp = !desc.comparison     ? VK_COMPARE_OP_NEVER
+                   : desc.greater_equal ? VK_COMPARE_OP_GREATER_OR_EQUAL
+                                        : VK_COMPARE_OP_LESS_OR_EQUAL;
   info.minLod = 0.0f;
   info.maxLod = desc.max_lod;
   info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;

@@ -17,7 +17,8 @@ struct SamplerDesc {
   // Levels past the base: 0 reads level 0 only (GL's non-mipmapped
   // minification); VK_LOD_CLAMP_NONE every level, the nearest one.
   float max_lod = 0.0f;
-  bool comparison = false;  // compare LESS_OR_EQUAL: lit when reference <= texel
+  bool comparison = false;     // compare LESS_OR_EQUAL: lit when reference <= texel
+  bool greater_equal = false;  // with comparison: GREATER_OR_EQUAL (a reversed-Z map)
 };
 
 Result<Sampler> create_sampler(VkDevice device, const SamplerDesc& desc);

@@ -5,9 +5,12 @@
 // linear one does, up to the float32 rounding of the encoding itself.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "penumbra/model/model.hpp"
 
 namespace penumbra {
 
@@ -16,6 +19,9 @@ enum class MapEncoding {
   perspective,  // d = far (z - near) / (z (far - near)): D3D and Vulkan depth, GL's window z
   perspective_reversed,  // d = near (far - z) / (z (far - near)): reversed-Z, 1 at the near plane
 };
+
+inline constexpr MapEncoding kAllMapEncodings[] = {MapEncoding::linear, MapEncoding::perspective,
+                                                   MapEncoding::perspective_reversed};
 
 // The light projection's clip planes: the map's near plane n (the light's
 // near_plane) and its far plane (1 / depth_scale in ShadowParams).
@@ -41,5 +47,9 @@ std::string_view to_string(MapEncoding encoding);
 std::optional<MapEncoding> parse_map_encoding(std::string_view name);
 // "linear, perspective, perspective_reversed", for messages.
 std::string allowed_map_encodings();
+
+// The encoding of the map a variant reads: its map_encoding key, linear when
+// unset (or not a name parse_map_encoding() takes).
+MapEncoding map_encoding(const VariantKeys& keys);
 
 }  // namespace penumbra

@@ -113,12 +113,15 @@ struct VariantKeys {
   std::optional<int> light_bits = std::nullopt;    // bitmask_backprojection: N light samples
   std::optional<std::string> rotation = std::nullopt;  // disk techniques: "ign" per pixel
   std::optional<bool> receiver_plane = std::nullopt;   // pcf_poisson, pcss: true, or unset
+  // hard, pcf_grid, pcf_poisson, pcss: "perspective" or "perspective_reversed"
+  // (map_encoding.hpp), or unset for linear.
+  std::optional<std::string> map_encoding = std::nullopt;
 };
 
 // The keys' names, in the one order every listing of keys follows.
-inline constexpr std::array<std::string_view, 11> kVariantKeyNames = {
-    "kernel",      "blocker_samples", "pcf_samples", "disk",     "traversal",     "max_nodes",
-    "blur_radius", "depth_aware",     "light_bits",  "rotation", "receiver_plane"};
+inline constexpr std::array<std::string_view, 12> kVariantKeyNames = {
+    "kernel",      "blocker_samples", "pcf_samples", "disk",     "traversal",      "max_nodes",
+    "blur_radius", "depth_aware",     "light_bits",  "rotation", "receiver_plane", "map_encoding"};
 
 // Calls f(name, key) for each key in kVariantKeyNames order, set or not; `key`
 // is the std::optional member, const when `keys` is.
@@ -136,6 +139,7 @@ void for_each_key(Keys& keys, F&& f) {
   f(kVariantKeyNames[8], keys.light_bits);
   f(kVariantKeyNames[9], keys.rotation);
   f(kVariantKeyNames[10], keys.receiver_plane);
+  f(kVariantKeyNames[11], keys.map_encoding);
 }
 
 // minmax_pcf's baked 1 / K^2 (MINMAX_PCF_INV_AREA), rounded to float. The
@@ -179,7 +183,8 @@ struct Variant {
 // Builds the stable variant name from technique and keys:
 // hard, pcf_grid_k5, pcf_poisson_p16_poisson, pcss_b16_p16_whitepaper16,
 // minmax_pcf_k16_brute_force, backprojection_n4096, screen_blur_r4_depth_aware,
-// bitmask_backprojection_bits256, pcss_b16_p16_poisson_ign_receiver_plane.
+// bitmask_backprojection_bits256, pcss_b16_p16_poisson_ign_receiver_plane,
+// pcf_grid_k3_perspective_reversed.
 std::string variant_name(Technique technique, const VariantKeys& keys);
 
 // A library's order of variants: technique order, then keys ascending (a

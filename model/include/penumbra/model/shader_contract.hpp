@@ -45,6 +45,7 @@ struct SamplerState {
   bool comparison = false;          // compare with LESS_EQUAL: lit when reference <= texel
   Filter filter = Filter::nearest;  // minification and magnification
   MipFilter mip_filter = MipFilter::none;
+  bool greater_equal = false;  // with comparison: GREATER_EQUAL instead (reversed-Z maps)
   bool operator==(const SamplerState&) const = default;
 };
 

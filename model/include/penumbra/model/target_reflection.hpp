@@ -104,7 +104,12 @@ struct RenderTarget {
 struct PassReflection {
   std::vector<VertexAttribute> vertex_inputs;
   std::vector<RenderTarget> render_targets;
-  std::string depth_target;             // the depth pass: the depth format; else empty
+  std::string depth_target;  // the depth pass: the depth format; else empty
+  // The depth pass: the MapEncoding its targets hold ("linear": the shader
+  // writes the fragment depth; "perspective": the rasterizer's, depth test
+  // LESS, cleared to 1; "perspective_reversed": test GREATER, cleared to 0,
+  // the colour target too); else empty.
+  std::string map_encoding;
   std::vector<std::string> extensions;  // what the API must enable: "EXT_color_buffer_float"
   StageBindings vert;
   StageBindings frag;

@@ -51,7 +51,7 @@ class ShadowMapView {
  private:
   double decoded(double stored) const {
     const double z = decode_depth(encoded_->encoding, stored, encoded_->range);
-    return z + encoded_->shift * tie_margin(*encoded_, z);
+    return std::isfinite(z) ? z + encoded_->shift * tie_margin(*encoded_, z) : z;
   }
 
   const FloatImage* image_;

@@ -9,6 +9,7 @@
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/support/shard.hpp"
 #include "penumbra/verify/progress.hpp"
@@ -98,8 +99,9 @@ struct DepthCheck {
   std::string scene;
   Target target = Target::spirv;
   std::string backend = "vulkan";  // the path whose map it is (verify.json's backend)
-  std::size_t texels = 0;          // texels whose centre is clear of every occluder edge
-  std::size_t mismatched = 0;      // of those, |gpu - ray cast| > 1e-5 relative
+  MapEncoding map_encoding = MapEncoding::linear;  // what the map stores
+  std::size_t texels = 0;      // texels whose centre is clear of every occluder edge
+  std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
   double max_abs_error = 0.0;
   bool pass = false;
   double seconds = 0.0;  // rendering and checking the map

@@ -100,7 +100,8 @@ class Engine {
 
   // Draws `triangles` (light-view-space positions, a triangle list, no
   // culling) with the depth program into a new width x height shadow map:
-  // both images cleared to 1.0, depth test LESS, the fragment's output 0 into
+  // both images cleared to 1.0, depth test LESS (a reversed-Z program, by its
+  // reflection's map_encoding: 0.0 and GREATER), the fragment's output 0 into
   // the colour image and its depth into the depth image.
   Result<std::shared_ptr<ShadowMap>> render_depth(const PassProgram& depth,
                                                   std::span<const std::array<float, 3>> triangles,
@@ -112,6 +113,11 @@ class Engine {
 
   // The colour image's normalized depth, one channel, row 0 first.
   Result<FloatImage> read_shadow_map(const ShadowMap& map);
+  // The depth image's values, likewise: what programs with `shadow_cmp` read.
+  // The same as read_shadow_map() for a linear map; for an engine's hardware
+  // depth (a map_encoding) the rasterizer's depth, where the colour image
+  // holds the shader's encoding of the same surface.
+  Result<FloatImage> read_shadow_depth(const ShadowMap& map);
 
   // Builds `map`'s min-max mip (replacing any it had) with a library's
   // minmax_init and minmax_reduce programs: level 1, ceil(W/2) x ceil(H/2),

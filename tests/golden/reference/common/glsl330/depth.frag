@@ -17,8 +17,8 @@ layout(location = 0) out float depth_out;
 
 void main()
 {
-    float normalized = light_z * params.sampling.z;
-    depth_out = normalized;
-    gl_FragDepth = normalized;
+    float stored = light_z * params.sampling.z;
+    depth_out = stored;
+    gl_FragDepth = stored;
 }
 

@@ -25,9 +25,9 @@ struct SPIRV_Cross_Output
 
 void frag_main()
 {
-    float normalized = light_z * params_sampling.z;
-    depth_out = normalized;
-    gl_FragDepth = normalized;
+    float stored = light_z * params_sampling.z;
+    depth_out = stored;
+    gl_FragDepth = stored;
 }
 
 SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)

@@ -1,0 +1,53 @@
+// The map's encoding (the map_encoding key, docs/techniques.md, "Map
+// encodings"): PENUMBRA_MAP_ENCODING 0 or unset, linear z * DEPTH_SCALE; 1,
+// the hardware depth of a perspective projection from NEAR_PLANE to
+// 1 / DEPTH_SCALE; 2, the same reversed-Z.
+#ifndef PENUMBRA_MAP_ENCODING_GLSL
+#define PENUMBRA_MAP_ENCODING_GLSL
+
+#include "common/params.glsl"
+
+#ifndef PENUMBRA_MAP_ENCODING
+#define PENUMBRA_MAP_ENCODING 0
+#endif
+
+#if PENUMBRA_MAP_ENCODING == 0
+// Linear z: macros, so that the library's own maps compile to the text they
+// always did.
+#define shadow_encode(z) ((z) * DEPTH_SCALE)
+#define shadow_linear(stored) ((stored) * INV_DEPTH_SCALE)
+#else
+// The stored value for linear z. Written as a quotient of differences, not
+// A - B / z: its float32 error stays within a few ulp of the stored value,
+// which the reference's tie margin allows for.
+float shadow_encode(float z) {
+#if PENUMBRA_MAP_ENCODING == 1
+  return (z - NEAR_PLANE) * INV_DEPTH_SCALE / (z * (INV_DEPTH_SCALE - NEAR_PLANE));
+#else
+  return (INV_DEPTH_SCALE - z) * NEAR_PLANE / (z * (INV_DEPTH_SCALE - NEAR_PLANE));
+#endif
+}
+
+// Linear z of a stored value: n f over a weighted sum of the planes, which
+// stays exact at both ends (the far plane gives f, not n f / 0) however far
+// the far plane lies.
+float shadow_linear(float stored) {
+#if PENUMBRA_MAP_ENCODING == 1
+  return NEAR_PLANE * INV_DEPTH_SCALE /
+         ((1.0 - stored) * INV_DEPTH_SCALE + stored * NEAR_PLANE);
+#else
+  return NEAR_PLANE * INV_DEPTH_SCALE /
+         (stored * INV_DEPTH_SCALE + (1.0 - stored) * NEAR_PLANE);
+#endif
+}
+#endif
+
+// Whether a stored texel lets a receiver with stored reference `reference`
+// see the light: reversed-Z stores the nearer surface as the larger value.
+#if PENUMBRA_MAP_ENCODING == 2
+#define PENUMBRA_LIT(reference, texel) ((reference) >= (texel))
+#else
+#define PENUMBRA_LIT(reference, texel) ((reference) <= (texel))
+#endif
+
+#endif
