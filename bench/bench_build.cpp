@@ -7,11 +7,7 @@
 // OUT from a warm cache, a rebuild that does nothing, each build's peak RSS,
 // index.json's bytes per variant and, with --groups, a split build joined by
 // `penumbra merge` and compared with the single build byte for byte.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -20,7 +16,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>

@@ -12,14 +12,10 @@
 namespace penumbra::detail {
 namespace {
 
-bool same_state(const SamplerState& a, const SamplerState& b) {
-  return a == b;
-}
-
 bool same_resource(const PlannedBinding& a, const PlannedBinding& b) {
   return a.type == b.type && a.texture == b.texture && a.format == b.format &&
          a.contents == b.contents && a.sampler.has_value() == b.sampler.has_value() &&
-         (!a.sampler || same_state(*a.sampler, *b.sampler));
+         (!a.sampler || *a.sampler == *b.sampler);
 }
 
 bool overlaps(const ConstantFill& a, const ConstantFill& b) {
