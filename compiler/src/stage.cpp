@@ -42,8 +42,9 @@ std::string ShaderJob::banner() const {
   } else {
     out += "Shared by every variant";
   }
-  out += "; target " + std::string(to_string(target)) + "; " + std::string(to_string(pass)) +
-         " pass, " + std::string(to_string(stage)) + " stage.";
+  out += "; target " + std::string(to_string(target)) + "; ";
+  if (form == ShaderForm::function) return out + "function form: penumbra_visibility().";
+  out += std::string(to_string(pass)) + " pass, " + std::string(to_string(stage)) + " stage.";
   return out;
 }
 

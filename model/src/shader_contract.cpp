@@ -1,5 +1,6 @@
 #include "penumbra/model/shader_contract.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 #include "penumbra/model/target_traits.hpp"
@@ -253,6 +254,11 @@ bool runs_pass(PassKind pass, const Variant& variant) {
     if (run == pass) return true;
   }
   return false;
+}
+
+bool has_function_form(Technique technique) {
+  const std::span<const PassKind> passes = describe(technique).passes;
+  return std::ranges::equal(passes, kSinglePass);
 }
 
 }  // namespace penumbra

@@ -260,8 +260,9 @@ void to_json(nlohmann::json& j, const PassReflection& p) {
        {"vert", p.vert},
        {"frag", p.frag}};
   put(j, "depth_target", p.depth_target);
-  put(j, "map_encoding", p.map_encoding);
+  if (p.map_encoding) j["map_encoding"] = to_string(*p.map_encoding);
   put(j, "extensions", p.extensions);
+  put(j, "signature", p.signature);
 }
 void from_json(const nlohmann::json& j, PassReflection& p) {
   j.at("vertex_inputs").get_to(p.vertex_inputs);
@@ -269,13 +270,17 @@ void from_json(const nlohmann::json& j, PassReflection& p) {
   j.at("vert").get_to(p.vert);
   j.at("frag").get_to(p.frag);
   get(j, "depth_target", p.depth_target);
-  get(j, "map_encoding", p.map_encoding);
-  if (!p.map_encoding.empty() && !parse_map_encoding(p.map_encoding)) {
-    throw nlohmann::json::other_error::create(
-        501, "unknown map_encoding '" + p.map_encoding + "'; allowed " + allowed_map_encodings(),
-        &j);
+  std::string encoding;
+  get(j, "map_encoding", encoding);
+  if (!encoding.empty()) {
+    p.map_encoding = parse_map_encoding(encoding);
+    if (!p.map_encoding) {
+      throw nlohmann::json::other_error::create(
+          501, "unknown map_encoding '" + encoding + "'; allowed " + allowed_map_encodings(), &j);
+    }
   }
   get(j, "extensions", p.extensions);
+  get(j, "signature", p.signature);
 }
 
 }  // namespace penumbra

@@ -117,9 +117,8 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                           " reads a min-max mip, which is built from linear depth only");
   }
   const auto at_shift = [&](int shift) {
-    EncodedDepth view = encoded;
-    view.shift = shift;
-    return evaluate_view(variant, ShadowMapView(stored, view), light, receivers, precision, limits);
+    return evaluate_view(variant, ShadowMapView(stored, encoded, shift), light, receivers,
+                         precision, limits);
   };
   ReferenceImage result = at_shift(0);
   const ReferenceImage nearer = at_shift(-1);

@@ -48,7 +48,7 @@ std::optional<reference::EncodedDepth> encoding_of(const LibraryVariant& variant
                                                    const EvalInputs& inputs, float depth_scale) {
   const MapEncoding encoding = map_encoding(variant.variant.keys);
   if (encoding == MapEncoding::linear) return std::nullopt;
-  return reference::EncodedDepth{encoding, {inputs.light.near_plane, 1.0 / depth_scale}, 0};
+  return reference::EncodedDepth{encoding, {inputs.light.near_plane, 1.0 / depth_scale}};
 }
 
 // The linear map as the variant's programs read it: normalized, or stored in

@@ -71,11 +71,10 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Tar
       engine.render_depth(depth, triangles, scene.map_width, scene.map_height, fixture.params);
   if (!map) return map.error();
   fixture.map = *map;
-  const MapEncoding encoding =
-      parse_map_encoding(depth.reflection.map_encoding).value_or(MapEncoding::linear);
+  const MapEncoding encoding = depth.reflection.map_encoding.value_or(MapEncoding::linear);
   if (encoding != MapEncoding::linear) {
     fixture.encoded =
-        reference::EncodedDepth{encoding, {scene.light.near_plane, 1.0 / depth_scale}, 0};
+        reference::EncodedDepth{encoding, {scene.light.near_plane, 1.0 / depth_scale}};
   }
   // A linear map's two images are the same; an encoded one's depth image is
   // the rasterizer's depth and its colour image the shader's encoding.

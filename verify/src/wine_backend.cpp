@@ -148,9 +148,10 @@ class WineBackend final : public Backend {
   // The fixture's scene drawn by the target's depth pass on this runtime,
   // once per scene and map encoding.
   Result<RuntimeMap*> map_of(const D3dPass& depth, const SceneFixture& fixture) {
-    const std::string key = fixture.scene.name + "@" + std::to_string(fixture.scene.map_width) +
-                            "x" + std::to_string(fixture.scene.map_height) + " " +
-                            depth.reflection.map_encoding;
+    const std::string key =
+        fixture.scene.name + "@" + std::to_string(fixture.scene.map_width) + "x" +
+        std::to_string(fixture.scene.map_height) + " " +
+        std::string(to_string(depth.reflection.map_encoding.value_or(MapEncoding::linear)));
     if (auto known = maps_.find(key); known != maps_.end()) return &known->second;
     PENUMBRA_TRY_ASSIGN(
         D3dMap map,

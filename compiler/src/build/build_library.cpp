@@ -13,6 +13,7 @@
 #include "build/streamed_index.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/compiler/targets.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/support/content_hash.hpp"
 #include "reflect/reflect_target.hpp"
@@ -31,7 +32,7 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
       for (const MapEncoding encoding : kAllMapEncodings) {
         const auto user = std::ranges::find_if(variants, [&](const Variant& v) {
           return std::ranges::find(v.targets, target) != v.targets.end() &&
-                 runs_pass(source.pass, v) && shared_encoding(source.pass, v) == encoding;
+                 runs_pass(source.pass, v) && job_encoding(source, v) == encoding;
         });
         if (user != variants.end()) jobs.push_back(make_job(source, target, *user));
       }
@@ -43,6 +44,9 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
         if (source.per_variant && runs_pass(source.pass, variant)) {
           jobs.push_back(make_job(source, target, variant));
         }
+      }
+      if (has_function_form(variant.technique) && traits(target).is_text) {
+        jobs.push_back(make_function_job(target, variant));
       }
     }
   }

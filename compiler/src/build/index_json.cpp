@@ -71,7 +71,7 @@ nlohmann::json variant_keys_json(const VariantKeys& keys) {
 
 JobTable::JobTable(const std::vector<ShaderJob>& jobs) {
   for (const ShaderJob& job : jobs) {
-    jobs_[{job.variant, job.target, job.pass, job.stage, job.map_encoding}] = &job;
+    jobs_[{job.variant, job.target, job.pass, job.stage, job.map_encoding, job.form}] = &job;
   }
 }
 
@@ -79,13 +79,17 @@ const ShaderJob* JobTable::find(const Variant& variant, Target target, PassKind 
                                 ShaderStage stage) const {
   for (const PassStageSource& source : pass_plan()) {
     if (source.pass != pass || source.stage != stage) continue;
-    const auto found =
-        source.per_variant
-            ? jobs_.find({&variant, target, pass, stage, map_encoding(variant.keys)})
-            : jobs_.find({nullptr, target, pass, stage, shared_encoding(pass, variant)});
+    const auto found = jobs_.find({source.per_variant ? &variant : nullptr, target, pass, stage,
+                                   job_encoding(source, variant), ShaderForm::pass});
     return found == jobs_.end() ? nullptr : found->second;
   }
   return nullptr;
+}
+
+const ShaderJob* JobTable::function(const Variant& variant, Target target) const {
+  const auto found = jobs_.find({&variant, target, PassKind::query, ShaderStage::fragment,
+                                 map_encoding(variant.keys), ShaderForm::function});
+  return found == jobs_.end() ? nullptr : found->second;
 }
 
 ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs) {
@@ -105,9 +109,13 @@ ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs) {
   nlohmann::json targets = nlohmann::json::array();
   nlohmann::json passes = nlohmann::json::object();
   nlohmann::json reflection = nlohmann::json::object();
+  nlohmann::json function = nlohmann::json::object();
   for (Target target : variant.targets) {
     const std::string target_name(to_string(target));
     targets.push_back(target_name);
+    if (const ShaderJob* job = jobs.function(variant, target)) {
+      function[target_name] = {{"file", job->output_path}, {"reflection", job->reflection}};
+    }
     for (PassKind kind : describe(variant.technique).passes) {
       const std::string pass(to_string(kind));
       const ShaderJob* vert = jobs.find(variant, target, kind, ShaderStage::vertex);
@@ -121,8 +129,26 @@ ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs) {
   out["targets"] = targets;
   out["passes"] = passes;
   out["reflection"] = reflection;
+  if (!function.empty()) out["function"] = function;
   return out;
 }
+
+namespace {
+
+// Reflection record `position` of `index`, its constant textures' contents in place.
+nlohmann::json resolve_record(const nlohmann::json& index, const nlohmann::json& position) {
+  nlohmann::json record = index.at("reflections").at(position.get<std::size_t>());
+  for (const char* stage : kStages) {
+    if (!record[stage].contains("textures")) continue;
+    for (nlohmann::json& texture : record[stage]["textures"]) {
+      if (!texture.contains("contents")) continue;
+      texture["contents"] = index.at("texture_contents").at(texture["contents"].get<std::size_t>());
+    }
+  }
+  return record;
+}
+
+}  // namespace
 
 ResolvedVariant resolve_variant(const nlohmann::json& index, std::size_t i) {
   nlohmann::json out = index.at("variants").at(i);
@@ -135,17 +161,11 @@ ResolvedVariant resolve_variant(const nlohmann::json& index, std::size_t i) {
     }
   }
   for (auto& [pass, by_target] : out["reflection"].items()) {
-    for (auto& [target, position] : by_target.items()) {
-      nlohmann::json record = index.at("reflections").at(position.get<std::size_t>());
-      for (const char* stage : kStages) {
-        if (!record[stage].contains("textures")) continue;
-        for (nlohmann::json& texture : record[stage]["textures"]) {
-          if (!texture.contains("contents")) continue;
-          texture["contents"] =
-              index.at("texture_contents").at(texture["contents"].get<std::size_t>());
-        }
-      }
-      position = std::move(record);
+    for (auto& [target, position] : by_target.items()) position = resolve_record(index, position);
+  }
+  if (out.contains("function")) {
+    for (auto& [target, form] : out["function"].items()) {
+      form["reflection"] = resolve_record(index, form["reflection"]);
     }
   }
   return out;
@@ -172,18 +192,24 @@ void IndexWriter::add(const ResolvedVariant& variant) {
         files = tables_->pass_files.add(files);
       }
       if (!out["reflection"].contains(pass) || !out["reflection"][pass].contains(target)) continue;
-      nlohmann::json& record = out["reflection"][pass][target];
-      for (const char* stage : kStages) {
-        if (!record[stage].contains("textures")) continue;
-        for (nlohmann::json& texture : record[stage]["textures"]) {
-          if (!texture.contains("contents")) continue;
-          texture["contents"] = tables_->texture_contents.add(texture["contents"]);
-        }
-      }
-      record = tables_->reflections.add(record);
+      share_record(out["reflection"][pass][target]);
+    }
+    if (out.contains("function") && out["function"].contains(target)) {
+      share_record(out["function"][target]["reflection"]);
     }
   }
   variants_.push_back(out.dump());
+}
+
+void IndexWriter::share_record(nlohmann::json& record) {
+  for (const char* stage : kStages) {
+    if (!record[stage].contains("textures")) continue;
+    for (nlohmann::json& texture : record[stage]["textures"]) {
+      if (!texture.contains("contents")) continue;
+      texture["contents"] = tables_->texture_contents.add(texture["contents"]);
+    }
+  }
+  record = tables_->reflections.add(record);
 }
 
 namespace {

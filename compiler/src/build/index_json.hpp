@@ -28,9 +28,11 @@ class JobTable {
   // the shared one when the pass is shared.
   const ShaderJob* find(const Variant& variant, Target target, PassKind pass,
                         ShaderStage stage) const;
+  // The job that made `variant`'s function form for `target`, if any.
+  const ShaderJob* function(const Variant& variant, Target target) const;
 
  private:
-  using Key = std::tuple<const Variant*, Target, PassKind, ShaderStage, MapEncoding>;
+  using Key = std::tuple<const Variant*, Target, PassKind, ShaderStage, MapEncoding, ShaderForm>;
   std::map<Key, const ShaderJob*> jobs_;
 };
 
@@ -55,6 +57,10 @@ class IndexWriter {
 
  private:
   struct Tables;
+  // Replaces a reflection record with its position in `reflections`, its
+  // constant textures' contents with theirs in `texture_contents`.
+  void share_record(nlohmann::json& record);
+
   std::unique_ptr<Tables> tables_;
   std::vector<std::string> variants_;  // each record's text
 };

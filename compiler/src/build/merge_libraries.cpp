@@ -20,7 +20,8 @@ struct PartVariant {
   std::size_t index;  // in the part's index.json
 };
 
-// Every file a resolved variant's passes name: shaders and bytecode.
+// Every file a resolved variant names: its passes' shaders and bytecode, and
+// its function forms.
 std::vector<std::string> variant_files(const ResolvedVariant& variant) {
   std::vector<std::string> files;
   for (const auto& [pass, by_target] : variant.at("passes").items()) {
@@ -31,6 +32,11 @@ std::vector<std::string> variant_files(const ResolvedVariant& variant) {
           files.push_back(record["bytecode"][stage]["path"].get<std::string>());
         }
       }
+    }
+  }
+  if (variant.contains("function")) {
+    for (const auto& [target, form] : variant.at("function").items()) {
+      files.push_back(form.at("file").get<std::string>());
     }
   }
   return files;

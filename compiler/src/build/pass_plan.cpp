@@ -32,20 +32,34 @@ std::string output_path(const PassStageSource& source, Target target, const Vari
   return dir + "/" + output_file_name(target, stem, source.stage);
 }
 
-MapEncoding shared_encoding(PassKind pass, const Variant& variant) {
-  return pass == PassKind::depth ? map_encoding(variant.keys) : MapEncoding::linear;
+MapEncoding job_encoding(const PassStageSource& source, const Variant& variant) {
+  return source.per_variant || source.pass == PassKind::depth ? map_encoding(variant.keys)
+                                                              : MapEncoding::linear;
 }
 
 ShaderJob make_job(const PassStageSource& source, Target target, const Variant& variant) {
   ShaderJob job;
   job.variant = source.per_variant ? &variant : nullptr;
-  job.map_encoding =
-      source.per_variant ? map_encoding(variant.keys) : shared_encoding(source.pass, variant);
+  job.map_encoding = job_encoding(source, variant);
   job.target = target;
   job.pass = source.pass;
   job.stage = source.stage;
   job.source_path = std::string(source.source);
   job.output_path = output_path(source, target, job.variant, job.map_encoding);
+  return job;
+}
+
+ShaderJob make_function_job(Target target, const Variant& variant) {
+  ShaderJob job;
+  job.variant = &variant;
+  job.map_encoding = map_encoding(variant.keys);
+  job.target = target;
+  job.pass = PassKind::query;
+  job.stage = ShaderStage::fragment;
+  job.form = ShaderForm::function;
+  job.source_path = "forms/function.frag";
+  job.output_path = std::string(to_string(target)) + "/" + variant.name + "/penumbra_visibility" +
+                    (traits(target).is_hlsl ? ".hlsl" : ".glsl");
   return job;
 }
 

@@ -30,13 +30,17 @@ std::span<const PassStageSource> pass_plan();
 std::string output_path(const PassStageSource& source, Target target, const Variant* variant,
                         MapEncoding encoding);
 
-// The map encoding `pass`'s shared shaders are made for when `variant` runs
-// them: its own for the depth pass, which writes the map; linear for every
-// other shared pass, which does not depend on it.
-MapEncoding shared_encoding(PassKind pass, const Variant& variant);
+// The map encoding `source` is compiled for when `variant` runs it: the
+// variant's own for its own shaders and for the depth pass, which writes the
+// map; linear for every other shared pass, which does not depend on it.
+MapEncoding job_encoding(const PassStageSource& source, const Variant& variant);
 
 // A job for `source`, ready to run through the pipeline: `variant`'s own,
 // or for a shared pass the one that serves `variant`'s map encoding.
 ShaderJob make_job(const PassStageSource& source, Target target, const Variant& variant);
+
+// The function form of `variant` for `target`, a text target, written to
+// "<target>/<variant>/penumbra_visibility.glsl" (".hlsl" for HLSL).
+ShaderJob make_function_job(Target target, const Variant& variant);
 
 }  // namespace penumbra

@@ -40,6 +40,7 @@ Pipeline::Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
   stages_.push_back(std::make_unique<OptimizeStage>());
   stages_.push_back(std::make_unique<CrossCompileStage>());
   stages_.push_back(std::make_unique<ReflectStage>());
+  stages_.push_back(std::make_unique<ExtractFunctionStage>());
   if (!write_root_) return;
   stages_.push_back(std::make_unique<WriteStage>(*write_root_));
   if (!hlsl.compiler.empty()) {

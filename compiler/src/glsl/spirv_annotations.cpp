@@ -126,7 +126,63 @@ ConstantNames find_constant_names(const std::vector<std::uint32_t>& spirv, const
   return found;
 }
 
+// The literal string that starts at operand `first` of `in`.
+std::string literal_string(const SpvInstruction& in, std::size_t first) {
+  std::string out;
+  for (std::size_t k = first; k < in.operand_count(); ++k) {
+    for (int byte = 0; byte < 4; ++byte) {
+      const char c = static_cast<char>((in.operand(k) >> (8 * byte)) & 0xffu);
+      if (c == '\0') return out;
+      out += c;
+    }
+  }
+  return out;
+}
+
+// Whether `id` names something at module scope that the text declares.
+bool module_scope(const SpirvModule& module, std::uint32_t id) {
+  const SpvInstruction* def = module.def(id);
+  if (!def) return false;
+  switch (def->op) {
+    case spv::OpFunction:
+      return !module.entry_point() || module.entry_point()->id != id;
+    case spv::OpVariable:
+      return def->operand(0) != spv::StorageClassFunction;
+    case spv::OpTypeStruct:
+    case spv::OpConstant:
+    case spv::OpConstantComposite:
+    case spv::OpSpecConstant:
+    case spv::OpSpecConstantComposite:
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace
+
+void prefix_global_names(std::vector<std::uint32_t>& spirv, const std::string& prefix) {
+  std::vector<std::uint32_t> out;
+  out.reserve(spirv.size() + 64);
+  {
+    const SpirvModule module(spirv);
+    const auto words = module.instructions();
+    out.assign(spirv.begin(),
+               spirv.begin() + static_cast<std::ptrdiff_t>(
+                                   words.empty() ? spirv.size() : offset_of(words.front(), spirv)));
+    for (const SpvInstruction& in : words) {
+      const std::string name = in.op == spv::OpName ? literal_string(in, 1) : "";
+      if (in.op == spv::OpName && module_scope(module, in.operand(0)) &&
+          !name.starts_with(prefix) && !name.starts_with("gl_")) {
+        const auto renamed = with_string(spv::OpName, {in.operand(0)}, prefix + name);
+        out.insert(out.end(), renamed.begin(), renamed.end());
+      } else {
+        out.insert(out.end(), in.words.begin(), in.words.end());
+      }
+    }
+  }
+  spirv = std::move(out);
+}
 
 void name_baked_constants(std::vector<std::uint32_t>& spirv, const Variant& variant) {
   if (!variant.blocker_disk && !variant.pcf_disk && variant.blur_weights.empty()) return;

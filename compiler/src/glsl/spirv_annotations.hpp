@@ -19,6 +19,13 @@ namespace penumbra {
 // source.
 void name_baked_constants(std::vector<std::uint32_t>& spirv, const Variant& variant);
 
+// Puts `prefix` before the OpName of every module-scope name: functions but
+// the entry point, global variables but built-ins (gl_*), types and
+// constants; names that already start with it stay. Parameters and locals
+// keep theirs. The function form's text then declares nothing an engine's
+// shader may also declare.
+void prefix_global_names(std::vector<std::uint32_t>& spirv, const std::string& prefix);
+
 // Adds `OpString "<text>"` at the head of the debug section: the binary's
 // equivalent of the banner comment of text targets (OpModuleProcessed would
 // need SPIR-V 1.1). Consumers ignore it; spirv-dis shows it.

@@ -10,11 +10,11 @@
 
 namespace penumbra {
 
-// `variant` may be null for shaders shared by every variant whose map is in
-// `shared_encoding`; a variant's own shaders take its map_encoding key.
-// PENUMBRA_MAP_ENCODING is defined for every encoding but linear.
+// `variant` may be null for shaders shared by variants; `encoding` is the
+// job's map encoding (job_encoding()), for which PENUMBRA_MAP_ENCODING is
+// defined unless it is linear.
 std::string variant_header(const Variant* variant, Target target,
-                           MapEncoding shared_encoding = MapEncoding::linear);
+                           MapEncoding encoding = MapEncoding::linear);
 
 // A float formatted so that reading it back as float32 gives the same bits.
 std::string glsl_float(float value);

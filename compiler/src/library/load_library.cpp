@@ -341,6 +341,25 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
       out.reflection[pass][*target] = **reflection;
     }
   }
+  if (!j.contains("function")) return out;
+  const json& function = j["function"];
+  if (!function.is_object()) return type_error(file, path + "/function", "an object", function);
+  for (auto& [target_name, form] : function.items()) {
+    const std::string at = path + "/function/" + target_name;
+    const auto target = parse_target(target_name);
+    if (!target) {
+      return index_error(
+          file, at, "unknown target '" + shorten(target_name) + "'; allowed: " + allowed_targets());
+    }
+    if (!form.is_object()) return type_error(file, at, "an object", form);
+    PENUMBRA_TRY_ASSIGN(const json* path_json, member(file, form, at, "file"));
+    PENUMBRA_TRY_ASSIGN(const std::string function_file, string_at(file, *path_json, at + "/file"));
+    PENUMBRA_TRY_ASSIGN(const json* position, member(file, form, at, "reflection"));
+    auto reflection =
+        resolve(file, *position, at + "/reflection", tables.reflections, "reflections");
+    if (!reflection) return reflection.error();
+    out.function[*target] = {function_file, **reflection};
+  }
   return out;
 }
 

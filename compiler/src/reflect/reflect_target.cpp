@@ -13,12 +13,14 @@ using Dialect = ReflectionDialect;
 // targets of one dialect reflect alike.
 class TargetReflector {
  public:
-  TargetReflector(Target target, PassKind pass, const Variant* variant, MapEncoding encoding)
+  TargetReflector(Target target, PassKind pass, const Variant* variant, MapEncoding encoding,
+                  std::string_view prefix)
       : target_(target),
         dialect_(traits(target).dialect),
         pass_(pass),
         variant_(variant),
-        encoding_(encoding) {}
+        encoding_(encoding),
+        prefix_(prefix) {}
 
   // The stage's part: its bindings, and the vertex inputs (vertex stage) or
   // the render targets, depth target and extensions (fragment stage).
@@ -51,7 +53,7 @@ class TargetReflector {
       out.depth_target = dialect_ == Dialect::d3d10
                              ? "DXGI_FORMAT_D32_FLOAT"
                              : std::string(api_format(target_, TextureFormat::d32_float));
-      out.map_encoding = std::string(to_string(encoding_));
+      out.map_encoding = encoding_;
     }
     // WebGL2 and OpenGL ES 3.0 render to float formats only with this.
     if (dialect_ == Dialect::essl300) out.extensions.push_back("EXT_color_buffer_float");
@@ -68,15 +70,18 @@ class TargetReflector {
   Result<StageBindings> stage(const ShaderInterface& iface) const {
     StageBindings out;
     for (const UniformBlock& block : iface.uniform_blocks) {
-      if (block.type_name != kParamsBlock || block.binding != kParamsSlot) {
+      if (block.type_name != prefix_ + std::string(kParamsBlock) || block.binding != kParamsSlot) {
         return fail("uniform block '" + block.type_name + "' at binding " +
-                    std::to_string(block.binding) + " is not shader_contract.hpp's " +
+                    std::to_string(block.binding) + " is not shader_contract.hpp's " + prefix_ +
                     std::string(kParamsBlock) + " at binding " + std::to_string(kParamsSlot));
       }
       params(block, out);
     }
     for (const SampledImage& image : iface.sampled_images) {
-      const TextureDescription* texture = find_texture(image.name);
+      const TextureDescription* texture =
+          image.name.starts_with(prefix_)
+              ? find_texture(std::string_view(image.name).substr(prefix_.size()))
+              : nullptr;
       if (!texture || texture->slot != image.binding || image.set != 0 ||
           image.comparison != texture->sampler.comparison) {
         return fail("sampler '" + image.name + "' at set " + std::to_string(image.set) +
@@ -104,8 +109,8 @@ class TargetReflector {
   // active once a stage reads one (Mesa does), and D3D9 engines set
   // registers, read or not.
   void params(const UniformBlock& block, StageBindings& out) const {
-    const std::string param_block(kParamsBlock);
-    const std::string instance(kParamsInstance);
+    const std::string param_block = prefix_ + std::string(kParamsBlock);
+    const std::string instance = prefix_ + std::string(kParamsInstance);
     BlockBinding binding{param_block, std::nullopt, std::nullopt, "", block.size, {}};
     for (const BlockMember& member : block.members) {
       ConstantBinding constant{"",
@@ -150,7 +155,7 @@ class TargetReflector {
 
   TextureBinding texture_binding(const TextureDescription& texture) const {
     TextureBinding out;
-    out.name = std::string(texture.name);
+    out.name = prefix_ + std::string(texture.name);
     const TextureFormat format = dialect_ == Dialect::d3d9 ? texture.dx9_format : texture.format;
     out.format = std::string(api_format(target_, format));
     out.view_format = std::string(api_view_format(target_, format));
@@ -215,13 +220,15 @@ class TargetReflector {
   PassKind pass_;
   const Variant* variant_;  // null for passes shared by every variant
   MapEncoding encoding_;    // the map's: the variant's, or the shared pass's
+  std::string prefix_;      // heads every name in the text (the function form's)
 };
 
 }  // namespace
 
 Result<PassReflection> reflect_target(Target target, PassKind pass, const Variant* variant,
-                                      MapEncoding encoding, const ShaderInterface& iface) {
-  return TargetReflector(target, pass, variant, encoding).reflect(iface);
+                                      MapEncoding encoding, const ShaderInterface& iface,
+                                      std::string_view prefix) {
+  return TargetReflector(target, pass, variant, encoding, prefix).reflect(iface);
 }
 
 PassReflection join_stages(PassReflection vert, const PassReflection& frag) {

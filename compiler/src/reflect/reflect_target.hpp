@@ -18,9 +18,11 @@ namespace penumbra {
 // resource shader_contract.hpp lacks or one whose binding differs from the
 // one there, or a constant texture `variant` has no contents for. `encoding`
 // is the map's (ShaderJob::map_encoding): the depth pass's depth test and the
-// comparison sampler's function follow it.
+// comparison sampler's function follow it. `prefix` heads every name the
+// text declares (the function form's kFunctionPrefix).
 Result<PassReflection> reflect_target(Target target, PassKind pass, const Variant* variant,
-                                      MapEncoding encoding, const ShaderInterface& iface);
+                                      MapEncoding encoding, const ShaderInterface& iface,
+                                      std::string_view prefix = {});
 
 // The pass's reflection from the parts of its two stages.
 PassReflection join_stages(PassReflection vert, const PassReflection& frag);

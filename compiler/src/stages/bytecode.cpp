@@ -67,7 +67,8 @@ BytecodeStage::BytecodeStage(std::filesystem::path root, HlslCompilerOptions opt
 
 Status BytecodeStage::process(ShaderJob& job) const {
   const std::optional<BytecodeFormat> format = bytecode_format(job.target, job.stage);
-  if (!format) return {};
+  // The function form is not a whole shader: its tests compile it in one.
+  if (!format || job.form == ShaderForm::function) return {};
   std::filesystem::path relative = job.output_path;
   relative.replace_extension(format->extension);
   const std::string source = (root_ / job.output_path).string();

@@ -39,6 +39,8 @@ Status CompileStage::process(ShaderJob& job) const {
                       "SPIR-V generation failed:\n" + logger.getAllMessages());
   }
   if (job.variant) name_baked_constants(job.spirv, *job.variant);
+  if (job.form == ShaderForm::function)
+    prefix_global_names(job.spirv, std::string(kFunctionPrefix));
   add_banner_string(job.spirv, job.banner());
   return {};
 }

@@ -66,11 +66,12 @@ Status CrossCompileStage::process(ShaderJob& job) const {
                       std::string("cannot express this for ") + std::string(to_string(job.target)) +
                           ": " + error.what());
   }
+  const std::string_view prefix = job.form == ShaderForm::function ? kFunctionPrefix : "";
   if (traits(job.target).shader_model >= 4) {
-    job.text = dx10_comparison_textures_as_scalar(job.text);
+    job.text = dx10_comparison_textures_as_scalar(job.text, prefix);
   }
   if (job.target == Target::hlsl_dx9) {
-    auto rewritten = dx9_explicit_registers(job.text);
+    auto rewritten = dx9_explicit_registers(job.text, prefix);
     if (rewritten) rewritten = dx9_half_pixel_after_flip(*rewritten);
     if (!rewritten)
       return make_error(Error::Kind::compile, job.describe(), rewritten.error().message);

@@ -65,6 +65,16 @@ class ReflectStage final : public Stage {
   Status process(ShaderJob& job) const override;
 };
 
+// The function form's text: the cross-compiled module less its harness (the
+// entry point, its input and output, #version and default precisions); its
+// #extension lines go to the reflection, with penumbra_visibility()'s
+// declaration. Jobs of other forms pass through.
+class ExtractFunctionStage final : public Stage {
+ public:
+  std::string_view name() const override { return "extract-function"; }
+  Status process(ShaderJob& job) const override;
+};
+
 // Writes the target's file, headed by a comment naming variant and keys,
 // under a root directory (the build's staging directory).
 class WriteStage final : public Stage {

@@ -4,12 +4,13 @@
 
 namespace penumbra {
 
-std::string dx10_comparison_textures_as_scalar(const std::string& hlsl) {
+std::string dx10_comparison_textures_as_scalar(const std::string& hlsl, std::string_view prefix) {
   std::string out = hlsl;
   for (const TextureDescription& texture : all_textures()) {
     if (!texture.sampler.comparison) continue;
-    const std::string vector = "Texture2D<float4> " + std::string(texture.name) + " :";
-    const std::string scalar = "Texture2D<float> " + std::string(texture.name) + " :";
+    const std::string name = std::string(prefix) + std::string(texture.name);
+    const std::string vector = "Texture2D<float4> " + name + " :";
+    const std::string scalar = "Texture2D<float> " + name + " :";
     for (auto at = out.find(vector); at != std::string::npos; at = out.find(vector, at)) {
       out.replace(at, vector.size(), scalar);
     }

@@ -4,13 +4,15 @@
 // `Texture2D<float>` instead, so that compilers which type
 // SampleCmpLevelZero by the template (vkd3d-compiler) see no vector
 // truncation (W5300). The resource, its register and its reads are
-// unchanged.
+// unchanged. `prefix` heads the texture names (the function form's).
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace penumbra {
 
-std::string dx10_comparison_textures_as_scalar(const std::string& hlsl);
+std::string dx10_comparison_textures_as_scalar(const std::string& hlsl,
+                                               std::string_view prefix = {});
 
 }  // namespace penumbra

@@ -47,14 +47,16 @@ Result<std::string> constants_as_registers(const std::string& hlsl, int& next_re
 }
 
 // Every sampler at s<slot>, its slot in shader_contract.hpp.
-Result<std::string> samplers_at_slots(const std::string& hlsl) {
+Result<std::string> samplers_at_slots(const std::string& hlsl, std::string_view prefix) {
   static const std::regex sampler(R"(uniform sampler2D (\w+);)");
   std::string out;
   auto begin = std::sregex_iterator(hlsl.begin(), hlsl.end(), sampler);
   std::size_t copied = 0;
   for (auto it = begin; it != std::sregex_iterator(); ++it) {
     const std::string name = (*it)[1];
-    const TextureDescription* texture = find_texture(name);
+    const TextureDescription* texture =
+        name.starts_with(prefix) ? find_texture(std::string_view(name).substr(prefix.size()))
+                                 : nullptr;
     if (!texture) {
       return fail("sampler '" + name + "' is not a texture of the shader contract");
     }
@@ -67,7 +69,7 @@ Result<std::string> samplers_at_slots(const std::string& hlsl) {
 
 }  // namespace
 
-Result<std::string> dx9_explicit_registers(const std::string& hlsl) {
+Result<std::string> dx9_explicit_registers(const std::string& hlsl, std::string_view prefix) {
   int next_register = 0;
   auto constants = constants_as_registers(hlsl, next_register);
   if (!constants) return constants.error();
@@ -84,7 +86,7 @@ Result<std::string> dx9_explicit_registers(const std::string& hlsl) {
   const std::string pinned = std::regex_replace(
       *constants, half_pixel_decl,
       "uniform float4 gl_HalfPixel : register(c" + std::to_string(half_pixel) + ");");
-  return samplers_at_slots(pinned);
+  return samplers_at_slots(pinned, prefix);
 }
 
 }  // namespace penumbra

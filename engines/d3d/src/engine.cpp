@@ -192,8 +192,7 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
   map.width = width;
   map.height = height;
   // A reversed-Z map is cleared to 0, its far plane, and keeps the greater depth.
-  const bool reversed =
-      depth.reflection.map_encoding == to_string(MapEncoding::perspective_reversed);
+  const bool reversed = depth.reflection.map_encoding == MapEncoding::perspective_reversed;
   const float far = reversed ? 0.0f : 1.0f;
   DrawTarget target{std::nullopt, 0, std::nullopt, width, height, std::nullopt, far, reversed};
   if (runtime_ == D3dRuntime::d3d9) {

@@ -30,21 +30,14 @@ Result<std::unique_ptr<ShadowMapImages>> render_depth(
   draw.program = &program;
   // A linear map's depth is the shader's; an engine's hardware depth is the
   // rasterizer's (the reflection's map_encoding).
-  const std::optional<MapEncoding> encoding = parse_map_encoding(
-      program.reflection.map_encoding.empty() ? "linear" : program.reflection.map_encoding);
-  if (!encoding) {
-    return make_error(Error::Kind::bad_input, "depth pass",
-                      "index.json's reflection gives the map_encoding '" +
-                          program.reflection.map_encoding + "'; allowed " +
-                          allowed_map_encodings());
-  }
+  const MapEncoding encoding = program.reflection.map_encoding.value_or(MapEncoding::linear);
   draw.shape = {"depth pass",
                 kMapColourTarget,
                 kDepthPositionFormat,
                 3,
                 true,
-                *encoding == MapEncoding::linear,
-                !depth_increases(*encoding)};
+                encoding == MapEncoding::linear,
+                !depth_increases(encoding)};
   draw.resources.params = &params;
   draw.positions = positions;
   // The output 0 and the fragment depth both hold normalized depth; each

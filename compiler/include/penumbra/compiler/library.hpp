@@ -24,11 +24,18 @@ struct PassFiles {
   std::optional<BytecodeFile> frag_bytecode;
 };
 
+// A variant's function form for one target (docs/function-form.md).
+struct FunctionForm {
+  std::string file;           // the includable source, relative to the library root
+  PassReflection reflection;  // its bindings, signature and extensions
+};
+
 struct LibraryVariant {
   Variant variant;  // keys, disks (the baked values) and targets
   std::map<PassKind, std::map<Target, PassFiles>> passes;
   // What each pass's files declare, per target (what engines bind by).
   std::map<PassKind, std::map<Target, PassReflection>> reflection;
+  std::map<Target, FunctionForm> function;  // the text targets, for techniques that have one
 };
 
 // index.json's `schema`: 3 since identical reflection records and disks are

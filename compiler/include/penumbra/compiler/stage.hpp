@@ -30,8 +30,16 @@ struct BytecodeFile {
   int instruction_slots = 0;
 };
 
+// What a job emits: a pass's shader, or a variant's function form: the
+// includable source that declares penumbra_visibility() (docs/function-form.md).
+enum class ShaderForm { pass, function };
+
+// The prefix of every module-scope name in the function form's text.
+inline constexpr std::string_view kFunctionPrefix = "penumbra_";
+
 // One shader stage of one pass, for one target, of one variant (or shared by
-// every variant when `variant` is null).
+// every variant when `variant` is null). A function form job is the query
+// pass's fragment stage of its variant, from shaderlib/forms/function.frag.
 struct ShaderJob {
   // Inputs.
   const Variant* variant = nullptr;  // null: the shader does not depend on the variant
@@ -42,12 +50,14 @@ struct ShaderJob {
   PassKind pass = PassKind::query;
   ShaderStage stage = ShaderStage::fragment;
   std::string source_path;  // in shaderlib/, e.g. "passes/query.frag"
+  ShaderForm form = ShaderForm::pass;
 
   // Products, in pipeline order.
-  std::string preprocessed;              // preprocess: GLSL with includes and defines resolved
-  std::vector<std::string> inputs;       // preprocess: the shaderlib files read, source first
-  std::vector<std::uint32_t> spirv;      // compile (then optimize): SPIR-V 1.0
-  std::string text;                      // cross-compile: target source (empty for spirv)
+  std::string preprocessed;          // preprocess: GLSL with includes and defines resolved
+  std::vector<std::string> inputs;   // preprocess: the shaderlib files read, source first
+  std::vector<std::uint32_t> spirv;  // compile (then optimize): SPIR-V 1.0
+  std::string text;  // cross-compile: target source (empty for spirv); the function form's after
+                     // extract-function
   ShaderInterface interface;             // reflect: of `spirv`
   PassReflection reflection;             // reflect: this stage's part of the target's reflection
   std::string output_path;               // write: file path relative to the output directory

@@ -5,7 +5,6 @@
 // linear one does, up to the float32 rounding of the encoding itself.
 #pragma once
 
-#include <array>
 #include <optional>
 #include <string>
 #include <string_view>

@@ -176,4 +176,9 @@ bool can_emit(const Variant& variant, Target target);
 // True when `variant`'s technique runs `pass`.
 bool runs_pass(PassKind pass, const Variant& variant);
 
+// Whether `technique` has a function form (docs/function-form.md): it runs
+// the depth and query passes only, so its query reads nothing an engine's
+// own shadow map does not give it (no min-max mip, no blur passes).
+bool has_function_form(Technique technique);
+
 }  // namespace penumbra

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/shader_contract.hpp"
 
@@ -105,12 +106,15 @@ struct PassReflection {
   std::vector<VertexAttribute> vertex_inputs;
   std::vector<RenderTarget> render_targets;
   std::string depth_target;  // the depth pass: the depth format; else empty
-  // The depth pass: the MapEncoding its targets hold ("linear": the shader
-  // writes the fragment depth; "perspective": the rasterizer's, depth test
-  // LESS, cleared to 1; "perspective_reversed": test GREATER, cleared to 0,
-  // the colour target too); else empty.
-  std::string map_encoding;
+  // The depth pass: the encoding its targets hold (linear: the shader writes
+  // the fragment depth; perspective: the rasterizer's, depth test LESS,
+  // cleared to 1; perspective_reversed: test GREATER, cleared to 0, the
+  // colour target too); else none.
+  std::optional<MapEncoding> map_encoding;
   std::vector<std::string> extensions;  // what the API must enable: "EXT_color_buffer_float"
+  // The function form: penumbra_visibility()'s declaration in the text,
+  // "float penumbra_visibility(vec4 light_clip_position)"; else empty.
+  std::string signature;
   StageBindings vert;
   StageBindings frag;
   bool operator==(const PassReflection&) const = default;

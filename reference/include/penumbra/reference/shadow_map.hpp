@@ -17,9 +17,6 @@ namespace penumbra::reference {
 struct EncodedDepth {
   MapEncoding encoding = MapEncoding::perspective;
   DepthRange range;
-  // -1, 0 or +1: each decoded depth moved this many tie_margin()s away
-  // from the light, to find the receivers a shader's rounding decides.
-  int shift = 0;
 };
 
 // How far from a texel's depth z a receiver's (biased) depth must lie for
@@ -33,9 +30,11 @@ class ShadowMapView {
  public:
   // Reads channel 0 of `depth`, linear z; the image must outlive the view.
   explicit ShadowMapView(const FloatImage& depth) : image_(&depth) {}
-  // Reads channel 0 of `stored`, values in `encoded`'s encoding.
-  ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded)
-      : image_(&stored), encoded_(encoded) {}
+  // Reads channel 0 of `stored`, values in `encoded`'s encoding, each
+  // decoded depth moved `shift` (-1, 0 or +1) tie_margin()s away from the
+  // light, to find the receivers a shader's rounding decides.
+  ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded, int shift = 0)
+      : image_(&stored), encoded_(encoded), shift_(shift) {}
 
   int width() const { return image_->width; }
   int height() const { return image_->height; }
@@ -51,11 +50,12 @@ class ShadowMapView {
  private:
   double decoded(double stored) const {
     const double z = decode_depth(encoded_->encoding, stored, encoded_->range);
-    return std::isfinite(z) ? z + encoded_->shift * tie_margin(*encoded_, z) : z;
+    return std::isfinite(z) ? z + shift_ * tie_margin(*encoded_, z) : z;
   }
 
   const FloatImage* image_;
   std::optional<EncodedDepth> encoded_;
+  int shift_ = 0;
 };
 
 }  // namespace penumbra::reference

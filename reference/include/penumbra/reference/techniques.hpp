@@ -158,7 +158,7 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                       const ShaderLimits& limits = {});
 
 // The same against `stored`, a map as a GPU holds it in `encoded`'s
-// encoding (its shift is ignored): the visibility of the exactly decoded
+// encoding: the visibility of the exactly decoded
 // depths, with depth_tie where moving every depth tie_margin() towards and
 // away from the light changes the result by more than half the tolerance.
 // Errors: bad_input also for a technique whose reference reads the min-max

@@ -1,0 +1,57 @@
+#version 450
+// The function form: penumbra_visibility(), which an engine's own surface or
+// deferred shader calls with a fragment's light clip-space position. The
+// compiler keeps that function and everything it reads, prefixes every name
+// with penumbra_, and drops the test harness below it (docs/function-form.md).
+#extension GL_GOOGLE_include_directive : require
+#include "variant.glsl"
+#include "techniques/technique.glsl"
+
+#if defined(PENUMBRA_TARGET_HLSL_DX9) || defined(PENUMBRA_TARGET_HLSL_DX10) || \
+    defined(PENUMBRA_TARGET_HLSL_DX11)
+// Direct3D's viewport puts clip-space y = +1 in row 0 of the map.
+#define PENUMBRA_CLIP_Y_TO_V (-0.5)
+#else
+#define PENUMBRA_CLIP_Y_TO_V 0.5
+#endif
+
+// The receiver as the query pass reads it: (u, v) from the light's clip
+// space, and its linear light-view z, which a perspective projection puts in
+// w whatever range it maps z to.
+vec3 clip_to_query(vec4 light_clip_position) {
+  vec2 ndc = light_clip_position.xy / light_clip_position.w;
+  return vec3(0.5 + 0.5 * ndc.x, 0.5 + PENUMBRA_CLIP_Y_TO_V * ndc.y, light_clip_position.w);
+}
+
+// Visibility of the light in [0, 1] at a receiver whose position the light's
+// view-projection matrix takes to `light_clip_position`. With the rotation
+// key, `pixel` is the fragment's integer column and row (floor of its
+// window position), which turns the samples. With receiver_plane, call it in
+// uniform control flow: it takes screen derivatives.
+#if PENUMBRA_ROTATION_IGN
+float penumbra_visibility(vec4 light_clip_position, vec2 pixel) {
+#else
+float penumbra_visibility(vec4 light_clip_position) {
+  vec2 pixel = vec2(0.0);
+#endif
+  penumbra_texel_reads = 0.0;
+  vec3 query = clip_to_query(light_clip_position);
+#if PENUMBRA_RECEIVER_PLANE
+  penumbra_depth_slope = receiver_depth_slope(dFdx(query), dFdy(query), query.z);
+#endif
+  return receiver_visibility(query, pixel);
+}
+
+// The harness that gives the SPIR-V module an entry point; the function form
+// leaves it out.
+layout(location = 0) in vec4 harness_clip_position;
+layout(location = 0) out vec4 harness_visibility;
+
+void main() {
+#if PENUMBRA_ROTATION_IGN
+  float visible = penumbra_visibility(harness_clip_position, floor(gl_FragCoord.xy));
+#else
+  float visible = penumbra_visibility(harness_clip_position);
+#endif
+  harness_visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
+}
