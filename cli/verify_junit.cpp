@@ -105,6 +105,16 @@ JunitReport to_junit(const VerifyReport& report) {
     if (!c.error.empty()) fail_with(check, c.error);
     suite.cases.push_back(std::move(check));
   }
+  for (const FunctionFormCheck& c : report.function_checks) {
+    JunitCase check = make_case(
+        "function_form", c.variant + "/" + std::string(to_string(c.target)), c.seconds, c.pass,
+        std::to_string(c.comparison.over_tolerance) + " of " +
+            std::to_string(c.comparison.compared) + " pixels over the tolerance (max error " +
+            number(c.comparison.max_abs_error) + "), camera agreement " +
+            number(c.camera_agreement));
+    if (!c.error.empty()) fail_with(check, c.error);
+    suite.cases.push_back(std::move(check));
+  }
   for (const VariantRun& v : report.variants) add_runs(suite, v);
   return {"penumbra verify", {std::move(suite)}};
 }

@@ -225,6 +225,12 @@ const TextureDescription* find_texture(std::string_view name) {
   return nullptr;
 }
 
+const TextureDescription* find_bound_texture(std::string_view name) {
+  if (const TextureDescription* texture = find_texture(name)) return texture;
+  return name.starts_with(kFunctionPrefix) ? find_texture(name.substr(kFunctionPrefix.size()))
+                                           : nullptr;
+}
+
 std::span<const ParamMember> param_members() {
   return kParams;
 }

@@ -92,7 +92,7 @@ TEST_F(ShardedVerify, ShardsAddUpToTheWholeRunAndMergeIntoIt) {
   EXPECT_EQ(united, whole);
   // Every kind of check took part.
   for (const std::string classname :
-       {"depth_pass", "minmax_mip", "hard", "pcf_grid_k3", "minmax_pcf_k8"}) {
+       {"depth_pass", "minmax_mip", "function_form", "hard", "pcf_grid_k3", "minmax_pcf_k8"}) {
     EXPECT_TRUE(std::any_of(whole.begin(), whole.end(), [&](const auto& c) {
       return c.first.first == classname;
     })) << classname;

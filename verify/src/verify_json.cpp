@@ -29,6 +29,25 @@ nlohmann::json minmax_json(const MinmaxCheck& c) {
   return out;
 }
 
+nlohmann::json function_json(const FunctionFormCheck& c) {
+  nlohmann::json out = {{"variant", c.variant},
+                        {"target", to_string(c.target)},
+                        {"backend", c.backend},
+                        {"front_end", c.execution.front_end},
+                        {"shims", c.execution.shims},
+                        {"surface_pixels", c.surface_pixels},
+                        {"compared", c.comparison.compared},
+                        {"ambiguous", c.comparison.ambiguous},
+                        {"over_tolerance", c.comparison.over_tolerance},
+                        {"max_abs_error", c.comparison.max_abs_error},
+                        {"mean_abs_error", c.comparison.mean_abs_error},
+                        {"tolerance", c.comparison.tolerance},
+                        {"camera_agreement", c.camera_agreement},
+                        {"pass", c.pass}};
+  if (!c.error.empty()) out["error"] = c.error;
+  return out;
+}
+
 nlohmann::json chain_json(const ChainCheck& c) {
   return {{"values", c.values},
           {"over_tolerance", c.over_tolerance},
@@ -99,6 +118,9 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
   nlohmann::json minmax = nlohmann::json::array();
   for (const MinmaxCheck& c : report.minmax_checks) minmax.push_back(minmax_json(c));
   out["minmax_mip"] = minmax;
+  nlohmann::json function = nlohmann::json::array();
+  for (const FunctionFormCheck& c : report.function_checks) function.push_back(function_json(c));
+  out["function_form"] = function;
   nlohmann::json variants = nlohmann::json::array();
   for (const VariantRun& v : report.variants) {
     nlohmann::json runs = nlohmann::json::array();

@@ -34,6 +34,21 @@ struct Context {
   std::map<MapKey, Error> broken_targets;
 };
 
+// `entry`'s function form for `target` on the Vulkan engine; one that
+// cannot run fails with why.
+FunctionFormCheck run_function_form(Context& ctx, const LibraryVariant& entry, Target target) {
+  const auto start = Clock::now();
+  auto check = check_function_form(ctx.engine, ctx.library, entry, target);
+  FunctionFormCheck out = check ? std::move(*check) : FunctionFormCheck{};
+  if (!check) {
+    out.variant = entry.variant.name;
+    out.target = target;
+    out.error = check.error().to_string();
+  }
+  out.seconds = seconds_since(start);
+  return out;
+}
+
 // `entry`'s passes for `target` on `backend`, on the device: every scene's
 // output, to be checked. A run that cannot load or execute is failed here.
 PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& entry, Target target,
@@ -206,7 +221,9 @@ bool VerifyReport::pass() const {
                                     [](const DepthCheck& c) { return c.pass; });
   const bool minmax_ok = std::all_of(minmax_checks.begin(), minmax_checks.end(),
                                      [](const MinmaxCheck& c) { return c.pass; });
-  return depth_ok && minmax_ok && failed == 0 && (runs > 0 || shard.count > 1);
+  const bool function_ok = std::all_of(function_checks.begin(), function_checks.end(),
+                                       [](const FunctionFormCheck& c) { return c.pass; });
+  return depth_ok && minmax_ok && function_ok && failed == 0 && (runs > 0 || shard.count > 1);
 }
 
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,
@@ -293,6 +310,9 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
         for (const std::unique_ptr<Backend>& backend : ctx.backends) {
           if (!backend->executes(target) || !wanted(options.paths, backend->name())) continue;
           target_runs->runs.push_back(run_on_device(ctx, *backend, entry, target, report));
+        }
+        if (entry.function.contains(target) && wanted(options.paths, "vulkan")) {
+          report.function_checks.push_back(run_function_form(ctx, entry, target));
         }
         target_runs->unchecked = scenes.scenes.size();
         for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {

@@ -10,6 +10,7 @@
 #include "screen_blur_chain.hpp"
 #include "shadow_map_images.hpp"
 #include "shadow_map_transfer.hpp"
+#include "surface_pass.hpp"
 
 namespace penumbra {
 namespace {
@@ -93,6 +94,16 @@ Result<QueryOutput> Engine::run_query_output(const PassProgram& query, const Sha
   return detail::run_validated(*context_->validation, [&]() -> Result<QueryOutput> {
     PENUMBRA_TRY(check_owner(*map.images_, *context_));
     return detail::run_query(*context_, query, *map.images_, receivers, params);
+  });
+}
+
+Result<FloatImage> Engine::run_surface(const PassProgram& surface,
+                                       std::span<const std::array<float, 3>> triangles,
+                                       const ShadowMap& map, int width, int height,
+                                       const ParamBlock& params) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<FloatImage> {
+    PENUMBRA_TRY(check_owner(*map.images_, *context_));
+    return detail::run_surface(*context_, surface, triangles, *map.images_, width, height, params);
   });
 }
 

@@ -107,7 +107,7 @@ class Planner {
   }
 
   Status add_texture(const TextSlots& slots, const TextureBinding& texture) {
-    const TextureDescription* described = find_texture(texture.name);
+    const TextureDescription* described = find_bound_texture(texture.name);
     if (!described) {
       return fail("index.json's reflection names texture '" + texture.name + "' (" + stage_ +
                   "), which is not a texture of the shader contract");

@@ -15,6 +15,7 @@
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/pass.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/result.hpp"
@@ -33,9 +34,6 @@ struct BytecodeFile {
 // What a job emits: a pass's shader, or a variant's function form: the
 // includable source that declares penumbra_visibility() (docs/function-form.md).
 enum class ShaderForm { pass, function };
-
-// The prefix of every module-scope name in the function form's text.
-inline constexpr std::string_view kFunctionPrefix = "penumbra_";
 
 // One shader stage of one pass, for one target, of one variant (or shared by
 // every variant when `variant` is null). A function form job is the query

@@ -98,6 +98,13 @@ std::span<const TextureDescription> all_textures();
 // The texture named `name` in the text, or none.
 const TextureDescription* find_texture(std::string_view name);
 
+// The prefix of every name a function form declares at file scope
+// (docs/function-form.md): its textures are "penumbra_shadow_depth", ...
+inline constexpr std::string_view kFunctionPrefix = "penumbra_";
+// The texture a pass's text names `name`, or a function form's text names
+// kFunctionPrefix + `name`; or none.
+const TextureDescription* find_bound_texture(std::string_view name);
+
 // The parameter block, ShadowParams: every member a vec4, so that Direct3D
 // 9 constant registers map one to one (member i is register c<i>).
 inline constexpr std::string_view kParamsBlock = "ShadowParams";

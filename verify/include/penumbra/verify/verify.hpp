@@ -12,6 +12,7 @@
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/support/shard.hpp"
+#include "penumbra/verify/function_form.hpp"
 #include "penumbra/verify/progress.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
@@ -132,6 +133,9 @@ struct VerifyReport {
   std::string gl_device;  // empty when the GL path did not run
   std::vector<DepthCheck> depth_checks;
   std::vector<MinmaxCheck> minmax_checks;  // for targets that ran a variant using the mip
+  // Each variant's function form per text target, on the Vulkan path
+  // (check_function_form()).
+  std::vector<FunctionFormCheck> function_checks;
   std::vector<VariantRun> variants;
   std::size_t runs = 0;    // executed (variant, target, backend, scene) runs
   std::size_t failed = 0;  // of those, failed

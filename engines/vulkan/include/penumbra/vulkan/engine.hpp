@@ -2,9 +2,9 @@
 //
 // Lifecycle: Engine::create() opens and checks a device; then any number of
 // render_depth / upload_shadow_map / read_shadow_map / build_minmax /
-// read_minmax / run_query / run_screen_blur calls, in any order, from one thread at a time
-// (every call waits for its GPU work); then destroy the Engine. Every failure
-// is a returned Error, never an exception.
+// read_minmax / run_query / run_screen_blur / run_surface calls, in any order, from one thread at a
+// time (every call waits for its GPU work); then destroy the Engine. Every failure is a returned
+// Error, never an exception.
 #pragma once
 
 #include <array>
@@ -154,6 +154,17 @@ class Engine {
                                            const FloatImage& scene_colour,
                                            const ParamBlock& params);
 
+  // Draws `triangles` (a triangle list in whatever space the program's
+  // vertex stage takes, vec3 at location 0, no culling) with `surface`, an
+  // engine's own program whose fragment stage calls a variant's function
+  // form (docs/function-form.md), into a width x height
+  // R32G32B32A32_SFLOAT target with a depth buffer of its own (both cleared
+  // to 1.0, depth test LESS), the map bound as the function form's
+  // textures. Returns the four channels of output 0, row 0 first.
+  Result<FloatImage> run_surface(const PassProgram& surface,
+                                 std::span<const std::array<float, 3>> triangles,
+                                 const ShadowMap& map, int width, int height,
+                                 const ParamBlock& params);
   // run_query_output's visibility alone.
   Result<FloatImage> run_query(const PassProgram& query, const ShadowMap& map,
                                const FloatImage& receivers, const ParamBlock& params);

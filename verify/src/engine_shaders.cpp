@@ -1,0 +1,159 @@
+#include "engine_shaders.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
+#include "penumbra/model/target_traits.hpp"
+
+namespace penumbra {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 minus(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 normalized(const Vec3& a) {
+  const double length = std::sqrt(dot(a, a));
+  return {a[0] / length, a[1] / length, a[2] / length};
+}
+
+// A float literal that reads back as the nearest float to `value`.
+std::string literal(double value) {
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof(buffer), float(value));
+  std::string text(buffer, end);
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
+
+// "vec4(a, b, c, d)" or "float4(a, b, c, d)".
+std::string row_literal(const std::array<double, 4>& row, bool hlsl) {
+  std::string out = hlsl ? "float4(" : "vec4(";
+  for (std::size_t k = 0; k < 4; ++k) out += (k ? ", " : "") + literal(row[k]);
+  return out + ")";
+}
+
+// "vecN(dot(R0, p), ...)": the rows as constants dotted with `p`.
+std::string transformed(const std::string& prefix, bool hlsl) {
+  std::string out = hlsl ? "float4(" : "vec4(";
+  for (int r = 0; r < 4; ++r)
+    out += (r ? ", " : "") + ("dot(" + prefix + std::to_string(r) + ", p)");
+  return out + ")";
+}
+
+std::string constants(const Matrix4& m, const std::string& prefix, bool hlsl) {
+  std::string out;
+  for (int r = 0; r < 4; ++r) {
+    out += (hlsl ? "static const float4 " : "const vec4 ") + prefix + std::to_string(r) + " = " +
+           row_literal(m[std::size_t(r)], hlsl) + ";\n";
+  }
+  return out;
+}
+
+std::string glsl_version(Target target) {
+  if (target == Target::glsl450) return "#version 450\n";
+  if (target == Target::glsl330) return "#version 330\n";
+  return "#version 300 es\nprecision highp float;\n";
+}
+
+}  // namespace
+
+Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target target) {
+  const reference::Camera& camera = stage.camera;
+  const Vec3 forward = normalized(minus(camera.target, camera.eye));
+  const Vec3 right = normalized(cross(forward, {0.0, 0.0, -1.0}));
+  const Vec3 up = cross(right, forward);
+  const double half_height = std::tan(camera.vertical_fov_degrees * std::numbers::pi / 360.0);
+  const double half_width = half_height * width / height;
+  // Camera space: (right, up, forward) from the eye; the picture's x / w is
+  // the ray's sx / half_width, its upward y / w is sy / half_height.
+  const bool d3d = traits(target).is_hlsl;
+  const double y_sign = d3d ? 1.0 : -1.0;
+  const double near = 0.5, far = 100.0;
+  const double a = d3d ? far / (far - near) : (far + near) / (far - near);
+  const double b = d3d ? -far * near / (far - near) : -2.0 * far * near / (far - near);
+  const auto row = [&](const Vec3& axis, double scale, double offset) {
+    return std::array<double, 4>{scale * axis[0], scale * axis[1], scale * axis[2],
+                                 offset - scale * dot(axis, camera.eye)};
+  };
+  return {row(right, 1.0 / half_width, 0.0), row(up, y_sign / half_height, 0.0), row(forward, a, b),
+          row(forward, 1.0, 0.0)};
+}
+
+Matrix4 light_clip(const reference::LightParams& light, Target target) {
+  const double scale = 2.0 * light.near_plane / light.frustum_width;
+  const double y_scale = traits(target).is_hlsl ? -scale : scale;
+  return {{{scale, 0.0, 0.0, 0.0},
+           {0.0, y_scale, 0.0, 0.0},
+           {0.0, 0.0, 0.0, 0.0},
+           {0.0, 0.0, 1.0, 0.0}}};
+}
+
+std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light) {
+  const bool hlsl = traits(target).is_hlsl;
+  std::string out = hlsl ? "" : glsl_version(target);
+  out += "// The engine's camera and the light's view-projection, as constants.\n";
+  out += constants(camera, "CAMERA", hlsl) + constants(light, "LIGHT", hlsl);
+  if (hlsl) {
+    out += "struct Varyings {\n  float4 light_clip_position : TEXCOORD0;\n";
+    // Direct3D 9's POSITION, which glslang's HLSL front end takes only as
+    // SV_Position (as the library's own dx9 shim does).
+    out += "  float4 position : SV_Position;\n};\n";
+    out += "Varyings main(float3 position : TEXCOORD0) {\n";
+    out += "  float4 p = float4(position, 1.0);\n  Varyings out_;\n";
+    out += "  out_.position = " + transformed("CAMERA", true) + ";\n";
+    out += "  out_.light_clip_position = " + transformed("LIGHT", true) + ";\n";
+    return out + "  return out_;\n}\n";
+  }
+  // Locations need GLSL 4.10 on inputs of a fragment stage; 3.30 and ES
+  // 3.00 match the varying by name.
+  const bool locations = target == Target::glsl450;
+  out += "layout(location = 0) in vec3 position;\n";
+  out +=
+      std::string(locations ? "layout(location = 0) out" : "out") + " vec4 light_clip_position;\n";
+  out += "void main() {\n  vec4 p = vec4(position, 1.0);\n";
+  out += "  gl_Position = " + transformed("CAMERA", false) + ";\n";
+  out += "  light_clip_position = " + transformed("LIGHT", false) + ";\n}\n";
+  return out;
+}
+
+std::string engine_fragment_shader(Target target, const PassReflection& reflection,
+                                   const std::string& function_text) {
+  const bool hlsl = traits(target).is_hlsl;
+  const bool pixel = reflection.signature.find("pixel") != std::string::npos;
+  const std::string result =
+      "light_clip_position.x, light_clip_position.y, visible, "
+      "light_clip_position.w";
+  if (hlsl) {
+    const bool sm3 = traits(target).shader_model == 3;
+    std::string out = function_text + "\n";
+    out += "float4 main(float4 light_clip_position : TEXCOORD0, float4 position : ";
+    // Direct3D 9's VPOS (the pixel's corner, where SV_Position gives its
+    // centre: floor() takes either), which glslang's HLSL front end takes
+    // only as SV_Position.
+    out += sm3 ? "SV_Position) : COLOR0 {\n" : "SV_Position) : SV_Target {\n";
+    out += "  float visible = penumbra_visibility(light_clip_position";
+    out += pixel ? ", floor(position.xy));\n" : ");\n";
+    return out + "  return float4(" + result + ");\n}\n";
+  }
+  std::string out = glsl_version(target);
+  for (const std::string& extension : reflection.extensions) {
+    out += "#extension " + extension + " : require\n";
+  }
+  out += function_text + "\n";
+  out += target == Target::glsl450 ? "layout(location = 0) in" : "in";
+  out += " vec4 light_clip_position;\nlayout(location = 0) out vec4 colour;\n";
+  out += "void main() {\n  float visible = penumbra_visibility(light_clip_position";
+  out += pixel ? ", floor(gl_FragCoord.xy));\n" : ");\n";
+  return out + "  colour = vec4(" + result + ");\n}\n";
+}
+
+}  // namespace penumbra
