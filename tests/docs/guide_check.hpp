@@ -3,7 +3,8 @@
 // snippets give the names of those tables.
 //
 // A marked table is a Markdown table between
-//   <!-- reflection VARIANT PASS TARGET STAGE -->   (STAGE: vert or frag)
+//   <!-- reflection VARIANT PASS TARGET STAGE -->   (STAGE: vert or frag; PASS
+//   may be `function`, the variant's function form)
 //   <!-- end reflection -->
 // Its first column is `name`; the other column headers are fields of
 // reflection_rows() (`register`, `binding`, `format`, ...). Cells may be in

@@ -67,6 +67,15 @@ Result<PassReflection> reflection_for(const GuideTable& table) {
   }
   const auto pass = parse_pass(table.pass);
   const auto target = parse_target(table.target);
+  // "function": the variant's function form (docs/function-form.md).
+  if (table.pass == "function" && target) {
+    const auto form = variant->function.find(*target);
+    if (form == variant->function.end()) {
+      return make_error(Error::Kind::bad_input, where,
+                        table.variant + " has no function form for " + table.target);
+    }
+    return form->second.reflection;
+  }
   if (!pass || !target) {
     return make_error(Error::Kind::bad_input, where,
                       "unknown pass '" + table.pass + "' or target '" + table.target + "'");

@@ -1,5 +1,6 @@
 // Golden files: the text emitted for one representative variant of each
-// technique, and for the shared passes, for every target, compared with the
+// technique (its passes, and its function form where it has one), and for
+// the shared passes, for every target, compared with the
 // reference copies under tests/golden/reference/ so that any change in the
 // emitted code shows up in review. PENUMBRA_UPDATE_GOLDEN=1 rewrites the
 // references instead of comparing (docs/golden.md).
@@ -21,6 +22,7 @@
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra {
 namespace {
@@ -191,6 +193,46 @@ INSTANTIATE_TEST_SUITE_P(Golden, VariantPasses,
                                   std::string(to_string(std::get<1>(param_info.param)));
                          });
 
+// The function form of each representative that has one, per text target:
+// "pcss/glsl450/penumbra_visibility.glsl".
+class VariantFunctions : public ::testing::TestWithParam<std::tuple<const char*, Target>> {};
+
+fs::path function_golden_path(const std::string& dir, Target target) {
+  return fs::path(dir) / std::string(to_string(target)) /
+         (traits(target).is_hlsl ? "penumbra_visibility.hlsl" : "penumbra_visibility.glsl");
+}
+
+bool has_function_golden(const Variant& variant, Target target) {
+  return has_function_form(variant.technique) && traits(target).is_text &&
+         std::ranges::find(variant.targets, target) != variant.targets.end();
+}
+
+// The (representative, target) pairs that have a function form.
+std::vector<std::tuple<const char*, Target>> function_pairs() {
+  std::vector<std::tuple<const char*, Target>> out;
+  for (const char* name : kRepresentatives) {
+    for (Target target : kAllTargets) {
+      if (has_function_golden(representative(name), target)) out.emplace_back(name, target);
+    }
+  }
+  return out;
+}
+
+TEST_P(VariantFunctions, MatchTheReference) {
+  const auto [name, target] = GetParam();
+  const Variant& variant = representative(name);
+  auto function = compile_function(variant, target);
+  ASSERT_TRUE(function.ok()) << function.error().to_string();
+  expect_golden(function_golden_path(golden_dir(variant), target), function->text);
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, VariantFunctions, ::testing::ValuesIn(function_pairs()),
+                         [](const auto& param_info) {
+                           const Variant& v = representative(std::get<0>(param_info.param));
+                           return golden_dir(v) + "_" +
+                                  std::string(to_string(std::get<1>(param_info.param)));
+                         });
+
 // The stages variants share, each compiled through a representative that
 // runs its pass: every shared stage of the pass plan (depth, the full-screen
 // vertex shaders, the min-max build passes, composite).
@@ -234,6 +276,9 @@ TEST(GoldenReference, HoldsOnlyCurrentGoldens) {
       const std::string dir = golden_dir(variant);
       for (const PassStageSource* source : variant_sources(variant)) {
         expected.insert(golden_path(dir, target, source->file_stem, ShaderStage::fragment));
+      }
+      if (has_function_golden(variant, target)) {
+        expected.insert(function_golden_path(dir, target));
       }
     }
     for (const PassStageSource* source : shared_sources()) {

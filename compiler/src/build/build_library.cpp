@@ -205,6 +205,26 @@ Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKin
   return out;
 }
 
+Result<CompiledFunction> compile_function(const Variant& variant, Target target,
+                                          std::shared_ptr<const ShaderlibSource> shaderlib) {
+  if (!has_function_form(variant.technique)) {
+    return make_error(Error::Kind::bad_input, "variant " + variant.name,
+                      "has no function form (technique " +
+                          std::string(to_string(variant.technique)) +
+                          " reads more than the shadow map); allowed: hard, pcf_grid, "
+                          "pcf_poisson, pcss");
+  }
+  if (!traits(target).is_text) {
+    return make_error(Error::Kind::bad_input, "target " + std::string(to_string(target)),
+                      "has no function form: it is not text (a Vulkan engine includes the "
+                      "glsl450 one)");
+  }
+  const Pipeline pipeline(shaderlib ? std::move(shaderlib) : embedded_shaderlib(), std::nullopt);
+  ShaderJob job = make_function_job(target, variant);
+  PENUMBRA_TRY(pipeline.run(job));
+  return CompiledFunction{std::move(job.text), std::move(job.reflection)};
+}
+
 Result<std::string> preprocess_shader(const Variant& variant, Target target, PassKind pass,
                                       ShaderStage stage,
                                       std::shared_ptr<const ShaderlibSource> shaderlib) {

@@ -120,6 +120,20 @@ Result<CompiledPass> compile_pass(
     const Variant& variant, Target target, PassKind pass,
     std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
 
+// A variant's function form for one text target (docs/function-form.md):
+// the includable text and its reflection (bindings, signature, extensions).
+struct CompiledFunction {
+  std::string text;
+  PassReflection reflection;
+};
+
+// Compiles `variant`'s function form for `target` without writing files.
+// Errors: bad_input for a technique without one (has_function_form()) or a
+// target without text (spirv).
+Result<CompiledFunction> compile_function(
+    const Variant& variant, Target target,
+    std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
+
 // The GLSL that one stage of one pass compiles from: its shaderlib source
 // with every include and define resolved, as the build's preprocess stage
 // makes it, for compiling with other tools (penumbra_bench_build).
