@@ -32,6 +32,16 @@ Vec3 normalized(const Vec3& a) {
 
 }  // namespace
 
+CameraFrame camera_frame(const Camera& camera, int width, int height) {
+  CameraFrame frame;
+  frame.forward = normalized(camera.target - camera.eye);
+  frame.right = normalized(cross(frame.forward, {0.0, 0.0, -1.0}));
+  frame.up = cross(frame.right, frame.forward);
+  frame.half_height = std::tan(camera.vertical_fov_degrees * std::numbers::pi / 360.0);
+  frame.half_width = frame.half_height * width / height;
+  return frame;
+}
+
 Stage report_stage() {
   Stage stage;
   Scene& scene = stage.scene;
@@ -59,18 +69,13 @@ StageView view(const Stage& stage, int width, int height) {
   const Scene& scene = stage.scene;
   StageView out{FloatImage(width, height, 3), std::vector<Surface>(std::size_t(width) * height),
                 std::vector<Vec3>(std::size_t(width) * height)};
-  // Light-view space has the light at z = 0 looking down +z: "up" in the
-  // picture is -z.
   const Camera& camera = stage.camera;
-  const Vec3 forward = normalized(camera.target - camera.eye);
-  const Vec3 right = normalized(cross(forward, {0.0, 0.0, -1.0}));
-  const Vec3 up = cross(right, forward);
-  const double half_height = std::tan(camera.vertical_fov_degrees * std::numbers::pi / 360.0);
-  const double half_width = half_height * width / height;
+  const CameraFrame frame = camera_frame(camera, width, height);
+  const Vec3 &forward = frame.forward, &right = frame.right, &up = frame.up;
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
-      const double sx = ((i + 0.5) / width * 2.0 - 1.0) * half_width;
-      const double sy = (1.0 - (j + 0.5) / height * 2.0) * half_height;
+      const double sx = ((i + 0.5) / width * 2.0 - 1.0) * frame.half_width;
+      const double sy = (1.0 - (j + 0.5) / height * 2.0) * frame.half_height;
       const Vec3 d{forward[0] + sx * right[0] + sy * up[0], forward[1] + sx * right[1] + sy * up[1],
                    forward[2] + sx * right[2] + sy * up[2]};
       double nearest = std::numeric_limits<double>::infinity();

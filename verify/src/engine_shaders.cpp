@@ -1,28 +1,14 @@
 #include "engine_shaders.hpp"
 
 #include <charconv>
-#include <cmath>
-#include <numbers>
 
 #include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 minus(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec3& a, const Vec3& b) {
+double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 normalized(const Vec3& a) {
-  const double length = std::sqrt(dot(a, a));
-  return {a[0] / length, a[1] / length, a[2] / length};
 }
 
 // A float literal that reads back as the nearest float to `value`.
@@ -67,12 +53,7 @@ std::string glsl_version(Target target) {
 }  // namespace
 
 Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target target) {
-  const reference::Camera& camera = stage.camera;
-  const Vec3 forward = normalized(minus(camera.target, camera.eye));
-  const Vec3 right = normalized(cross(forward, {0.0, 0.0, -1.0}));
-  const Vec3 up = cross(right, forward);
-  const double half_height = std::tan(camera.vertical_fov_degrees * std::numbers::pi / 360.0);
-  const double half_width = half_height * width / height;
+  const reference::CameraFrame frame = reference::camera_frame(stage.camera, width, height);
   // Camera space: (right, up, forward) from the eye; the picture's x / w is
   // the ray's sx / half_width, its upward y / w is sy / half_height.
   const bool d3d = traits(target).is_hlsl;
@@ -80,12 +61,14 @@ Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target
   const double near = 0.5, far = 100.0;
   const double a = d3d ? far / (far - near) : (far + near) / (far - near);
   const double b = d3d ? -far * near / (far - near) : -2.0 * far * near / (far - near);
-  const auto row = [&](const Vec3& axis, double scale, double offset) {
+  // Row r of the matrix: scale * (axis . (p - eye)) + offset.
+  const auto row = [&](const std::array<double, 3>& axis, double scale, double offset) {
     return std::array<double, 4>{scale * axis[0], scale * axis[1], scale * axis[2],
-                                 offset - scale * dot(axis, camera.eye)};
+                                 offset - scale * dot(axis, stage.camera.eye)};
   };
-  return {row(right, 1.0 / half_width, 0.0), row(up, y_sign / half_height, 0.0), row(forward, a, b),
-          row(forward, 1.0, 0.0)};
+  return {row(frame.right, 1.0 / frame.half_width, 0.0),
+          row(frame.up, y_sign / frame.half_height, 0.0), row(frame.forward, a, b),
+          row(frame.forward, 1.0, 0.0)};
 }
 
 Matrix4 light_clip(const reference::LightParams& light, Target target) {

@@ -5,8 +5,6 @@
 #include <limits>
 
 #include "engine_shaders.hpp"
-#include "penumbra/compiler/reflection.hpp"
-#include "penumbra/compiler/text_frontend.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/stage.hpp"
@@ -15,20 +13,6 @@
 
 namespace penumbra {
 namespace {
-
-// One stage of the engine's program, compiled by the target's front end.
-Result<StageCode> compiled(Target target, ShaderStage stage, const std::string& text,
-                           const std::string& name, Execution& execution) {
-  PENUMBRA_TRY_ASSIGN(FrontEndResult front, compile_target_text(target, stage, text, name));
-  execution.front_end = front.front_end;
-  for (const std::string& shim : front.shims) {
-    if (std::ranges::find(execution.shims, shim) == execution.shims.end()) {
-      execution.shims.push_back(shim);
-    }
-  }
-  PENUMBRA_TRY_ASSIGN(ShaderInterface iface, reflect(front.spirv));
-  return StageCode{std::move(front.spirv), std::move(iface)};
-}
 
 // The stage's boxes and its ground tile, which the shadow map leaves out
 // (a receiver only), as a triangle list in light-view space.
@@ -163,13 +147,14 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& lib
       {"colour", 0, std::string(api_format(target, TextureFormat::rgba32_float))}};
   program.d3d_viewport = traits(target).is_hlsl;
   program.gl_clip_depth = !traits(target).is_hlsl;
-  PENUMBRA_TRY_ASSIGN(program.vert,
-                      compiled(target, ShaderStage::vertex, vertex,
-                               form->second.file + " (engine vertex stage)", check.execution));
+  PENUMBRA_TRY_ASSIGN(program.vert, compile_text_stage(target, ShaderStage::vertex, vertex,
+                                                       form->second.file + " (engine vertex stage)",
+                                                       check.execution));
   const std::string fragment = engine_fragment_shader(target, form->second.reflection, text);
-  PENUMBRA_TRY_ASSIGN(program.frag,
-                      compiled(target, ShaderStage::fragment, fragment,
-                               form->second.file + " (engine fragment stage)", check.execution));
+  PENUMBRA_TRY_ASSIGN(
+      program.frag,
+      compile_text_stage(target, ShaderStage::fragment, fragment,
+                         form->second.file + " (engine fragment stage)", check.execution));
   // (x, y, visibility, w) per pixel; the background keeps the clear, 1.
   PENUMBRA_TRY_ASSIGN(const FloatImage clip,
                       engine.run_surface(program, stage_triangles(stage), *fixture.map, width,

@@ -40,15 +40,7 @@ Result<StageCode> text_stage(const Library& library, const LibraryVariant& varia
   if (!path) return path.error();
   auto text = read_file(*path);
   if (!text) return text.error();
-  auto compiled = compile_target_text(target, stage, *text, path->string());
-  if (!compiled) return compiled.error();
-  execution.front_end = compiled->front_end;
-  for (const std::string& shim : compiled->shims) {
-    if (std::find(execution.shims.begin(), execution.shims.end(), shim) == execution.shims.end()) {
-      execution.shims.push_back(shim);
-    }
-  }
-  return reflected(std::move(compiled->spirv), path->string());
+  return compile_text_stage(target, stage, *text, path->string(), execution);
 }
 
 // index.json's reflection.<pass>.<target>: what the engine binds.
@@ -70,6 +62,19 @@ Result<std::string> read_pass_file(const Library& library, const LibraryVariant&
   auto path = stage_path(library, variant, pass, target, stage);
   if (!path) return path.error();
   return read_file(*path);
+}
+
+Result<StageCode> compile_text_stage(Target target, ShaderStage stage, std::string_view text,
+                                     const std::string& name, Execution& execution) {
+  auto compiled = compile_target_text(target, stage, text, name);
+  if (!compiled) return compiled.error();
+  execution.front_end = compiled->front_end;
+  for (const std::string& shim : compiled->shims) {
+    if (std::find(execution.shims.begin(), execution.shims.end(), shim) == execution.shims.end()) {
+      execution.shims.push_back(shim);
+    }
+  }
+  return reflected(std::move(compiled->spirv), name);
 }
 
 Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,

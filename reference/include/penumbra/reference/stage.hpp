@@ -19,6 +19,21 @@ struct Camera {
   double vertical_fov_degrees = 44.0;             // the picture's vertical field of view
 };
 
+// The camera's frame for a `width` x `height` picture: pixel (i, j) sees
+// along forward + sx right + sy up, where sx = ((i + 0.5) / width * 2 - 1)
+// half_width and sy = (1 - (j + 0.5) / height * 2) half_height (row 0 at
+// the top). Light-view space has the light looking down +z, so the
+// picture's up is towards -z.
+struct CameraFrame {
+  std::array<double, 3> forward;
+  std::array<double, 3> right;
+  std::array<double, 3> up;
+  double half_width = 0.0;   // tan of half the horizontal field of view
+  double half_height = 0.0;  // tan of half the vertical field of view
+};
+
+CameraFrame camera_frame(const Camera& camera, int width, int height);
+
 struct Stage {
   Scene scene;                     // the boxes, light and receiver plane (the ground)
   double ground_half_width = 4.2;  // the ground tile: |x|, |y| <= this, inside the map

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <string_view>
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
@@ -20,6 +22,13 @@ struct ExecutableProgram {
   PassProgram program;
   Execution execution;
 };
+
+// One stage of `target`'s text (an emitted file, or an engine's own shader
+// around a function form) compiled by the target's glslang front end and
+// reflected; `execution` gains the front end and any shims it needed.
+// `name` names the text in errors.
+Result<StageCode> compile_text_stage(Target target, ShaderStage stage, std::string_view text,
+                                     const std::string& name, Execution& execution);
 
 // The pass of `variant` for `target`, ready to run: the built .spv for
 // spirv; for every other target its emitted text compiled by glslang's GLSL
