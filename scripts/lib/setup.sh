@@ -22,6 +22,9 @@ install_missing_packages() {
   for pkg in "${PENUMBRA_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
   done
+  # npm installs the three.js example's packages (tests/threejs). A machine
+  # whose Node.js comes from elsewhere keeps its own npm.
+  command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
   if [ ${#missing[@]} -eq 0 ]; then
     return 0
   fi

@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
+
+#include "chromium_page.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -16,34 +16,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view kPlaceholder = "PENUMBRA_PROGRAMS_JSON";
-
-// Headless WebGL 2 as root on a machine with no GPU: ANGLE on SwiftShader
-// (Chromium refuses it unless told it is meant), no sandbox (root), and
-// nothing that reaches the network.
-constexpr const char* kFlags =
-    " --headless --no-sandbox --disable-gpu-sandbox --use-gl=angle --use-angle=swiftshader"
-    " --enable-unsafe-swiftshader --ignore-gpu-blocklist --disable-background-networking"
-    " --disable-component-update --disable-sync --no-first-run --dump-dom";
-
-Result<std::string> read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(Error::Kind::io, path.string(), "cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-Status write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!(out << text)) return make_error(Error::Kind::io, path.string(), "cannot be written");
-  return {};
-}
-
-std::string shell_quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 // The names an engine passes to WebGL for one program, over every variant
 // that uses it.
@@ -76,7 +48,7 @@ Result<nlohmann::json> page_input(const Library& library) {
       if (files == targets.end()) continue;
       for (const std::string* path : {&files->second.vert, &files->second.frag}) {
         if (shaders.contains(*path)) continue;
-        PENUMBRA_TRY_ASSIGN(shaders[*path], read_text(library.root / *path));
+        PENUMBRA_TRY_ASSIGN(shaders[*path], read_file(library.root / *path));
       }
       auto& program = programs[program_key(files->second)];
       program.first = files->second;
@@ -109,45 +81,6 @@ Result<nlohmann::json> page_input(const Library& library) {
   return input;
 }
 
-// JSON inside <script>: "</" would end the element.
-std::string script_safe(const std::string& json) {
-  std::string out;
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    out += json[i];
-    if (json[i] == '<' && i + 1 < json.size() && json[i + 1] == '/') out += '\\';
-  }
-  return out;
-}
-
-// The text of <pre id="result"> in the dumped DOM, unescaped as the DOM
-// serializer escapes text.
-Result<std::string> result_text(const std::string& dom, const std::string& where) {
-  const std::string open = "<pre id=\"result\">";
-  const auto begin = dom.find(open);
-  const auto end = begin == std::string::npos ? begin : dom.find("</pre>", begin);
-  if (end == std::string::npos) {
-    return make_error(Error::Kind::internal, where,
-                      "the dumped DOM has no <pre id=\"result\">: " + dom.substr(0, 2000));
-  }
-  const std::string text = dom.substr(begin + open.size(), end - begin - open.size());
-  static const std::map<std::string, std::string> kEntities = {
-      {"&amp;", "&"}, {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&nbsp;", "\u00a0"}};
-  std::string out;
-  for (std::size_t i = 0; i < text.size();) {
-    bool replaced = false;
-    for (const auto& [entity, character] : kEntities) {
-      if (text.compare(i, entity.size(), entity) == 0) {
-        out += character;
-        i += entity.size();
-        replaced = true;
-        break;
-      }
-    }
-    if (!replaced) out += text[i++];
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string program_key(const PassFiles& files) {
@@ -157,7 +90,7 @@ std::string program_key(const PassFiles& files) {
 Result<nlohmann::json> run_webgl(const Library& library) {
   const fs::path template_path =
       fs::path(PENUMBRA_SOURCE_DIR) / "tests" / "webgl" / "webgl_proof.html";
-  PENUMBRA_TRY_ASSIGN(std::string page, read_text(template_path));
+  PENUMBRA_TRY_ASSIGN(std::string page, read_file(template_path));
   const auto at = page.find(kPlaceholder);
   if (at == std::string::npos) {
     return make_error(Error::Kind::internal, template_path.string(),
@@ -168,29 +101,13 @@ Result<nlohmann::json> run_webgl(const Library& library) {
 
   const fs::path dir =
       fs::path(::testing::TempDir()) / ("penumbra-webgl-" + std::to_string(::getpid()));
-  fs::create_directories(dir / "profile");
+  fs::create_directories(dir);
   const fs::path page_path = dir / "webgl_proof.html";
-  PENUMBRA_TRY(write_text(page_path, page));
-  const fs::path dom_path = dir / "dom.html";
-  const fs::path log_path = dir / "chromium.log";
-  const std::string command = "timeout 300 " + shell_quoted(CHROMIUM_EXECUTABLE) + kFlags +
-                              " --user-data-dir=" + shell_quoted((dir / "profile").string()) + " " +
-                              shell_quoted("file://" + page_path.string()) + " > " +
-                              shell_quoted(dom_path.string()) + " 2> " +
-                              shell_quoted(log_path.string());
-  const int status = std::system(command.c_str());
-  const std::string where = page_path.string();
-  if (status != 0) {
-    auto log = read_text(log_path);
-    return make_error(Error::Kind::device, where,
-                      "chromium exited with status " + std::to_string(status) + ": " +
-                          (log ? log->substr(0, 4000) : std::string("(no log)")));
-  }
-  PENUMBRA_TRY_ASSIGN(const std::string dom, read_text(dom_path));
-  PENUMBRA_TRY_ASSIGN(const std::string text, result_text(dom, where));
+  PENUMBRA_TRY(write_file(page_path, page));
+  PENUMBRA_TRY_ASSIGN(const std::string text, run_chromium_page(page_path, CHROMIUM_EXECUTABLE));
   nlohmann::json result = nlohmann::json::parse(text, nullptr, false);
   if (result.is_discarded()) {
-    return make_error(Error::Kind::internal, where, "the result is not JSON: " + text);
+    return make_error(Error::Kind::internal, page_path.string(), "the result is not JSON: " + text);
   }
   std::error_code ignored;
   fs::remove_all(dir, ignored);  // kept when the run fails, for its page and log

@@ -1,14 +1,13 @@
 #include "penumbra/verify/function_form.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 #include "engine_shaders.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/stage.hpp"
 #include "penumbra/support/file.hpp"
+#include "penumbra/verify/shadow_params.hpp"
 #include "scene_fixture.hpp"
 
 namespace penumbra {
@@ -23,91 +22,6 @@ std::vector<std::array<float, 3>> stage_triangles(const reference::Stage& stage)
   const std::array<float, 3> corners[] = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
   for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(corners[k]);
   return out;
-}
-
-// (u, v, z_r) from each pixel's light clip position, as the function form
-// derives them on `target` (docs/function-form.md); a pixel no surface
-// covers (w = 0, the clear) gets a receiver at the light, which is lit.
-FloatImage receivers_of(const FloatImage& clip, Target target) {
-  const double v_sign = traits(target).is_hlsl ? -0.5 : 0.5;
-  FloatImage out(clip.width, clip.height, 3);
-  for (int j = 0; j < clip.height; ++j) {
-    for (int i = 0; i < clip.width; ++i) {
-      const double w = clip.at(i, j, 3);
-      if (!(w > 0.0)) {
-        out.at(i, j, 0) = out.at(i, j, 1) = 0.5f;
-        out.at(i, j, 2) = 0.0f;
-        continue;
-      }
-      out.at(i, j, 0) = float(0.5 + 0.5 * (clip.at(i, j, 0) / w));
-      out.at(i, j, 1) = float(0.5 + v_sign * (clip.at(i, j, 1) / w));
-      out.at(i, j, 2) = float(w);
-    }
-  }
-  return out;
-}
-
-// The face of the stage the ray cast's point `p` lies on: 0 for the
-// ground, 1 + 6 b + k for face k of box b; -1 for none.
-int face_of(const reference::Scene& scene, const std::array<double, 3>& p,
-            reference::Surface surface) {
-  if (surface == reference::Surface::none) return -1;
-  if (surface == reference::Surface::ground) return 0;
-  int nearest = -1;
-  double distance = std::numeric_limits<double>::infinity();
-  for (std::size_t b = 0; b < scene.boxes.size(); ++b) {
-    const reference::Box& box = scene.boxes[b];
-    const double planes[6] = {box.x0, box.x1, box.y0, box.y1, box.z0, box.z1};
-    for (int k = 0; k < 6; ++k) {
-      const double d = std::abs(p[std::size_t(k / 2)] - planes[k]);
-      if (d < distance) {
-        distance = d;
-        nearest = 1 + 6 * int(b) + k;
-      }
-    }
-  }
-  return nearest;
-}
-
-// Whether pixel (i, j) lies inside one face of the stage with the rest of
-// its 2x2 quad, the pixels a GPU takes screen derivatives over: each drawn
-// (w > 0) and on the same face in the ray cast. Elsewhere the GPU's
-// derivatives extrapolate a face past its edge, and rasterization and the
-// ray cast may see different surfaces.
-bool inside_face(const reference::Stage& stage, const reference::StageView& view,
-                 const FloatImage& receivers, int i, int j) {
-  const auto face = [&](int x, int y) {
-    const std::size_t k = std::size_t(y) * receivers.width + x;
-    return receivers.at(x, y, 2) > 0.0f ? face_of(stage.scene, view.points[k], view.surfaces[k])
-                                        : -1;
-  };
-  const int own = face(i, j);
-  if (own < 0) return false;
-  const int qi = i & ~1, qj = j & ~1;
-  for (int dj = 0; dj < 2; ++dj) {
-    for (int di = 0; di < 2; ++di) {
-      const int x = std::min(qi + di, receivers.width - 1);
-      const int y = std::min(qj + dj, receivers.height - 1);
-      if (face(x, y) != own) return false;
-    }
-  }
-  return true;
-}
-
-// See FunctionFormCheck::camera_agreement.
-double camera_agreement(const reference::StageView& view, const FloatImage& gpu) {
-  std::size_t surfaces = 0, agreeing = 0;
-  for (int j = 0; j < gpu.height; ++j) {
-    for (int i = 0; i < gpu.width; ++i) {
-      if (view.surfaces[std::size_t(j) * gpu.width + i] == reference::Surface::none) continue;
-      ++surfaces;
-      const double z = view.receivers.at(i, j, 2);
-      agreeing += std::abs(gpu.at(i, j, 0) - view.receivers.at(i, j, 0)) < 1e-3 &&
-                  std::abs(gpu.at(i, j, 1) - view.receivers.at(i, j, 1)) < 1e-3 &&
-                  std::abs(gpu.at(i, j, 2) - z) < 1e-3 * z;
-    }
-  }
-  return surfaces ? double(agreeing) / double(surfaces) : 0.0;
 }
 
 }  // namespace
@@ -160,35 +74,18 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& lib
                       engine.run_surface(program, stage_triangles(stage), *fixture.map, width,
                                          height, fixture.params));
 
-  fixture.receivers = receivers_of(clip, target);
-  check.camera_agreement = camera_agreement(view, fixture.receivers);
+  fixture.receivers = receivers_from_clip(clip, 3, traits(target).is_hlsl ? -0.5 : 0.5);
+  const EngineMap map{fixture.normalized_depth, fixture.encoded, depth_scale_for(scene.far_z)};
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
   PENUMBRA_TRY_ASSIGN(
-      const reference::ReferenceImage expected,
-      reference_on_map(entry.variant, fixture, fixture.normalized_depth, fixture.linear_depth,
-                       precision, reference::shader_limits(target)));
-  // The pixels inside a face, in a row: the GPU's visibility (output
-  // 0's z), the reference's and its ambiguity.
-  std::vector<std::size_t> inside;
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      if (inside_face(stage, view, fixture.receivers, i, j))
-        inside.push_back(std::size_t(j) * width + i);
-    }
-  }
-  const int count = int(inside.size());
-  FloatImage gpu(count, 1, 1), reference(count, 1, 1), ambiguous(count, 1, 1);
-  for (std::size_t k = 0; k < inside.size(); ++k) {
-    gpu.data[k] = clip.data[4 * inside[k] + 2];
-    reference.data[k] = expected.visibility.data[inside[k]];
-    ambiguous.data[k] = expected.ambiguous.data[inside[k]];
-  }
-  check.surface_pixels = inside.size();
-  PENUMBRA_TRY_ASSIGN(check.comparison,
-                      reference::compare(gpu, reference, ambiguous,
-                                         reference::tolerance(entry.variant.technique, precision)));
-  check.pass = check.comparison.pass && check.camera_agreement >= kMinCameraAgreement;
+      const StagePictureCheck picture,
+      check_stage_picture(entry.variant, stage, view, map, scene.light, fixture.receivers, clip, 2,
+                          precision, reference::shader_limits(target)));
+  check.comparison = picture.comparison;
+  check.surface_pixels = picture.surface_pixels;
+  check.camera_agreement = picture.camera_agreement;
+  check.pass = picture.pass;
   return check;
 }
 

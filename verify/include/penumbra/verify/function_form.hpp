@@ -7,6 +7,7 @@
 
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/reference/compare.hpp"
+#include "penumbra/verify/stage_picture.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 
@@ -31,9 +32,6 @@ struct FunctionFormCheck {
   bool pass = false;     // comparison.pass and camera_agreement >= kMinCameraAgreement
   double seconds = 0.0;  // drawing the map and the stage, and checking them
 };
-
-// Silhouette pixels may see another surface than the ray cast; no more.
-inline constexpr double kMinCameraAgreement = 0.97;
 
 // `entry`'s function form for `target` (a text target), on `engine`: the
 // map drawn by the target's depth pass, the stage's boxes and ground drawn

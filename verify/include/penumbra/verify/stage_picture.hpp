@@ -1,0 +1,69 @@
+// A picture of the report's stage drawn by an engine whose surface shaders
+// call a variant's function form (docs/function-form.md): per pixel the
+// light clip position the fragment called penumbra_visibility() with and
+// what it returned, checked against the CPU reference evaluated on exactly
+// those receivers and the engine's own shadow map. verify's function form
+// check draws such pictures on its engines; tests/threejs has three.js
+// draw them.
+#pragma once
+
+#include <optional>
+
+#include "penumbra/model/model.hpp"
+#include "penumbra/reference/compare.hpp"
+#include "penumbra/reference/precision.hpp"
+#include "penumbra/reference/shadow_map.hpp"
+#include "penumbra/reference/stage.hpp"
+#include "penumbra/reference/techniques.hpp"
+
+namespace penumbra {
+
+// Silhouette pixels may see another surface than the ray cast; no more.
+inline constexpr double kMinCameraAgreement = 0.97;
+
+// The engine's shadow map as the function form read it.
+struct EngineMap {
+  FloatImage stored;  // 1 channel, row j at v = (j + 0.5) / height, as sampled
+  // The encoding of `stored`; none for linear z * depth_scale.
+  std::optional<reference::EncodedDepth> encoded;
+  double depth_scale = 1.0;  // of a linear map
+};
+
+struct StagePictureCheck {
+  // The visibility against the reference evaluated on the receivers the
+  // GPU called the function with, over the pixels whose 2x2 quad lies on
+  // one face of the stage.
+  reference::Comparison comparison;
+  std::size_t surface_pixels = 0;  // those pixels, compared or ambiguous
+  // Of the pixels where the camera's ray cast hits a surface, the fraction
+  // whose GPU receiver is the ray cast's (within 1e-3 in u, v and z_r / z):
+  // the camera, the light matrix and the rows agree with the reference's.
+  double camera_agreement = 0.0;
+  bool pass = false;  // comparison.pass and camera_agreement >= kMinCameraAgreement
+};
+
+// (u, v, z_r) from each pixel's light clip position (x, y, w in channels
+// 0, 1 and `w_channel`), as the function form derives them: v = 0.5 +
+// `v_sign` y / w (0.5 for the GL targets, -0.5 for Direct3D's). A pixel no
+// surface covers (w <= 0, the clear) gets a receiver at the light, which is
+// lit.
+FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign);
+
+// The pixels of `receivers` (the stage seen through `view`'s pixels, row 0
+// at the top) inside one face of the stage with the rest of their 2x2
+// quad, the pixels a GPU takes screen derivatives over, as indices in
+// row-major order. Elsewhere the GPU's derivatives extrapolate a face past
+// its edge, and rasterization and the ray cast may see different surfaces.
+std::vector<std::size_t> face_pixels(const reference::Stage& stage,
+                                     const reference::StageView& view, const FloatImage& receivers);
+
+// `visibility` (channel `channel`), drawn by `variant`'s function form at
+// `receivers` (the view's size) on `map` under `light`, against the
+// reference. Errors: the reference's, for inputs it cannot evaluate.
+Result<StagePictureCheck> check_stage_picture(
+    const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
+    const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
+    const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
+    const reference::ShaderLimits& limits);
+
+}  // namespace penumbra

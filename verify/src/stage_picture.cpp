@@ -1,0 +1,126 @@
+#include "penumbra/verify/stage_picture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace penumbra {
+namespace {
+
+// The face of the stage the ray cast's point `p` lies on: 0 for the
+// ground, 1 + 6 b + k for face k of box b; -1 for none.
+int face_of(const reference::Scene& scene, const std::array<double, 3>& p,
+            reference::Surface surface) {
+  if (surface == reference::Surface::none) return -1;
+  if (surface == reference::Surface::ground) return 0;
+  int nearest = -1;
+  double distance = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < scene.boxes.size(); ++b) {
+    const reference::Box& box = scene.boxes[b];
+    const double planes[6] = {box.x0, box.x1, box.y0, box.y1, box.z0, box.z1};
+    for (int k = 0; k < 6; ++k) {
+      const double d = std::abs(p[std::size_t(k / 2)] - planes[k]);
+      if (d < distance) {
+        distance = d;
+        nearest = 1 + 6 * int(b) + k;
+      }
+    }
+  }
+  return nearest;
+}
+
+// See StagePictureCheck::camera_agreement.
+double camera_agreement(const reference::StageView& view, const FloatImage& gpu) {
+  std::size_t surfaces = 0, agreeing = 0;
+  for (int j = 0; j < gpu.height; ++j) {
+    for (int i = 0; i < gpu.width; ++i) {
+      if (view.surfaces[std::size_t(j) * gpu.width + i] == reference::Surface::none) continue;
+      ++surfaces;
+      const double z = view.receivers.at(i, j, 2);
+      agreeing += std::abs(gpu.at(i, j, 0) - view.receivers.at(i, j, 0)) < 1e-3 &&
+                  std::abs(gpu.at(i, j, 1) - view.receivers.at(i, j, 1)) < 1e-3 &&
+                  std::abs(gpu.at(i, j, 2) - z) < 1e-3 * z;
+    }
+  }
+  return surfaces ? double(agreeing) / double(surfaces) : 0.0;
+}
+
+}  // namespace
+
+FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign) {
+  FloatImage out(clip.width, clip.height, 3);
+  for (int j = 0; j < clip.height; ++j) {
+    for (int i = 0; i < clip.width; ++i) {
+      const double w = clip.at(i, j, w_channel);
+      if (!(w > 0.0)) {
+        out.at(i, j, 0) = out.at(i, j, 1) = 0.5f;
+        out.at(i, j, 2) = 0.0f;
+        continue;
+      }
+      out.at(i, j, 0) = float(0.5 + 0.5 * (clip.at(i, j, 0) / w));
+      out.at(i, j, 1) = float(0.5 + v_sign * (clip.at(i, j, 1) / w));
+      out.at(i, j, 2) = float(w);
+    }
+  }
+  return out;
+}
+
+std::vector<std::size_t> face_pixels(const reference::Stage& stage,
+                                     const reference::StageView& view,
+                                     const FloatImage& receivers) {
+  const auto face = [&](int x, int y) {
+    const std::size_t k = std::size_t(y) * receivers.width + x;
+    return receivers.at(x, y, 2) > 0.0f ? face_of(stage.scene, view.points[k], view.surfaces[k])
+                                        : -1;
+  };
+  std::vector<std::size_t> out;
+  for (int j = 0; j < receivers.height; ++j) {
+    for (int i = 0; i < receivers.width; ++i) {
+      const int own = face(i, j);
+      bool inside = own >= 0;
+      const int qi = i & ~1, qj = j & ~1;
+      for (int d = 0; d < 4 && inside; ++d) {
+        const int x = std::min(qi + d % 2, receivers.width - 1);
+        const int y = std::min(qj + d / 2, receivers.height - 1);
+        inside = face(x, y) == own;
+      }
+      if (inside) out.push_back(std::size_t(j) * receivers.width + i);
+    }
+  }
+  return out;
+}
+
+Result<StagePictureCheck> check_stage_picture(
+    const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
+    const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
+    const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
+    const reference::ShaderLimits& limits) {
+  reference::ReferenceImage expected;
+  if (map.encoded) {
+    PENUMBRA_TRY_ASSIGN(expected, reference::evaluate_image(variant, map.stored, *map.encoded,
+                                                            light, receivers, precision, limits));
+  } else {
+    FloatImage linear = map.stored;
+    for (float& d : linear.data) d = float(d / map.depth_scale);  // exact: a power of two
+    PENUMBRA_TRY_ASSIGN(
+        expected, reference::evaluate_image(variant, linear, light, receivers, precision, limits));
+  }
+  StagePictureCheck check;
+  check.camera_agreement = camera_agreement(view, receivers);
+  const std::vector<std::size_t> inside = face_pixels(stage, view, receivers);
+  const int count = int(inside.size());
+  FloatImage gpu(count, 1, 1), reference(count, 1, 1), ambiguous(count, 1, 1);
+  for (std::size_t k = 0; k < inside.size(); ++k) {
+    gpu.data[k] = visibility.data[std::size_t(visibility.channels) * inside[k] + channel];
+    reference.data[k] = expected.visibility.data[inside[k]];
+    ambiguous.data[k] = expected.ambiguous.data[inside[k]];
+  }
+  check.surface_pixels = inside.size();
+  PENUMBRA_TRY_ASSIGN(check.comparison,
+                      reference::compare(gpu, reference, ambiguous,
+                                         reference::tolerance(variant.technique, precision)));
+  check.pass = check.comparison.pass && check.camera_agreement >= kMinCameraAgreement;
+  return check;
+}
+
+}  // namespace penumbra
