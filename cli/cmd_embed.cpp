@@ -59,7 +59,8 @@ void add_embed_command(CLI::App& app, int& exit_code) {
       return;
     }
     if (args->quiet) return;
-    std::cout << "embedded " << summary->programs << " programs (" << summary->blob_bytes
+    std::cout << "embedded " << summary->programs << " programs and " << summary->functions
+              << " function forms (" << summary->blob_bytes
               << " bytes of distinct code and reflection, from " << summary->source_bytes
               << " bytes of files) into " << args->out << "\n";
   });

@@ -19,35 +19,11 @@
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/embedded_program.hpp"
 #include "penumbra/vulkan/engine.hpp"
+#include "scene.hpp"
 
 namespace {
 
-using Vec3 = std::array<float, 3>;
-
-// The scene, in the light's view space (docs/shader-interface.md): the light
-// at the origin looking down +z, the ground the plane z = kGroundZ.
-constexpr float kGroundZ = 16.0f;
-constexpr Vec3 kBoxMin{0.4f, -0.4f, 13.0f};  // the box's top face is at z = 13
-constexpr Vec3 kBoxMax{1.2f, 0.4f, kGroundZ};
-constexpr float kGroundHalfWidth = 2.0f;  // the picture shows x, y in [-2, 2]
-constexpr int kMapSize = 1024;            // the shadow map, texels per side
-constexpr int kImageSize = 512;           // the picture, pixels per side
-
-// The box's 12 triangles (the depth pass draws without culling, so the
-// winding does not matter).
-std::vector<Vec3> box_triangles(Vec3 lo, Vec3 hi) {
-  // Corner k takes x from bit 0, y from bit 1, z from bit 2: 0 is lo, 7 hi.
-  const auto corner = [&](int k) {
-    return Vec3{k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
-  };
-  constexpr int kFaces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
-  std::vector<Vec3> triangles;
-  for (const auto& f : kFaces) {
-    for (int k : {f[0], f[1], f[2], f[0], f[2], f[3]}) triangles.push_back(corner(k));
-  }
-  return triangles;
-}
+using namespace scene;
 
 // What the query pass reads per pixel: the point the pixel shows as (u, v)
 // in the shadow map and its light-view depth z. An engine computes it from
@@ -119,16 +95,15 @@ int main(int argc, char** argv) {
   // in [0, 1], scaled by a power of two (exact). Every pass takes its values
   // from this one block.
   penumbra::reference::LightParams light;
-  light.light_world_size = 0.5;  // the light is the square x, y in [-0.5, 0.5] at z = 0
-  light.frustum_width = 3.75;    // the map covers 3.75 x 3.75 at the near plane
-  light.near_plane = 9.5;
+  light.light_world_size = kLightSize;
+  light.frustum_width = kFrustumWidth;
+  light.near_plane = kNear;
   const penumbra::ParamBlock params = penumbra::shadow_params(
-      light, {kMapSize, kMapSize, kImageSize, kImageSize}, penumbra::depth_scale_for(32.0));
+      light, {kMapSize, kMapSize, kImageSize, kImageSize}, penumbra::depth_scale_for(kFar));
 
   // Pass 1: the box, seen from the light, into the shadow map. The ground
   // only receives, so it is not drawn (and needs no depth bias).
-  auto map =
-      (*engine)->render_depth(*depth, box_triangles(kBoxMin, kBoxMax), kMapSize, kMapSize, params);
+  auto map = (*engine)->render_depth(*depth, box_triangles(), kMapSize, kMapSize, params);
   if (!map) return fail(map.error().to_string());
   // Pass 2: the PCSS query for every pixel of the ground.
   auto visibility = (*engine)->run_query(*query, **map, ground_receivers(light), params);

@@ -20,6 +20,10 @@ auto order_key(const EmbeddedProgram& e) {
   return order_key(e.variant, e.target, e.pass);
 }
 
+auto function_key(std::string_view variant, Target target) {
+  return std::make_tuple(variant, static_cast<int>(target));
+}
+
 }  // namespace
 
 // Built on first use: an engine that looks up a few programs of a large
@@ -29,6 +33,7 @@ struct Library::Built {
   std::string blob;                               // the part's pieces joined
   std::vector<std::vector<std::uint32_t>> words;  // SPIR-V, copied out aligned
   std::vector<Program> programs;                  // in the part's table order
+  std::vector<Function> functions;                // in the part's table order
 
   void build(const EmbeddedPart& part);
 };
@@ -68,6 +73,10 @@ void Library::Built::build(const EmbeddedPart& part) {
       stage->profile = profile;
     }
   }
+  functions.reserve(part.functions.size());
+  for (const EmbeddedFunction& e : part.functions) {
+    functions.push_back({e.variant, e.target, text(e.text), text(e.reflection)});
+  }
 }
 
 Library::Library(std::span<const EmbeddedPart> parts)
@@ -99,6 +108,25 @@ const Program* Library::find(Technique technique, const VariantKeys& keys, Targe
   return find(variant_name(technique, keys), target, pass);
 }
 
+const Function* Library::find_function(std::string_view variant, Target target) const {
+  const auto key = function_key(variant, target);
+  for (std::size_t part = 0; part < parts_.size(); ++part) {
+    const std::span<const EmbeddedFunction> table = parts_[part].functions;
+    const auto it = std::ranges::lower_bound(table, key, {}, [](const EmbeddedFunction& e) {
+      return function_key(e.variant, e.target);
+    });
+    if (it != table.end() && function_key(it->variant, it->target) == key) {
+      return &built(part).functions[static_cast<std::size_t>(it - table.begin())];
+    }
+  }
+  return nullptr;
+}
+
+const Function* Library::find_function(Technique technique, const VariantKeys& keys,
+                                       Target target) const {
+  return find_function(variant_name(technique, keys), target);
+}
+
 std::size_t Library::size() const {
   std::size_t size = 0;
   for (const EmbeddedPart& part : parts_) size += part.programs.size();
@@ -112,6 +140,15 @@ std::vector<const Program*> Library::programs() const {
     for (const Program& p : built(part).programs) all.push_back(&p);
   }
   std::ranges::sort(all, {}, [](const Program* p) { return order_key(*p); });
+  return all;
+}
+
+std::vector<const Function*> Library::functions() const {
+  std::vector<const Function*> all;
+  for (std::size_t part = 0; part < parts_.size(); ++part) {
+    for (const Function& f : built(part).functions) all.push_back(&f);
+  }
+  std::ranges::sort(all, {}, [](const Function* f) { return function_key(f->variant, f->target); });
   return all;
 }
 

@@ -116,6 +116,32 @@ TEST_P(Embedded, FoundByTechniqueAndKeys) {
   EXPECT_EQ(library().find(Technique::hard, {}, Target::hlsl_dx9, PassKind::blur_h), nullptr);
 }
 
+TEST_P(Embedded, EveryFunctionFormWithItsFileAndReflection) {
+  std::size_t functions = 0;
+  for (const LibraryVariant& entry : built().variants) {
+    for (const auto& [target, form] : entry.function) {
+      SCOPED_TRACE(entry.variant.name + " " + std::string(to_string(target)));
+      const shaders::Function* function = library().find_function(entry.variant.name, target);
+      ASSERT_NE(function, nullptr);
+      EXPECT_EQ(function->variant, entry.variant.name);
+      EXPECT_EQ(function->target, target);
+      EXPECT_EQ(function->text, file_text(form.file));
+      EXPECT_EQ(nlohmann::json::parse(function->reflection), nlohmann::json(form.reflection));
+      ++functions;
+    }
+  }
+  EXPECT_EQ(library().functions().size(), functions);
+  EXPECT_EQ(functions, 12u);  // hard and pcss, on the six text targets
+  const shaders::Function* pcss = library().find_function(
+      Technique::pcss, {.blocker_samples = 16, .pcf_samples = 16, .disk = "whitepaper16"},
+      Target::glsl330);
+  ASSERT_NE(pcss, nullptr);
+  EXPECT_THAT(pcss->text,
+              ::testing::HasSubstr("float penumbra_visibility(vec4 light_clip_position)"));
+  EXPECT_EQ(library().find_function("hard", Target::spirv), nullptr);  // no includable SPIR-V
+  EXPECT_EQ(library().find_function("minmax_pcf_k8", Target::glsl450), nullptr);
+}
+
 // The header's find() is the library's.
 TEST(EmbeddedHeader, FindIsTheLibrarysFind) {
   const VariantKeys keys{.blocker_samples = 16, .pcf_samples = 16, .disk = "whitepaper16"};
@@ -123,6 +149,8 @@ TEST(EmbeddedHeader, FindIsTheLibrarysFind) {
             embed_test::library().find(Technique::pcss, keys, Target::spirv));
   EXPECT_EQ(embed_whole::find(Technique::pcss, keys, Target::spirv),
             embed_whole::library().find(Technique::pcss, keys, Target::spirv));
+  EXPECT_EQ(embed_test::find_function(Technique::pcss, keys, Target::essl300),
+            embed_test::library().find_function(Technique::pcss, keys, Target::essl300));
 }
 
 INSTANTIATE_TEST_SUITE_P(Embeddings, Embedded,

@@ -1,5 +1,6 @@
 // penumbra::shaders::Library over hand-written parts: lookups across parts,
-// the order of programs(), and SPIR-V read out of an unaligned blob.
+// the order of programs() and functions(), and SPIR-V read out of an
+// unaligned blob.
 #include "penumbra/shaders/library.hpp"
 
 #include <gtest/gtest.h>
@@ -15,11 +16,16 @@ constexpr EmbeddedProgram kFirst[] = {
     {"a", Target::glsl450, PassKind::query, {0, 6}, {6, 6}, {}, {}, "", "", {}},
     {"c", Target::spirv, PassKind::query, {13, 4}, {13, 4}, {}, {}, "", "", {}},
 };
-constexpr std::string_view kSecondBlob[] = {"{\"b\":1}"sv};
+constexpr std::string_view kSecondBlob[] = {"{\"b\":1}"sv, "float f();"sv};
 constexpr EmbeddedProgram kSecond[] = {
     {"b", Target::hlsl_dx10, PassKind::depth, {0, 0}, {0, 0}, {}, {0, 7}, "", "ps_4_0", {0, 7}},
 };
-constexpr EmbeddedPart kParts[] = {{kFirstBlob, kFirst}, {kSecondBlob, {}}, {kSecondBlob, kSecond}};
+constexpr EmbeddedFunction kSecondFunctions[] = {
+    {"b", Target::glsl330, {7, 10}, {0, 7}},
+    {"b", Target::essl300, {7, 10}, {0, 7}},
+};
+constexpr EmbeddedPart kParts[] = {
+    {kFirstBlob, kFirst}, {kSecondBlob, {}}, {kSecondBlob, kSecond, kSecondFunctions}};
 
 TEST(ShadersLibrary, FindsEachProgramInItsPart) {
   const Library library(kParts);
@@ -40,6 +46,19 @@ TEST(ShadersLibrary, FindsEachProgramInItsPart) {
   EXPECT_EQ(library.find("b", Target::hlsl_dx10), nullptr);  // the query pass
   EXPECT_EQ(library.find("d", Target::spirv), nullptr);
   EXPECT_EQ(library.find("b", Target::hlsl_dx10, PassKind::depth), b);  // built once
+}
+
+TEST(ShadersLibrary, FindsEachFunctionFormInItsPart) {
+  const Library library(kParts);
+  const Function* glsl = library.find_function("b", Target::glsl330);
+  ASSERT_NE(glsl, nullptr);
+  EXPECT_EQ(glsl->text, "float f();");
+  EXPECT_EQ(glsl->reflection, "{\"b\":1}");
+  ASSERT_NE(library.find_function("b", Target::essl300), nullptr);
+  EXPECT_EQ(library.find_function("b", Target::glsl450), nullptr);
+  EXPECT_EQ(library.find_function("a", Target::glsl330), nullptr);
+  ASSERT_EQ(library.functions().size(), 2u);
+  EXPECT_EQ(library.functions()[0]->target, Target::glsl330);  // in kAllTargets order
 }
 
 TEST(ShadersLibrary, ListsProgramsInOrderAcrossParts) {

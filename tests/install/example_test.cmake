@@ -1,9 +1,11 @@
 # cmake -P: examples/engine-consumer as its README builds it. Installs this
 # build into a prefix, configures and builds the example against it (its
 # warnings are errors), runs it on the default Vulkan device (lavapipe) and
-# reads its PNG back with CHECKER (shadow_png_check.cpp).
+# reads its PNG back with CHECKER (shadow_png_check.cpp); with EXPECT_GL,
+# also engine_consumer_gl (the function form in an OpenGL engine's shaders),
+# whose picture must match engine_consumer's.
 # Inputs: BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR CXX_COMPILER CONFIG SANITIZE
-# CHECKER.
+# CHECKER EXPECT_GL.
 include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
 
 set(prefix ${WORK_DIR}/prefix)
@@ -32,4 +34,13 @@ if(NOT run_output MATCHES "pcss_b16_p16_whitepaper16 on .*: wrote .*shadow.png \
 endif()
 run(${CHECKER} ${WORK_DIR}/shadow.png)
 message(STATUS "${run_output}")
+if(EXPECT_GL)
+  run(${example}/engine_consumer_gl ${WORK_DIR}/shadow_gl.png)
+  message(STATUS "${run_output}")
+  if(NOT run_output MATCHES "pcss_b16_p16_whitepaper16_perspective on .*: wrote .*shadow_gl.png")
+    message(FATAL_ERROR "install test: the OpenGL example printed '${run_output}'")
+  endif()
+  run(${CHECKER} ${WORK_DIR}/shadow_gl.png ${WORK_DIR}/shadow.png)
+  message(STATUS "${run_output}")
+endif()
 message(STATUS "install test: the engine-consumer example passed")

@@ -67,13 +67,20 @@ std::string header(const std::string& name) {
          "namespace " +
          name +
          " {\n\n"
-         "// Every pass of every variant of the library, for each of its targets.\n"
+         "// Every pass of every variant of the library, for each of its targets,\n"
+         "// and every function form.\n"
          "const penumbra::shaders::Library& library();\n\n"
          "// The program of the variant `technique` with `keys` makes, or nullptr.\n"
          "inline const penumbra::shaders::Program* find(\n"
          "    penumbra::Technique technique, const penumbra::VariantKeys& keys,\n"
          "    penumbra::Target target, penumbra::PassKind pass = penumbra::PassKind::query) {\n"
          "  return library().find(technique, keys, target, pass);\n"
+         "}\n\n"
+         "// The function form of the variant `technique` with `keys` makes, or nullptr.\n"
+         "inline const penumbra::shaders::Function* find_function(\n"
+         "    penumbra::Technique technique, const penumbra::VariantKeys& keys,\n"
+         "    penumbra::Target target) {\n"
+         "  return library().find_function(technique, keys, target);\n"
          "}\n\n"
          "}  // namespace " +
          name + "\n";
@@ -118,13 +125,29 @@ Status check_part(const char* where, std::size_t part) {
   return {};
 }
 
-// One row of a part's table, with what orders it.
+// One row of a part's table, with what orders it (a function form's row
+// has no pass).
 struct Row {
   std::string variant;
   Target target;
-  PassKind pass;
+  PassKind pass = PassKind::query;
   std::string text;
 };
+
+// Library::find() and find_function() search each part's tables by this
+// order.
+void sort_rows(std::vector<Row>& rows) {
+  std::ranges::sort(rows, {}, [](const Row& row) {
+    return std::make_tuple(std::string_view(row.variant), static_cast<int>(row.target),
+                           static_cast<int>(row.pass));
+  });
+}
+
+void append_table(std::string& out, const char* declaration, const std::vector<Row>& rows) {
+  out += std::string("\nconstexpr penumbra::shaders::") + declaration + "[] = {\n";
+  for (const Row& row : rows) out += row.text;
+  out += "};\n";
+}
 
 // The anonymous namespace's kBlob and kPrograms for `library`, and what
 // the part's EmbeddedPart is initialised with.
@@ -167,12 +190,21 @@ Result<Tables> tables(const Library& library, EmbedSummary& summary) {
       }
     }
   }
-  // Library::find() searches each part's table by this order.
-  std::ranges::sort(rows, {}, [](const Row& row) {
-    return std::make_tuple(std::string_view(row.variant), static_cast<int>(row.target),
-                           static_cast<int>(row.pass));
-  });
+  std::vector<Row> functions;
+  for (const LibraryVariant& entry : library.variants) {
+    for (const auto& [target, form] : entry.function) {
+      PENUMBRA_TRY_ASSIGN(const std::string text, file_range(form.file));
+      const std::string reflection = blob.range(nlohmann::json(form.reflection).dump());
+      functions.push_back({entry.variant.name, target, PassKind::query,
+                           "    {\"" + entry.variant.name +
+                               "\", Target::" + std::string(to_string(target)) + ", " + text +
+                               ", " + reflection + "},\n"});
+    }
+  }
+  sort_rows(rows);
+  sort_rows(functions);
   summary.programs = rows.size();
+  summary.functions = functions.size();
   summary.blob_bytes = blob.data().size();
 
   Tables out;
@@ -185,14 +217,10 @@ Result<Tables> tables(const Library& library, EmbedSummary& summary) {
   }
   if (data.empty()) out.source += "    \"\"sv,\n";
   out.source += "};\n";
-  if (rows.empty()) {
-    out.part = "{kBlob, {}}";
-    return out;
-  }
-  out.source += "\nconstexpr penumbra::shaders::EmbeddedProgram kPrograms[] = {\n";
-  for (const Row& row : rows) out.source += row.text;
-  out.source += "};\n";
-  out.part = "{kBlob, kPrograms}";
+  if (!rows.empty()) append_table(out.source, "EmbeddedProgram kPrograms", rows);
+  if (!functions.empty()) append_table(out.source, "EmbeddedFunction kFunctions", functions);
+  out.part = std::string("{kBlob, ") + (rows.empty() ? "{}" : "kPrograms") + ", " +
+             (functions.empty() ? "{}" : "kFunctions") + "}";
   return out;
 }
 

@@ -20,6 +20,7 @@ struct EmbedOptions {
 
 struct EmbedSummary {
   std::size_t programs = 0;        // passes x targets embedded
+  std::size_t functions = 0;       // function forms x targets embedded
   std::uint64_t blob_bytes = 0;    // distinct contents, shared ones once
   std::uint64_t source_bytes = 0;  // what the files take in the library
 };

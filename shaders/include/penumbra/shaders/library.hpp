@@ -1,6 +1,7 @@
 // Shaders embedded in a program by `penumbra embed` (docs/embedding.md):
 // every pass of every variant of a built library, for each of its targets,
-// with the pass's reflection, found by technique and keys. Needs only the
+// with the pass's reflection, and each variant's function forms
+// (docs/function-form.md), found by technique and keys. Needs only the
 // model types: no compiler, no graphics API.
 #pragma once
 
@@ -36,6 +37,17 @@ struct Program {
   std::string_view reflection;
 };
 
+// One variant's function form for one text target: the includable source
+// declaring penumbra_visibility().
+struct Function {
+  std::string_view variant;  // the variant's name
+  Target target = Target::glsl450;
+  std::string_view text;  // the file index.json's `function.<target>.file` names
+  // Its reflection record (`function.<target>.reflection`), as JSON text:
+  // the names to bind, `signature` and `extensions`.
+  std::string_view reflection;
+};
+
 // A part of the generated blob.
 struct BlobRange {
   std::uint64_t offset = 0;
@@ -56,13 +68,23 @@ struct EmbeddedProgram {
   BlobRange reflection;
 };
 
+// One function form as `penumbra embed` writes it.
+struct EmbeddedFunction {
+  const char* variant;
+  Target target;
+  BlobRange text;
+  BlobRange reflection;
+};
+
 // One object's share of the generated shaders (`penumbra embed --part`
 // writes one per group): the pieces of its blob, in order, each under every
-// compiler's string literal limit, and its programs, which index that blob,
-// ordered by variant name, target and pass.
+// compiler's string literal limit, its programs, which index that blob,
+// ordered by variant name, target and pass, and its function forms,
+// ordered by variant name and target.
 struct EmbeddedPart {
   std::span<const std::string_view> blob;
   std::span<const EmbeddedProgram> programs;
+  std::span<const EmbeddedFunction> functions = {};
 };
 
 // The lookup over every part. Constructing it copies nothing: a part's
@@ -85,14 +107,23 @@ class Library {
   const Program* find(std::string_view variant, Target target,
                       PassKind pass = PassKind::query) const;
 
+  // The function form of the variant `technique` with `keys` makes for
+  // `target`, or nullptr when the library does not hold one.
+  const Function* find_function(Technique technique, const VariantKeys& keys, Target target) const;
+  // The same by the variant's name.
+  const Function* find_function(std::string_view variant, Target target) const;
+
   // How many programs the library holds, without building any.
   std::size_t size() const;
   // Every program, ordered by variant name, target and pass; builds every
   // part.
   std::vector<const Program*> programs() const;
+  // Every function form, ordered by variant name and target; builds every
+  // part.
+  std::vector<const Function*> functions() const;
 
  private:
-  struct Built;  // one part's joined blob, words and programs
+  struct Built;  // one part's joined blob, words, programs and function forms
 
   const Built& built(std::size_t part) const;
 
