@@ -58,7 +58,7 @@ void print_summary(const VerifyReport& report, bool quiet) {
   for (const FunctionFormCheck& c : report.function_checks) {
     if (quiet && c.pass) continue;
     std::cout << (c.pass ? "PASS " : "FAIL ") << "function form " << c.variant << " ["
-              << to_string(c.target) << "] on the camera's stage: ";
+              << to_string(c.target) << " on " << c.backend << "] on the camera's stage: ";
     if (!c.error.empty()) {
       std::cout << c.error << "\n";
       continue;

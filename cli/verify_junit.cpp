@@ -107,7 +107,8 @@ JunitReport to_junit(const VerifyReport& report) {
   }
   for (const FunctionFormCheck& c : report.function_checks) {
     JunitCase check = make_case(
-        "function_form", c.variant + "/" + std::string(to_string(c.target)), c.seconds, c.pass,
+        "function_form", c.variant + "/" + std::string(to_string(c.target)) + "/" + c.backend,
+        c.seconds, c.pass,
         std::to_string(c.comparison.over_tolerance) + " of " +
             std::to_string(c.comparison.compared) + " pixels over the tolerance (max error " +
             number(c.comparison.max_abs_error) + "), camera agreement " +

@@ -100,6 +100,24 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
     }
   }
   EXPECT_EQ(on_vulkan.size(), emitted) << "every target's own shaders must execute";
+  // The function form, where the variant has one, as an engine's own
+  // shaders call it: every text target on Vulkan, and GLSL on the driver.
+  std::set<std::pair<Target, std::string>> drawn;
+  for (const FunctionFormCheck& c : report->function_checks) {
+    const std::string label = std::string(to_string(c.target)) + " on " + c.backend;
+    EXPECT_TRUE(c.pass) << "function form, " << label << ": " << c.error << " max error "
+                        << c.comparison.max_abs_error << ", " << c.comparison.over_tolerance
+                        << " pixels over; camera agreement " << c.camera_agreement;
+    drawn.emplace(c.target, c.backend);
+  }
+  const auto& function = (*built)->library().variants.at(0).function;
+  for (const auto& [target, form] : function) {
+    EXPECT_TRUE(drawn.contains({target, "vulkan"})) << to_string(target);
+    if (target == Target::glsl330 || target == Target::glsl450) {
+      EXPECT_TRUE(drawn.contains({target, "gl"})) << to_string(target);
+    }
+  }
+  EXPECT_EQ(drawn.size(), function.size() + (function.empty() ? 0 : 2));
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, VariantConformance, ::testing::ValuesIn(default_variant_names()),

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <string>
 
 #include "default_library.hpp"
@@ -203,6 +205,24 @@ TEST_P(GlErrors, UnusableImagesAreRejected) {
   expect_error(
       engine_->run_query({text_.view()}, inputs_.normalized_depth, two_channels, inputs_.params),
       Error::Kind::bad_input, "receivers", "3 or 4 channels");
+}
+
+// run_surface draws an engine's geometry: three floats per vertex, whole
+// triangles. The query pass's full-screen program is no such thing.
+TEST_P(GlErrors, SurfacesNeedWholeTrianglesOfThreeFloats) {
+  const std::vector<std::array<float, 3>> triangle = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+  const auto surface = [&](std::span<const std::array<float, 3>> vertices) {
+    return engine_->run_surface(text_.view(), vertices, inputs_.normalized_depth, 8, 8,
+                                inputs_.params);
+  };
+  const auto fails = [](const Result<FloatImage>& result, const std::string& part) {
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.error().kind, Error::Kind::bad_input) << result.error().to_string();
+    EXPECT_EQ(result.error().where, "surface pass") << result.error().to_string();
+    EXPECT_NE(result.error().message.find(part), std::string::npos) << result.error().to_string();
+  };
+  fails(surface(std::span(triangle).first(2)), "not a whole number of triangles");
+  fails(surface(triangle), "with 3 GL_FLOAT components per vertex");
 }
 
 INSTANTIATE_TEST_SUITE_P(Emitted, GlErrors, ::testing::Values(Target::glsl330, Target::glsl450),

@@ -4,6 +4,7 @@
 // a path is one new backend file and one line in verify_library.cpp.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
+#include "penumbra/verify/function_form.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 #include "scene_fixture.hpp"
@@ -37,6 +39,21 @@ struct SceneOutput {
   std::shared_ptr<const FloatImage> own_stored_depth;
   std::shared_ptr<const FloatImage> own_linear_depth;
   std::optional<DepthCheck> own_depth_check;
+};
+
+// An engine's own draw of the report's stage around a function form
+// (function_form.cpp): its two stages in the target's language, the
+// function form's reflection with the engine's vertex input, render target
+// and depth buffer, and the stage's triangles in light-view space.
+struct SurfaceDraw {
+  Target target = Target::glsl450;
+  std::string where;          // the function form's file, in errors
+  std::string vertex;         // the engine's vertex stage
+  std::string fragment;       // its fragment stage, the function form pasted or included
+  PassReflection reflection;  // what the engine binds by
+  std::vector<std::array<float, 3>> triangles;
+  int width = 0;
+  int height = 0;
 };
 
 // A variant's passes for one target, loaded by a backend.
@@ -70,7 +87,24 @@ class Backend {
   // (a file, a front end, a mip the scenes lack) fails the run.
   virtual Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry,
                                     Target target, const TargetScenes& scenes) = 0;
+
+  // Whether this path draws an engine's own geometry around `target`'s
+  // function form (draw_surface).
+  virtual bool draws_surfaces(Target /*target*/) const { return false; }
+  // `draw` on `fixture`'s map: the four channels of its output per pixel,
+  // row 0 first; `execution` says how the stages reached the device.
+  virtual Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& /*fixture*/,
+                                          Execution& /*execution*/) {
+    return make_error(Error::Kind::internal, draw.where,
+                      "the " + name() + " path draws no surfaces");
+  }
 };
+
+// `entry`'s function form for `target` drawn on `backend`, the scene's map
+// drawn on `engine` by the target's depth pass (function_form.cpp).
+Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
+                                              const Library& library, const LibraryVariant& entry,
+                                              Target target);
 
 // `entry`'s query (or screen_blur's four passes), each loaded by `load`,
 // run on `engine` over the maps (and min-max mips) the scenes hold: the

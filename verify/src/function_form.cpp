@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "backend.hpp"
 #include "engine_shaders.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/precision.hpp"
@@ -26,8 +27,9 @@ std::vector<std::array<float, 3>> stage_triangles(const reference::Stage& stage)
 
 }  // namespace
 
-Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& library,
-                                              const LibraryVariant& entry, Target target) {
+Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
+                                              const Library& library, const LibraryVariant& entry,
+                                              Target target) {
   const auto form = entry.function.find(target);
   if (form == entry.function.end()) {
     return make_error(
@@ -47,32 +49,26 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& lib
   FunctionFormCheck check;
   check.variant = entry.variant.name;
   check.target = target;
+  check.backend = backend.name();
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
-  const std::string vertex = engine_vertex_shader(target, camera_clip(stage, width, height, target),
-                                                  light_clip(scene.light, target));
-  PassProgram program;
-  program.target = target;
-  program.reflection = form->second.reflection;
+  SurfaceDraw draw;
+  draw.target = target;
+  draw.where = form->second.file;
+  draw.vertex = engine_vertex_shader(target, camera_clip(stage, width, height, target),
+                                     light_clip(scene.light, target));
+  draw.fragment = engine_fragment_shader(target, form->second.reflection, text);
   // The engine's own vertex input, render target and depth buffer: the
   // depth pass's position and depth format, and four floats.
-  program.reflection.vertex_inputs = depth.program.reflection.vertex_inputs;
-  program.reflection.depth_target = depth.program.reflection.depth_target;
-  program.reflection.render_targets = {
+  draw.reflection = form->second.reflection;
+  draw.reflection.vertex_inputs = depth.program.reflection.vertex_inputs;
+  draw.reflection.depth_target = depth.program.reflection.depth_target;
+  draw.reflection.render_targets = {
       {"colour", 0, std::string(api_format(target, TextureFormat::rgba32_float))}};
-  program.d3d_viewport = traits(target).is_hlsl;
-  program.gl_clip_depth = !traits(target).is_hlsl;
-  PENUMBRA_TRY_ASSIGN(program.vert, compile_text_stage(target, ShaderStage::vertex, vertex,
-                                                       form->second.file + " (engine vertex stage)",
-                                                       check.execution));
-  const std::string fragment = engine_fragment_shader(target, form->second.reflection, text);
-  PENUMBRA_TRY_ASSIGN(
-      program.frag,
-      compile_text_stage(target, ShaderStage::fragment, fragment,
-                         form->second.file + " (engine fragment stage)", check.execution));
+  draw.triangles = stage_triangles(stage);
+  draw.width = width;
+  draw.height = height;
   // (x, y, visibility, w) per pixel; the background keeps the clear, 1.
-  PENUMBRA_TRY_ASSIGN(const FloatImage clip,
-                      engine.run_surface(program, stage_triangles(stage), *fixture.map, width,
-                                         height, fixture.params));
+  PENUMBRA_TRY_ASSIGN(const FloatImage clip, backend.draw_surface(draw, fixture, check.execution));
 
   fixture.receivers = receivers_from_clip(clip, 3, traits(target).is_hlsl ? -0.5 : 0.5);
   const EngineMap map{fixture.normalized_depth, fixture.encoded, depth_scale_for(scene.far_z)};
@@ -87,6 +83,12 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& lib
   check.camera_agreement = picture.camera_agreement;
   check.pass = picture.pass;
   return check;
+}
+
+Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& library,
+                                              const LibraryVariant& entry, Target target) {
+  const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
+  return check_function_form(engine, *vulkan, library, entry, target);
 }
 
 }  // namespace penumbra

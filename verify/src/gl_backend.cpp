@@ -145,6 +145,14 @@ class GlBackend final : public Backend {
                             const SceneFixture& fixture) { return run_query(*texts, fixture); }};
   }
 
+  bool draws_surfaces(Target target) const override { return glsl(target); }
+  Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
+                                  Execution& out) override {
+    out = execution();
+    return engine_->run_surface({draw.vertex, draw.fragment, draw.reflection}, draw.triangles,
+                                fixture.normalized_depth, draw.width, draw.height, fixture.params);
+  }
+
  private:
   static Execution execution() { return {"the OpenGL driver's GLSL compiler", {}}; }
 

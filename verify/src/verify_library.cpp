@@ -34,15 +34,17 @@ struct Context {
   std::map<MapKey, Error> broken_targets;
 };
 
-// `entry`'s function form for `target` on the Vulkan engine; one that
-// cannot run fails with why.
-FunctionFormCheck run_function_form(Context& ctx, const LibraryVariant& entry, Target target) {
+// `entry`'s function form for `target` on `backend`; one that cannot run
+// fails with why.
+FunctionFormCheck run_function_form(Context& ctx, Backend& backend, const LibraryVariant& entry,
+                                    Target target) {
   const auto start = Clock::now();
-  auto check = check_function_form(ctx.engine, ctx.library, entry, target);
+  auto check = check_function_form(ctx.engine, backend, ctx.library, entry, target);
   FunctionFormCheck out = check ? std::move(*check) : FunctionFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
     out.target = target;
+    out.backend = backend.name();
     out.error = check.error().to_string();
   }
   out.seconds = seconds_since(start);
@@ -311,8 +313,12 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
           if (!backend->executes(target) || !wanted(options.paths, backend->name())) continue;
           target_runs->runs.push_back(run_on_device(ctx, *backend, entry, target, report));
         }
-        if (entry.function.contains(target) && wanted(options.paths, "vulkan")) {
-          report.function_checks.push_back(run_function_form(ctx, entry, target));
+        for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+          if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
+              !backend->missing().empty() || !wanted(options.paths, backend->name())) {
+            continue;
+          }
+          report.function_checks.push_back(run_function_form(ctx, *backend, entry, target));
         }
         target_runs->unchecked = scenes.scenes.size();
         for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "backend.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
 namespace {
@@ -23,6 +24,25 @@ class VulkanBackend final : public Backend {
     return load_on_engine(engine_, entry, scenes, [&](PassKind pass) {
       return load_executable(library, entry, pass, target);
     });
+  }
+
+  // Every text target, its stages through the target's glslang front end.
+  bool draws_surfaces(Target target) const override { return target != Target::spirv; }
+  Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
+                                  Execution& execution) override {
+    PassProgram program;
+    program.target = draw.target;
+    program.reflection = draw.reflection;
+    program.d3d_viewport = traits(draw.target).is_hlsl;
+    program.gl_clip_depth = !traits(draw.target).is_hlsl;
+    PENUMBRA_TRY_ASSIGN(program.vert,
+                        compile_text_stage(draw.target, ShaderStage::vertex, draw.vertex,
+                                           draw.where + " (engine vertex stage)", execution));
+    PENUMBRA_TRY_ASSIGN(program.frag,
+                        compile_text_stage(draw.target, ShaderStage::fragment, draw.fragment,
+                                           draw.where + " (engine fragment stage)", execution));
+    return engine_.run_surface(program, draw.triangles, *fixture.map, draw.width, draw.height,
+                               fixture.params);
   }
 
  private:

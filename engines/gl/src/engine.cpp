@@ -7,6 +7,7 @@
 #include "minmax_mip.hpp"
 #include "query_pass.hpp"
 #include "screen_blur_chain.hpp"
+#include "surface_pass.hpp"
 #include "textures.hpp"
 
 namespace penumbra {
@@ -55,6 +56,15 @@ Result<GlQueryOutput> GlEngine::run_query(const GlQueryPasses& passes,
   auto current = context_->egl.make_current();
   if (!current) return current.error();
   return gl::run_query_pass(passes, {normalized_depth, receivers, params});
+}
+
+Result<FloatImage> GlEngine::run_surface(const GlPass& surface,
+                                         std::span<const std::array<float, 3>> triangles,
+                                         const FloatImage& normalized_depth, int width, int height,
+                                         const ParamBlock& params) {
+  auto current = context_->egl.make_current();
+  if (!current) return current.error();
+  return gl::run_surface_pass(surface, triangles, normalized_depth, width, height, params);
 }
 
 Result<std::vector<FloatImage>> GlEngine::build_minmax(const GlMinmaxPasses& passes,

@@ -51,7 +51,9 @@ Result<Framebuffer> framebuffer_for(const PassProgram& pass, const Texture& targ
   return framebuffer;
 }
 
-Status bind_textures(const PassProgram& pass, PassInputs& inputs) {
+}  // namespace
+
+Status bind_pass_textures(const PassProgram& pass, PassInputs& inputs) {
   for (std::size_t i = 0; i < pass.bindings.textures.size(); ++i) {
     const TextureSlot& slot = pass.bindings.textures[i];
     auto texture = inputs.texture_for(slot.texture, *slot.binding, pass.where);
@@ -61,17 +63,6 @@ Status bind_textures(const PassProgram& pass, PassInputs& inputs) {
   }
   return {};
 }
-
-// glUseProgram for one draw; a program in use outlives glDeleteProgram.
-class ProgramInUse {
- public:
-  explicit ProgramInUse(GLuint program) { glUseProgram(program); }
-  ProgramInUse(const ProgramInUse&) = delete;
-  ProgramInUse& operator=(const ProgramInUse&) = delete;
-  ~ProgramInUse() { glUseProgram(0); }
-};
-
-}  // namespace
 
 Result<Texture> create_pass_target(const PassProgram& pass, int width, int height,
                                    const std::string& what) {
@@ -90,7 +81,7 @@ Status draw_full_screen(const PassProgram& pass, const ParamBlock& params, PassI
 
   // Depth test, blending and culling stay off: this context never enables them.
   const ProgramInUse in_use(pass.program.get());
-  PENUMBRA_TRY(bind_textures(pass, inputs));
+  PENUMBRA_TRY(bind_pass_textures(pass, inputs));
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer->get());
   glViewport(0, 0, target.width, target.height);
   glBindVertexArray(geometry.layout.get());

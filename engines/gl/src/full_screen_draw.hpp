@@ -18,6 +18,19 @@ struct DrawTarget {
   int height = 0;
 };
 
+// glUseProgram for one draw; a program in use outlives glDeleteProgram.
+class ProgramInUse {
+ public:
+  explicit ProgramInUse(GLuint program) { glUseProgram(program); }
+  ProgramInUse(const ProgramInUse&) = delete;
+  ProgramInUse& operator=(const ProgramInUse&) = delete;
+  ~ProgramInUse() { glUseProgram(0); }
+};
+
+// Binds each texture `pass` samples to what `inputs` supplies for it, with
+// its sampler object. Errors: `inputs`'.
+Status bind_pass_textures(const PassProgram& pass, PassInputs& inputs);
+
 // A new target for `pass`: its render target's format, width x height.
 Result<Texture> create_pass_target(const PassProgram& pass, int width, int height,
                                    const std::string& what);

@@ -9,9 +9,8 @@
 namespace penumbra::gl {
 namespace {
 
-// The engine's only geometry: one triangle of 2-float positions.
-constexpr std::uint32_t kTriangleComponents = 2;
-constexpr std::string_view kTriangleFormat = "GL_FLOAT";
+// The engine's geometry: positions of GL_FLOAT components.
+constexpr std::string_view kPositionFormat = "GL_FLOAT";
 
 // The driver's log without trailing newlines (Mesa ends each line with one).
 std::string trimmed(std::string log) {
@@ -108,13 +107,15 @@ GLuint input_location(const PassReflection& reflection, std::size_t i) {
   return reflection.vertex_inputs[i].location.value_or(static_cast<std::uint32_t>(i));
 }
 
-Status check_reflection_drawable(const PassReflection& reflection, const std::string& where) {
+Status check_reflection_drawable(const PassReflection& reflection, const std::string& where,
+                                 std::uint32_t position_components) {
   for (const VertexAttribute& input : reflection.vertex_inputs) {
-    if (input.components != kTriangleComponents || input.format != kTriangleFormat) {
+    if (input.components != position_components || input.format != kPositionFormat) {
       return interface_error(where, "the reflection's vertex input '" + input.name + "' has " +
                                         std::to_string(input.components) + " " + input.format +
-                                        " component(s); the GL engine draws a full-screen "
-                                        "triangle of 2 GL_FLOAT components per vertex");
+                                        " component(s); the GL engine draws this pass with " +
+                                        std::to_string(position_components) +
+                                        " GL_FLOAT components per vertex");
     }
   }
   if (reflection.render_targets.size() != 1) {
@@ -185,8 +186,9 @@ Status check_outputs(GLuint program, const PassReflection& reflection, const std
 }  // namespace
 
 Result<Program> build_program(std::string_view vertex_text, std::string_view fragment_text,
-                              const PassReflection& reflection, const std::string& where) {
-  PENUMBRA_TRY(check_reflection_drawable(reflection, where));
+                              const PassReflection& reflection, const std::string& where,
+                              std::uint32_t position_components) {
+  PENUMBRA_TRY(check_reflection_drawable(reflection, where, position_components));
   auto vertex = compile(GL_VERTEX_SHADER, vertex_text, "vertex stage", where);
   if (!vertex) return vertex.error();
   auto fragment = compile(GL_FRAGMENT_SHADER, fragment_text, "fragment stage", where);

@@ -4,6 +4,7 @@
 // pass's reflection.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -23,9 +24,11 @@ namespace penumbra::gl {
 // output the reflection lacks, another location, a render target the
 // program does not write, an output with fewer components than its target's
 // format), or the reflection asks for what the engine cannot draw (a vertex
-// input other than one of 2 floats, for its full-screen triangle; other than
-// one render target).
+// input other than one of `position_components` floats: 2 for its
+// full-screen triangle, 3 for an engine's surfaces; other than one render
+// target).
 Result<Program> build_program(std::string_view vertex_text, std::string_view fragment_text,
-                              const PassReflection& reflection, const std::string& where);
+                              const PassReflection& reflection, const std::string& where,
+                              std::uint32_t position_components);
 
 }  // namespace penumbra::gl

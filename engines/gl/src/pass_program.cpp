@@ -14,10 +14,16 @@ bool PassProgram::reads(TextureId texture) const {
 }
 
 Result<PassProgram> prepare_pass(const GlPass& pass, PassKind kind) {
+  return prepare_program(pass, std::string(to_string(kind)) + " pass", 2);
+}
+
+Result<PassProgram> prepare_program(const GlPass& pass, std::string where,
+                                    std::uint32_t position_components) {
   PassProgram prepared;
-  prepared.where = std::string(to_string(kind)) + " pass";
+  prepared.where = std::move(where);
   prepared.reflection = &pass.reflection;
-  auto program = build_program(pass.vert, pass.frag, pass.reflection, prepared.where);
+  auto program =
+      build_program(pass.vert, pass.frag, pass.reflection, prepared.where, position_components);
   if (!program) return program.error();
   prepared.program = std::move(*program);
   // build_program admitted one render target.

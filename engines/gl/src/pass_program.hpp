@@ -26,9 +26,14 @@ struct PassProgram {
   bool reads(TextureId texture) const;
 };
 
-// `pass` as the `kind` pass. Errors: those of build_program and
-// bind_by_reflection, all with `where` = "<kind> pass"; device for a GL
-// error.
+// `pass` as the `kind` pass, drawn over the full-screen triangle. Errors:
+// those of build_program and bind_by_reflection, all with `where` = "<kind>
+// pass"; device for a GL error.
 Result<PassProgram> prepare_pass(const GlPass& pass, PassKind kind);
+
+// `program`, whose vertex input takes `position_components` floats, as
+// `where`. Errors as prepare_pass's.
+Result<PassProgram> prepare_program(const GlPass& program, std::string where,
+                                    std::uint32_t position_components);
 
 }  // namespace penumbra::gl

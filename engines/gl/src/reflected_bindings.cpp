@@ -223,7 +223,7 @@ Result<std::vector<TextureSlot>> bind_textures(GLuint program, const Declared& n
       if (binding->binding.has_value() != declared_unit) continue;
       const GLint location = glGetUniformLocation(program, binding->name.c_str());
       if (location < 0) continue;
-      const TextureDescription* texture = find_texture(binding->name);
+      const TextureDescription* texture = find_bound_texture(binding->name);
       if (texture == nullptr) {
         return binding_error(where, "the reflection's texture '" + binding->name +
                                         "' is not a texture of the shader contract");

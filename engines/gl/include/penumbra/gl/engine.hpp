@@ -3,8 +3,9 @@
 // llvmpipe (docs/gl.md). Every pass is bound by its reflection, index.json's
 // `reflection.<pass>.<target>`, as a GL engine that drops the library in
 // does: the query (after the shadow map's min-max mip when the query reads
-// it) and screen_blur's chain. It is the GL counterpart of the Vulkan
-// Engine's build_minmax, run_query and run_screen_blur.
+// it) and screen_blur's chain; and an engine's own program drawing its own
+// geometry around a function form. It is the GL counterpart of the Vulkan
+// Engine's build_minmax, run_query, run_screen_blur and run_surface.
 //
 // Lifecycle: GlEngine::create() opens an EGL display and a context; then any
 // number of calls, from one thread at a time (each call makes the context
@@ -13,8 +14,10 @@
 // Every failure is a returned Error, never an exception.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -140,6 +143,20 @@ class GlEngine {
                                              const FloatImage& receivers,
                                              const FloatImage& scene_colour,
                                              const ParamBlock& params);
+
+  // Draws `triangles` (a triangle list in whatever space the program's
+  // vertex stage takes; the reflection's one vertex input, 3 floats) with
+  // `surface`, an engine's own program whose fragment stage calls a
+  // variant's function form (docs/function-form.md), into a width x height
+  // target in the reflection's render-target format with a
+  // GL_DEPTH_COMPONENT32F depth buffer of its own (both cleared to 1.0,
+  // depth test LESS, no culling), `normalized_depth` bound as the function
+  // form's textures. Returns the target's channels, row 0 first. Errors as
+  // run_query's, `where` "surface pass".
+  Result<FloatImage> run_surface(const GlPass& surface,
+                                 std::span<const std::array<float, 3>> triangles,
+                                 const FloatImage& normalized_depth, int width, int height,
+                                 const ParamBlock& params);
 
  private:
   explicit GlEngine(std::unique_ptr<gl::Context> context);
