@@ -2,10 +2,12 @@
 // variant's .d3dbc/.dxbc files translated to SPIR-V by vkd3d-compiler, run on
 // the Vulkan engine bound by the reflection's registers, and checked against
 // the CPU reference on every scene (verify's "bytecode" path); and the check
-// failing on bytecode or reflection that is not the variant's.
+// failing on bytecode or reflection that is not the variant's; and each
+// function form inside an engine's own HLSL compiled to that bytecode.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
 #include "default_library.hpp"
 #include "hlsl_compiler.hpp"
@@ -37,22 +39,26 @@ Result<std::unique_ptr<TemporaryLibrary>> build_with_bytecode(const std::string&
                                  {.jobs = 2, .hlsl = {.compiler = *compiler}});
 }
 
-// The bytecode path's runs of `name` in `library`.
-Result<std::vector<TargetRun>> bytecode_runs(const Library& library, const std::string& name) {
+// verify's report on `name` in `library`, the bytecode path on.
+Result<VerifyReport> bytecode_report(const Library& library, const std::string& name) {
   auto compiler = recorded_hlsl_compiler();
   if (!compiler) return compiler.error();
   auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   if (!engine) return engine.error();
-  auto report = verify_library(library, **engine,
-                               {.variants = {name},
-                                .targets = bytecode_targets(),
-                                .gl = false,
-                                .wine = false,  // tests/d3d runs the runtimes
-                                .bytecode = {.compiler = *compiler}},
-                               ignore_diagnostics());
-  if (!report) return report.error();
+  return verify_library(library, **engine,
+                        {.variants = {name},
+                         .targets = bytecode_targets(),
+                         .gl = false,
+                         .wine = false,  // tests/d3d runs the runtimes
+                         .bytecode = {.compiler = *compiler}},
+                        ignore_diagnostics());
+}
+
+// The bytecode path's runs of `name` in `library`.
+Result<std::vector<TargetRun>> bytecode_runs(const Library& library, const std::string& name) {
+  PENUMBRA_TRY_ASSIGN(const VerifyReport report, bytecode_report(library, name));
   std::vector<TargetRun> out;
-  for (const TargetRun& run : report->variants.at(0).runs) {
+  for (const TargetRun& run : report.variants.at(0).runs) {
     if (run.backend == "bytecode") out.push_back(run);
   }
   return out;
@@ -63,8 +69,13 @@ class BytecodeExecution : public ::testing::TestWithParam<std::string> {};
 TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
   auto built = build_with_bytecode(GetParam());
   ASSERT_TRUE(built) << built.error().to_string();
-  auto runs = bytecode_runs((*built)->library(), GetParam());
-  ASSERT_TRUE(runs) << runs.error().to_string();
+  auto report = bytecode_report((*built)->library(), GetParam());
+  ASSERT_TRUE(report) << report.error().to_string();
+  std::vector<TargetRun> runs_on_bytecode;
+  for (const TargetRun& run : report->variants.at(0).runs) {
+    if (run.backend == "bytecode") runs_on_bytecode.push_back(run);
+  }
+  const std::vector<TargetRun>* runs = &runs_on_bytecode;
   const Variant& variant = *find_default_variant(GetParam());
   ASSERT_EQ(runs->size(), std::ranges::count_if(bytecode_targets(), [&](Target target) {
               return can_emit(variant, target);
@@ -82,6 +93,20 @@ TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
                                 << c.over_tolerance << " pixels over";
     }
   }
+  // The function form inside an engine's own HLSL, compiled to each
+  // target's bytecode by vkd3d-compiler and translated, as a Direct3D
+  // engine's shaders run under Proton.
+  std::set<Target> drawn;
+  for (const FunctionFormCheck& c : report->function_checks) {
+    if (c.backend != "bytecode") continue;
+    const std::string label = "function form, " + std::string(to_string(c.target));
+    EXPECT_TRUE(c.pass) << label << ": " << c.error << " max error " << c.comparison.max_abs_error
+                        << ", " << c.comparison.over_tolerance << " pixels over; camera agreement "
+                        << c.camera_agreement;
+    EXPECT_NE(c.execution.front_end.find("vkd3d-compiler hlsl to"), std::string::npos) << label;
+    drawn.insert(c.target);
+  }
+  EXPECT_EQ(drawn.size(), has_function_form(variant.technique) ? runs->size() : 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, BytecodeExecution, ::testing::ValuesIn(default_variant_names()),

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine_shaders.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
@@ -44,12 +45,14 @@ struct SceneOutput {
 // An engine's own draw of the report's stage around a function form
 // (function_form.cpp): its two stages in the target's language, the
 // function form's reflection with the engine's vertex input, render target
-// and depth buffer, and the stage's triangles in light-view space.
+// and depth buffer, and the stage's triangles in light-view space. Each
+// backend writes the fragment stage for its compiler
+// (engine_fragment_shader()).
 struct SurfaceDraw {
   Target target = Target::glsl450;
   std::string where;          // the function form's file, in errors
   std::string vertex;         // the engine's vertex stage
-  std::string fragment;       // its fragment stage, the function form pasted or included
+  std::string function_text;  // the function form, which the fragment stage pastes
   PassReflection reflection;  // what the engine binds by
   std::vector<std::array<float, 3>> triangles;
   int width = 0;

@@ -80,13 +80,31 @@ Matrix4 light_clip(const reference::LightParams& light, Target target) {
            {0.0, 0.0, 1.0, 0.0}}};
 }
 
-std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light) {
+bool takes_pixel(const PassReflection& reflection) {
+  return reflection.signature.find("pixel") != std::string::npos;
+}
+
+std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light,
+                                 const PixelPicture& picture) {
   const bool hlsl = traits(target).is_hlsl;
+  const bool sm3 = hlsl && traits(target).shader_model == 3 && picture.needed;
   std::string out = hlsl ? "" : glsl_version(target);
   out += "// The engine's camera and the light's view-projection, as constants.\n";
   out += constants(camera, "CAMERA", hlsl) + constants(light, "LIGHT", hlsl);
+  if (sm3) {
+    // Pixel (x, y) from the picture's top left, times w: (0.5 x / w + 0.5)
+    // width and (0.5 - 0.5 y / w) height, Direct3D's y being up.
+    Matrix4 pixel{};
+    for (int c = 0; c < 4; ++c) {
+      pixel[0][c] = 0.5 * picture.width * (camera[0][c] + camera[3][c]);
+      pixel[1][c] = 0.5 * picture.height * (camera[3][c] - camera[1][c]);
+      pixel[3][c] = camera[3][c];
+    }
+    out += constants(pixel, "PIXEL", hlsl);
+  }
   if (hlsl) {
     out += "struct Varyings {\n  float4 light_clip_position : TEXCOORD0;\n";
+    if (sm3) out += "  float4 pixel_position : TEXCOORD1;\n";
     // Direct3D 9's POSITION, which glslang's HLSL front end takes only as
     // SV_Position (as the library's own dx9 shim does).
     out += "  float4 position : SV_Position;\n};\n";
@@ -94,6 +112,7 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
     out += "  float4 p = float4(position, 1.0);\n  Varyings out_;\n";
     out += "  out_.position = " + transformed("CAMERA", true) + ";\n";
     out += "  out_.light_clip_position = " + transformed("LIGHT", true) + ";\n";
+    if (sm3) out += "  out_.pixel_position = " + transformed("PIXEL", true) + ";\n";
     return out + "  return out_;\n}\n";
   }
   // Locations need GLSL 4.10 on inputs of a fragment stage; 3.30 and ES
@@ -111,20 +130,22 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
 std::string engine_fragment_shader(Target target, const PassReflection& reflection,
                                    const std::string& function_text) {
   const bool hlsl = traits(target).is_hlsl;
-  const bool pixel = reflection.signature.find("pixel") != std::string::npos;
+  const bool pixel = takes_pixel(reflection);
   const std::string result =
       "light_clip_position.x, light_clip_position.y, visible, "
       "light_clip_position.w";
   if (hlsl) {
     const bool sm3 = traits(target).shader_model == 3;
     std::string out = function_text + "\n";
-    out += "float4 main(float4 light_clip_position : TEXCOORD0, float4 position : ";
-    // Direct3D 9's VPOS (the pixel's corner, where SV_Position gives its
-    // centre: floor() takes either), which glslang's HLSL front end takes
-    // only as SV_Position.
-    out += sm3 ? "SV_Position) : COLOR0 {\n" : "SV_Position) : SV_Target {\n";
+    out += "float4 main(float4 light_clip_position : TEXCOORD0";
+    // SV_Position is the pixel's centre; Direct3D 9's pixel position comes
+    // from the vertex stage, interpolated (engine_vertex_shader()).
+    if (pixel) out += sm3 ? ", float4 position : TEXCOORD1" : ", float4 position : SV_Position";
+    out += sm3 ? ") : COLOR0 {\n" : ") : SV_Target {\n";
     out += "  float visible = penumbra_visibility(light_clip_position";
-    out += pixel ? ", floor(position.xy));\n" : ");\n";
+    out += !pixel ? ");\n"
+           : sm3  ? ", floor(position.xy / position.w));\n"
+                  : ", floor(position.xy));\n";
     return out + "  return float4(" + result + ");\n}\n";
   }
   std::string out = glsl_version(target);

@@ -29,9 +29,23 @@ Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target
 // first row), w = z.
 Matrix4 light_clip(const reference::LightParams& light, Target target);
 
+// Whether the function form `reflection` describes takes the pixel (the
+// `rotation` key).
+bool takes_pixel(const PassReflection& reflection);
+
 // The vertex stage: position (light-view space, vec3) in at location 0 /
-// TEXCOORD0, gl_Position = camera * position, light_clip_position out.
-std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light);
+// TEXCOORD0, gl_Position = camera * position, light_clip_position out. On
+// Direct3D 9, for a function that takes the pixel, also the pixel's
+// position in the `width` x `height` picture, times w (TEXCOORD1), as
+// engines of that API compute it: ps_3_0's VPOS is what vkd3d's d3dbc
+// translator cannot read.
+struct PixelPicture {
+  bool needed = false;  // the function takes the pixel
+  int width = 0;
+  int height = 0;
+};
+std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light,
+                                 const PixelPicture& picture);
 
 // The fragment stage around `function_text` (the function form's file),
 // declared as its `reflection` says. Output 0 is the light clip position it

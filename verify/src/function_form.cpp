@@ -55,8 +55,9 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
   draw.target = target;
   draw.where = form->second.file;
   draw.vertex = engine_vertex_shader(target, camera_clip(stage, width, height, target),
-                                     light_clip(scene.light, target));
-  draw.fragment = engine_fragment_shader(target, form->second.reflection, text);
+                                     light_clip(scene.light, target),
+                                     {takes_pixel(form->second.reflection), width, height});
+  draw.function_text = text;
   // The engine's own vertex input, render target and depth buffer: the
   // depth pass's position and depth format, and four floats.
   draw.reflection = form->second.reflection;

@@ -149,7 +149,9 @@ class GlBackend final : public Backend {
   Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
                                   Execution& out) override {
     out = execution();
-    return engine_->run_surface({draw.vertex, draw.fragment, draw.reflection}, draw.triangles,
+    const std::string fragment =
+        engine_fragment_shader(draw.target, draw.reflection, draw.function_text);
+    return engine_->run_surface({draw.vertex, fragment, draw.reflection}, draw.triangles,
                                 fixture.normalized_depth, draw.width, draw.height, fixture.params);
   }
 

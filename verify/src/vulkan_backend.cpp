@@ -38,9 +38,11 @@ class VulkanBackend final : public Backend {
     PENUMBRA_TRY_ASSIGN(program.vert,
                         compile_text_stage(draw.target, ShaderStage::vertex, draw.vertex,
                                            draw.where + " (engine vertex stage)", execution));
-    PENUMBRA_TRY_ASSIGN(program.frag,
-                        compile_text_stage(draw.target, ShaderStage::fragment, draw.fragment,
-                                           draw.where + " (engine fragment stage)", execution));
+    PENUMBRA_TRY_ASSIGN(
+        program.frag,
+        compile_text_stage(draw.target, ShaderStage::fragment,
+                           engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
+                           draw.where + " (engine fragment stage)", execution));
     return engine_.run_surface(program, draw.triangles, *fixture.map, draw.width, draw.height,
                                fixture.params);
   }

@@ -6,6 +6,7 @@
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/support/file.hpp"
 #include "spirv/descriptor_sets.hpp"
 #include "spirv/validation.hpp"
 #include "vkd3d/run_vkd3d.hpp"
@@ -16,10 +17,11 @@ namespace {
 // vkd3d-compiler writes the module to a file: its stdout would interleave
 // the binary with its messages. One name per call, as verify may translate
 // on several threads and processes at once.
-std::filesystem::path temporary_output() {
+std::filesystem::path temporary_output(std::string_view extension = ".spv") {
   static std::atomic<unsigned> counter{0};
-  return std::filesystem::temp_directory_path() / ("penumbra-vkd3d-" + std::to_string(::getpid()) +
-                                                   "-" + std::to_string(counter++) + ".spv");
+  return std::filesystem::temp_directory_path() /
+         ("penumbra-vkd3d-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+          std::string(extension));
 }
 
 // Removes the file when the translation is done with it.
@@ -72,6 +74,36 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
                       front_end + " wrote SPIR-V that fails validation:\n" + valid.error().message);
   }
   return FrontEndResult{std::move(*spirv), front_end, {}};
+}
+
+Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translator, Target target,
+                                             ShaderStage stage, const std::string& text,
+                                             const std::string& name) {
+  const auto format = bytecode_format(target, stage);
+  if (!format) {
+    return make_error(Error::Kind::bad_input, name,
+                      "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
+  }
+  const RemovedFile source{temporary_output(".hlsl")};
+  const RemovedFile bytecode{temporary_output(format->extension)};
+  PENUMBRA_TRY(write_file(source.path, text));
+  auto run = run_vkd3d(translator.compiler,
+                       {"-x", "hlsl", "-p", format->profile, "-b", std::string(format->vkd3d_type),
+                        "-e", "main", "-o", bytecode.path.string(), source.path.string()},
+                       translator.timeout);
+  if (!run) return run.error();
+  if (run->timed_out || run->exit_code != 0) {
+    const std::string why = run->timed_out ? "no bytecode within the time limit"
+                                           : "exit status " + std::to_string(run->exit_code);
+    return make_error(Error::Kind::compile, name,
+                      "vkd3d-compiler " + format->profile + ": " + why +
+                          (run->output.empty() ? "" : ":\n" + run->output));
+  }
+  PENUMBRA_TRY_ASSIGN(FrontEndResult translated,
+                      translate_bytecode(translator, target, stage, bytecode.path));
+  translated.front_end = "vkd3d-compiler hlsl to " + std::string(format->vkd3d_type) + " (" +
+                         format->profile + "), then " + translated.front_end;
+  return translated;
 }
 
 }  // namespace penumbra

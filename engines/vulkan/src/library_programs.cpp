@@ -77,6 +77,15 @@ Result<StageCode> compile_text_stage(Target target, ShaderStage stage, std::stri
   return reflected(std::move(compiled->spirv), name);
 }
 
+Result<StageCode> compile_bytecode_stage(const BytecodeTranslator& translator, Target target,
+                                         ShaderStage stage, const std::string& text,
+                                         const std::string& name, Execution& execution) {
+  PENUMBRA_TRY_ASSIGN(FrontEndResult translated,
+                      compile_hlsl_to_spirv(translator, target, stage, text, name));
+  execution.front_end = translated.front_end;
+  return reflected(std::move(translated.spirv), name);
+}
+
 Result<ExecutableProgram> load_executable(const Library& library, const LibraryVariant& variant,
                                           PassKind pass, Target target) {
   ExecutableProgram out;

@@ -26,4 +26,13 @@ struct BytecodeTranslator {
 Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, Target target,
                                           ShaderStage stage, const std::filesystem::path& bytecode);
 
+// `text`, HLSL for `target`'s `stage` with entry point main, compiled by
+// the translator's vkd3d-compiler to the target's bytecode and translated
+// to SPIR-V as translate_bytecode() does: the way a Direct3D engine's own
+// shaders reach a Vulkan driver under Proton. `name` names the source in
+// errors (compile: the compiler's message).
+Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translator, Target target,
+                                             ShaderStage stage, const std::string& text,
+                                             const std::string& name);
+
 }  // namespace penumbra

@@ -30,6 +30,13 @@ struct ExecutableProgram {
 Result<StageCode> compile_text_stage(Target target, ShaderStage stage, std::string_view text,
                                      const std::string& name, Execution& execution);
 
+// One stage of an HLSL target's text compiled to the target's Direct3D
+// bytecode and translated to SPIR-V by `translator`'s vkd3d-compiler
+// (compile_hlsl_to_spirv), and reflected; `execution`'s front end says so.
+Result<StageCode> compile_bytecode_stage(const BytecodeTranslator& translator, Target target,
+                                         ShaderStage stage, const std::string& text,
+                                         const std::string& name, Execution& execution);
+
 // The pass of `variant` for `target`, ready to run: the built .spv for
 // spirv; for every other target its emitted text compiled by glslang's GLSL
 // or HLSL front end. Reflected either way, so the engine binds by name.
