@@ -35,7 +35,9 @@ TEST(Direct3DRuntimes, EveryDefaultVariantMatchesTheReferenceOnItsRuntime) {
                                 .targets = hlsl_targets(),
                                 .gl = false,
                                 .wine = true,
-                                .paths = {"d3d9", "d3d10", "d3d11"}},
+                                .paths = {"d3d9", "d3d10", "d3d11"},
+                                // compiles the engine's own HLSL around each function form
+                                .bytecode = {.compiler = *compiler}},
                                ignore_diagnostics());
   ASSERT_TRUE(report) << report.error().to_string();
 
@@ -78,6 +80,20 @@ TEST(Direct3DRuntimes, EveryDefaultVariantMatchesTheReferenceOnItsRuntime) {
   for (const Variant& variant : default_variants()) encodings.insert(map_encoding(variant.keys));
   for (const auto& [target, runtime] : kRuntimes) {
     EXPECT_EQ(maps[runtime], reference::builtin_scenes().size() * encodings.size()) << runtime;
+  }
+  // Every function form inside an engine's own HLSL, compiled to bytecode,
+  // loaded by its target's runtime and drawn over the report's stage.
+  std::size_t function_forms = 0;
+  for (const LibraryVariant& entry : (*built)->library().variants) {
+    function_forms += entry.function.size();
+  }
+  EXPECT_EQ(report->function_checks.size(), function_forms);
+  for (const FunctionFormCheck& c : report->function_checks) {
+    EXPECT_EQ(c.backend, kRuntimes.at(c.target));
+    EXPECT_TRUE(c.pass) << "function form of " << c.variant << " [" << to_string(c.target) << " on "
+                        << c.backend << "]: " << c.error << " max error "
+                        << c.comparison.max_abs_error << ", " << c.comparison.over_tolerance
+                        << " pixels over; camera agreement " << c.camera_agreement;
   }
 }
 

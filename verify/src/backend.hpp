@@ -43,20 +43,32 @@ struct SceneOutput {
 };
 
 // An engine's own draw of the report's stage around a function form
-// (function_form.cpp): its two stages in the target's language, the
-// function form's reflection with the engine's vertex input, render target
-// and depth buffer, and the stage's triangles in light-view space. Each
-// backend writes the fragment stage for its compiler
-// (engine_fragment_shader()).
+// (function_form.cpp): the variant, the engine's camera and the light's
+// view-projection, the function form's text and its reflection with the
+// engine's vertex input, render target and depth buffer, and the stage's
+// triangles in light-view space. Each backend writes the engine's stages
+// for its compiler (engine_shaders.hpp).
 struct SurfaceDraw {
+  const Library* library = nullptr;
+  const LibraryVariant* entry = nullptr;
   Target target = Target::glsl450;
-  std::string where;          // the function form's file, in errors
-  std::string vertex;         // the engine's vertex stage
+  std::string where;  // the function form's file, in errors
+  Matrix4 camera{};
+  Matrix4 light{};
+  VertexOptions vertex;       // the picture's size, and whether the function takes the pixel
   std::string function_text;  // the function form, which the fragment stage pastes
   PassReflection reflection;  // what the engine binds by
   std::vector<std::array<float, 3>> triangles;
   int width = 0;
   int height = 0;
+};
+
+// What a backend drew: (x, y, visibility, w) per pixel, row 0 first, and
+// the map it drew itself where it does not read the scene's (Wine's
+// runtimes draw their own), as stored.
+struct SurfacePicture {
+  FloatImage clip;
+  std::shared_ptr<const FloatImage> own_stored_depth;
 };
 
 // A variant's passes for one target, loaded by a backend.
@@ -94,10 +106,11 @@ class Backend {
   // Whether this path draws an engine's own geometry around `target`'s
   // function form (draw_surface).
   virtual bool draws_surfaces(Target /*target*/) const { return false; }
-  // `draw` on `fixture`'s map: the four channels of its output per pixel,
-  // row 0 first; `execution` says how the stages reached the device.
-  virtual Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& /*fixture*/,
-                                          Execution& /*execution*/) {
+  // `draw` on `fixture`'s map, or on one of its own; `execution` says how
+  // the stages reached the device.
+  virtual Result<SurfacePicture> draw_surface(const SurfaceDraw& draw,
+                                              const SceneFixture& /*fixture*/,
+                                              Execution& /*execution*/) {
     return make_error(Error::Kind::internal, draw.where,
                       "the " + name() + " path draws no surfaces");
   }
@@ -147,6 +160,8 @@ std::unique_ptr<Backend> gl_backend(bool requested, const std::string& device);
 // (wine_backend.cpp). Each draws every scene's map with the target's own
 // depth pass and runs the queries on it. `requested` false reports every
 // run not executed.
-std::vector<std::unique_ptr<Backend>> wine_backends(bool requested);
+// With `compiler`, each also draws the function form inside an engine's own
+// HLSL, compiled to bytecode by its vkd3d-compiler.
+std::vector<std::unique_ptr<Backend>> wine_backends(bool requested, BytecodeTranslator compiler);
 
 }  // namespace penumbra

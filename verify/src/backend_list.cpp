@@ -15,11 +15,11 @@ std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTrans
                                                    bool gl, bool wine) {
   std::vector<std::unique_ptr<Backend>> backends;
   backends.push_back(vulkan_backend(engine));
-  backends.push_back(bytecode_backend(engine, std::move(bytecode)));
+  backends.push_back(bytecode_backend(engine, bytecode));
   // On lavapipe, GL runs on llvmpipe too, so both paths use one rasterizer.
   const bool lavapipe = engine.device_info().name.find("llvmpipe") != std::string::npos;
   backends.push_back(gl_backend(gl, lavapipe ? "llvmpipe" : ""));
-  for (auto& backend : wine_backends(wine)) backends.push_back(std::move(backend));
+  for (auto& backend : wine_backends(wine, bytecode)) backends.push_back(std::move(backend));
   return backends;
 }
 

@@ -42,25 +42,28 @@ class BytecodeBackend final : public Backend {
   bool draws_surfaces(Target target) const override {
     return executes(target) && missing().empty();
   }
-  Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
-                                  Execution& execution) override {
+  Result<SurfacePicture> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
+                                      Execution& execution) override {
     PassProgram program;
     program.target = draw.target;
     program.reflection = draw.reflection;
     // The bytecode flips y as the HLSL text it was compiled from does.
     program.d3d_viewport = true;
     program.d3d_bytecode = true;
-    PENUMBRA_TRY_ASSIGN(
-        program.vert,
-        compile_bytecode_stage(translator_, draw.target, ShaderStage::vertex, draw.vertex,
-                               draw.where + " (engine vertex stage)", execution));
+    PENUMBRA_TRY_ASSIGN(program.vert,
+                        compile_bytecode_stage(
+                            translator_, draw.target, ShaderStage::vertex,
+                            engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex),
+                            draw.where + " (engine vertex stage)", execution));
     PENUMBRA_TRY_ASSIGN(
         program.frag, compile_bytecode_stage(
                           translator_, draw.target, ShaderStage::fragment,
                           engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
                           draw.where + " (engine fragment stage)", execution));
-    return engine_.run_surface(program, draw.triangles, *fixture.map, draw.width, draw.height,
-                               fixture.params);
+    PENUMBRA_TRY_ASSIGN(FloatImage clip,
+                        engine_.run_surface(program, draw.triangles, *fixture.map, draw.width,
+                                            draw.height, fixture.params));
+    return SurfacePicture{std::move(clip), nullptr};
   }
 
  private:

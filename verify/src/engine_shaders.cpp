@@ -85,9 +85,9 @@ bool takes_pixel(const PassReflection& reflection) {
 }
 
 std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light,
-                                 const PixelPicture& picture) {
+                                 const VertexOptions& options) {
   const bool hlsl = traits(target).is_hlsl;
-  const bool sm3 = hlsl && traits(target).shader_model == 3 && picture.needed;
+  const bool sm3 = hlsl && traits(target).shader_model == 3 && options.pass_pixel;
   std::string out = hlsl ? "" : glsl_version(target);
   out += "// The engine's camera and the light's view-projection, as constants.\n";
   out += constants(camera, "CAMERA", hlsl) + constants(light, "LIGHT", hlsl);
@@ -96,8 +96,8 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
     // width and (0.5 - 0.5 y / w) height, Direct3D's y being up.
     Matrix4 pixel{};
     for (int c = 0; c < 4; ++c) {
-      pixel[0][c] = 0.5 * picture.width * (camera[0][c] + camera[3][c]);
-      pixel[1][c] = 0.5 * picture.height * (camera[3][c] - camera[1][c]);
+      pixel[0][c] = 0.5 * options.width * (camera[0][c] + camera[3][c]);
+      pixel[1][c] = 0.5 * options.height * (camera[3][c] - camera[1][c]);
       pixel[3][c] = camera[3][c];
     }
     out += constants(pixel, "PIXEL", hlsl);
@@ -111,6 +111,10 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
     out += "Varyings main(float3 position : TEXCOORD0) {\n";
     out += "  float4 p = float4(position, 1.0);\n  Varyings out_;\n";
     out += "  out_.position = " + transformed("CAMERA", true) + ";\n";
+    if (options.half_pixel_offset) {
+      out += "  out_.position.xy += float2(" + literal(-1.0 / options.width) + ", " +
+             literal(1.0 / options.height) + ") * out_.position.w;\n";
+    }
     out += "  out_.light_clip_position = " + transformed("LIGHT", true) + ";\n";
     if (sm3) out += "  out_.pixel_position = " + transformed("PIXEL", true) + ";\n";
     return out + "  return out_;\n}\n";

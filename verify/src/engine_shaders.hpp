@@ -33,19 +33,25 @@ Matrix4 light_clip(const reference::LightParams& light, Target target);
 // `rotation` key).
 bool takes_pixel(const PassReflection& reflection);
 
-// The vertex stage: position (light-view space, vec3) in at location 0 /
-// TEXCOORD0, gl_Position = camera * position, light_clip_position out. On
-// Direct3D 9, for a function that takes the pixel, also the pixel's
-// position in the `width` x `height` picture, times w (TEXCOORD1), as
-// engines of that API compute it: ps_3_0's VPOS is what vkd3d's d3dbc
-// translator cannot read.
-struct PixelPicture {
-  bool needed = false;  // the function takes the pixel
+// What the vertex stage hands on besides the light clip position.
+struct VertexOptions {
+  // The function takes the pixel: on Direct3D 9 the vertex stage then
+  // writes the pixel's position in the width x height picture, times w
+  // (TEXCOORD1), as engines of that API compute it: ps_3_0's VPOS is what
+  // vkd3d's d3dbc translator cannot read.
+  bool pass_pixel = false;
   int width = 0;
   int height = 0;
+  // Direct3D 9's runtime samples pixels at integer window coordinates: the
+  // position moves half a pixel so that they see what the other APIs'
+  // pixel centres do (docs/engines/d3d9.md).
+  bool half_pixel_offset = false;
 };
+
+// The vertex stage: position (light-view space, vec3) in at location 0 /
+// TEXCOORD0, gl_Position = camera * position, light_clip_position out.
 std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light,
-                                 const PixelPicture& picture);
+                                 const VertexOptions& options);
 
 // The fragment stage around `function_text` (the function form's file),
 // declared as its `reflection` says. Output 0 is the light clip position it

@@ -52,11 +52,13 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
   check.backend = backend.name();
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
   SurfaceDraw draw;
+  draw.library = &library;
+  draw.entry = &entry;
   draw.target = target;
   draw.where = form->second.file;
-  draw.vertex = engine_vertex_shader(target, camera_clip(stage, width, height, target),
-                                     light_clip(scene.light, target),
-                                     {takes_pixel(form->second.reflection), width, height});
+  draw.camera = camera_clip(stage, width, height, target);
+  draw.light = light_clip(scene.light, target);
+  draw.vertex = {takes_pixel(form->second.reflection), width, height};
   draw.function_text = text;
   // The engine's own vertex input, render target and depth buffer: the
   // depth pass's position and depth format, and four floats.
@@ -69,10 +71,13 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
   draw.width = width;
   draw.height = height;
   // (x, y, visibility, w) per pixel; the background keeps the clear, 1.
-  PENUMBRA_TRY_ASSIGN(const FloatImage clip, backend.draw_surface(draw, fixture, check.execution));
+  PENUMBRA_TRY_ASSIGN(const SurfacePicture drawn,
+                      backend.draw_surface(draw, fixture, check.execution));
+  const FloatImage& clip = drawn.clip;
 
   fixture.receivers = receivers_from_clip(clip, 3, traits(target).is_hlsl ? -0.5 : 0.5);
-  const EngineMap map{fixture.normalized_depth, fixture.encoded, depth_scale_for(scene.far_z)};
+  const EngineMap map{drawn.own_stored_depth ? *drawn.own_stored_depth : fixture.normalized_depth,
+                      fixture.encoded, depth_scale_for(scene.far_z)};
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
   PENUMBRA_TRY_ASSIGN(

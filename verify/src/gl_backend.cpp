@@ -146,13 +146,18 @@ class GlBackend final : public Backend {
   }
 
   bool draws_surfaces(Target target) const override { return glsl(target); }
-  Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
-                                  Execution& out) override {
+  Result<SurfacePicture> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
+                                      Execution& out) override {
     out = execution();
+    const std::string vertex =
+        engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex);
     const std::string fragment =
         engine_fragment_shader(draw.target, draw.reflection, draw.function_text);
-    return engine_->run_surface({draw.vertex, fragment, draw.reflection}, draw.triangles,
-                                fixture.normalized_depth, draw.width, draw.height, fixture.params);
+    PENUMBRA_TRY_ASSIGN(
+        FloatImage clip,
+        engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
+                             fixture.normalized_depth, draw.width, draw.height, fixture.params));
+    return SurfacePicture{std::move(clip), nullptr};
   }
 
  private:

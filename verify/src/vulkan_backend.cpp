@@ -28,23 +28,27 @@ class VulkanBackend final : public Backend {
 
   // Every text target, its stages through the target's glslang front end.
   bool draws_surfaces(Target target) const override { return target != Target::spirv; }
-  Result<FloatImage> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
-                                  Execution& execution) override {
+  Result<SurfacePicture> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
+                                      Execution& execution) override {
     PassProgram program;
     program.target = draw.target;
     program.reflection = draw.reflection;
     program.d3d_viewport = traits(draw.target).is_hlsl;
     program.gl_clip_depth = !traits(draw.target).is_hlsl;
-    PENUMBRA_TRY_ASSIGN(program.vert,
-                        compile_text_stage(draw.target, ShaderStage::vertex, draw.vertex,
-                                           draw.where + " (engine vertex stage)", execution));
+    PENUMBRA_TRY_ASSIGN(
+        program.vert,
+        compile_text_stage(draw.target, ShaderStage::vertex,
+                           engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex),
+                           draw.where + " (engine vertex stage)", execution));
     PENUMBRA_TRY_ASSIGN(
         program.frag,
         compile_text_stage(draw.target, ShaderStage::fragment,
                            engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
                            draw.where + " (engine fragment stage)", execution));
-    return engine_.run_surface(program, draw.triangles, *fixture.map, draw.width, draw.height,
-                               fixture.params);
+    PENUMBRA_TRY_ASSIGN(FloatImage clip,
+                        engine_.run_surface(program, draw.triangles, *fixture.map, draw.width,
+                                            draw.height, fixture.params));
+    return SurfacePicture{std::move(clip), nullptr};
   }
 
  private:

@@ -6,10 +6,14 @@
 // itself, so the runtime's rasterization rules (D3D9's pixel centres) decide
 // what the map and the queries hold; the map is checked against the ray
 // cast, and the reference reads it.
+#include <unistd.h>
+
+#include <filesystem>
 #include <map>
 #include <memory>
 
 #include "backend.hpp"
+#include "engine_shaders.hpp"
 #include "penumbra/d3d/engine.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/shadow_params.hpp"
@@ -88,8 +92,12 @@ Result<RuntimePasses> runtime_passes(const Library& library, const LibraryVarian
 
 class WineBackend final : public Backend {
  public:
-  WineBackend(D3dRuntime runtime, std::shared_ptr<SharedSession> session, std::string missing)
-      : runtime_(runtime), session_(std::move(session)), missing_(std::move(missing)) {}
+  WineBackend(D3dRuntime runtime, std::shared_ptr<SharedSession> session, std::string missing,
+              BytecodeTranslator compiler)
+      : runtime_(runtime),
+        session_(std::move(session)),
+        missing_(std::move(missing)),
+        compiler_(std::move(compiler)) {}
 
   std::string name() const override { return std::string(to_string(runtime_)); }
   // Wine names the adapter its own way (a GeForce whatever GL renders with).
@@ -135,7 +143,50 @@ class WineBackend final : public Backend {
         }};
   }
 
+  // An engine's own HLSL compiled to bytecode by vkd3d-compiler, as its
+  // build would, on the scene's map drawn by this runtime.
+  bool draws_surfaces(Target target) const override {
+    return executes(target) && missing_.empty() && !compiler_.compiler.empty();
+  }
+  Result<SurfacePicture> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
+                                      Execution& execution) override {
+    PENUMBRA_TRY(start());
+    PENUMBRA_TRY_ASSIGN(const D3dPass depth,
+                        bytecode_pass(*draw.library, *draw.entry, PassKind::depth, draw.target));
+    PENUMBRA_TRY_ASSIGN(RuntimeMap * drawn, map_of(depth, fixture));
+    VertexOptions vertex = draw.vertex;
+    vertex.half_pixel_offset = runtime_ == D3dRuntime::d3d9;
+    const ScratchFile vs{scratch_path(".vs")}, ps{scratch_path(".ps")};
+    PENUMBRA_TRY(
+        compile_hlsl_bytecode(compiler_, draw.target, ShaderStage::vertex,
+                              engine_vertex_shader(draw.target, draw.camera, draw.light, vertex),
+                              draw.where + " (engine vertex stage)", vs.path));
+    PENUMBRA_TRY(compile_hlsl_bytecode(
+        compiler_, draw.target, ShaderStage::fragment,
+        engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
+        draw.where + " (engine fragment stage)", ps.path));
+    execution = {"vkd3d-compiler's bytecode loaded by the " + name() + " runtime (Wine)", {}};
+    PENUMBRA_TRY_ASSIGN(FloatImage clip,
+                        engine_->run_surface({vs.path, ps.path, draw.reflection}, draw.triangles,
+                                             drawn->map, draw.width, draw.height, fixture.params));
+    return SurfacePicture{std::move(clip), drawn->stored};
+  }
+
  private:
+  // A compiled stage's file, removed when the draw is done with it.
+  struct ScratchFile {
+    std::filesystem::path path;
+    ~ScratchFile() {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    }
+  };
+  std::filesystem::path scratch_path(const char* extension) {
+    return std::filesystem::temp_directory_path() /
+           ("penumbra-surface-" + std::to_string(::getpid()) + "-" + name() + "-" +
+            std::to_string(scratch_files_++) + extension);
+  }
+
   Status start() {
     if (engine_) return {};
     PENUMBRA_TRY_ASSIGN(auto session, session_->get());
@@ -169,6 +220,8 @@ class WineBackend final : public Backend {
   D3dRuntime runtime_;
   std::shared_ptr<SharedSession> session_;
   std::string missing_;
+  BytecodeTranslator compiler_;  // compiles an engine's own HLSL (draw_surface)
+  int scratch_files_ = 0;
   std::unique_ptr<D3dEngine> engine_;
   std::map<std::string, RuntimeMap> maps_;
 };
@@ -186,12 +239,12 @@ std::string why_missing(bool requested) {
 
 }  // namespace
 
-std::vector<std::unique_ptr<Backend>> wine_backends(bool requested) {
+std::vector<std::unique_ptr<Backend>> wine_backends(bool requested, BytecodeTranslator compiler) {
   auto session = std::make_shared<SharedSession>();
   const std::string missing = why_missing(requested);
   std::vector<std::unique_ptr<Backend>> backends;
   for (D3dRuntime runtime : {D3dRuntime::d3d9, D3dRuntime::d3d10, D3dRuntime::d3d11}) {
-    backends.push_back(std::make_unique<WineBackend>(runtime, session, missing));
+    backends.push_back(std::make_unique<WineBackend>(runtime, session, missing, compiler));
   }
   return backends;
 }

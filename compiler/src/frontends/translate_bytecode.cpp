@@ -76,20 +76,19 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
   return FrontEndResult{std::move(*spirv), front_end, {}};
 }
 
-Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translator, Target target,
-                                             ShaderStage stage, const std::string& text,
-                                             const std::string& name) {
+Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target,
+                             ShaderStage stage, const std::string& text, const std::string& name,
+                             const std::filesystem::path& output) {
   const auto format = bytecode_format(target, stage);
   if (!format) {
     return make_error(Error::Kind::bad_input, name,
                       "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
   }
   const RemovedFile source{temporary_output(".hlsl")};
-  const RemovedFile bytecode{temporary_output(format->extension)};
   PENUMBRA_TRY(write_file(source.path, text));
   auto run = run_vkd3d(translator.compiler,
                        {"-x", "hlsl", "-p", format->profile, "-b", std::string(format->vkd3d_type),
-                        "-e", "main", "-o", bytecode.path.string(), source.path.string()},
+                        "-e", "main", "-o", output.string(), source.path.string()},
                        translator.timeout);
   if (!run) return run.error();
   if (run->timed_out || run->exit_code != 0) {
@@ -99,6 +98,19 @@ Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translato
                       "vkd3d-compiler " + format->profile + ": " + why +
                           (run->output.empty() ? "" : ":\n" + run->output));
   }
+  return {};
+}
+
+Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translator, Target target,
+                                             ShaderStage stage, const std::string& text,
+                                             const std::string& name) {
+  const auto format = bytecode_format(target, stage);
+  if (!format) {
+    return make_error(Error::Kind::bad_input, name,
+                      "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
+  }
+  const RemovedFile bytecode{temporary_output(format->extension)};
+  PENUMBRA_TRY(compile_hlsl_bytecode(translator, target, stage, text, name, bytecode.path));
   PENUMBRA_TRY_ASSIGN(FrontEndResult translated,
                       translate_bytecode(translator, target, stage, bytecode.path));
   translated.front_end = "vkd3d-compiler hlsl to " + std::string(format->vkd3d_type) + " (" +

@@ -226,6 +226,33 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
   return map;
 }
 
+Result<FloatImage> D3dEngine::run_surface(const D3dPass& surface,
+                                          const std::vector<std::array<float, 3>>& triangles,
+                                          const D3dMap& map, int width, int height,
+                                          const ParamBlock& params) {
+  Job job(*this);
+  auto format = pass_target(runtime_, surface, "the surface pass");
+  if (!format) return format.error();
+  const int output = job.texture(format->format, width, height, 1, "target");
+  // The camera's own depth buffer: the nearest surface wins, as in an engine.
+  const std::string depth_format =
+      runtime_ == D3dRuntime::d3d9
+          ? surface.reflection.depth_target
+          : std::string(api_format(api_target(runtime_), TextureFormat::d32_float));
+  const int depth = job.texture(depth_format, width, height, 1, "depth");
+  std::vector<float> vertices;
+  for (const auto& v : triangles) vertices.insert(vertices.end(), v.begin(), v.end());
+  const DrawGeometry geometry{job.vertices(vertices), static_cast<unsigned>(triangles.size())};
+  const DrawTarget target{
+      output, 0, depth, width, height, std::array<float, 4>{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, false};
+  PENUMBRA_TRY(d3d::draw_pass(job, surface, "the surface pass",
+                              {{TextureId::shadow_depth, map.id}, {TextureId::shadow_cmp, map.id}},
+                              params, target, geometry));
+  const std::size_t read = job.read(output, 0, width, height, format->channels);
+  PENUMBRA_TRY(job.run());
+  return job.take(read);
+}
+
 void D3dEngine::release(const D3dMap& map) {
   pending_releases_ += "release " + std::to_string(map.id) + "\n";
 }

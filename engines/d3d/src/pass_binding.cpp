@@ -83,7 +83,7 @@ Status write_textures(Job& job, std::string& block, const StageBindings& frag,
     if (texture.contents) {
       id = job.constant_texture(texture.format, *texture.contents);
     } else {
-      const TextureDescription* described = find_texture(texture.name);
+      const TextureDescription* described = find_bound_texture(texture.name);
       const auto given = described ? textures.find(described->id) : textures.end();
       if (given == textures.end()) {
         return unbindable(

@@ -27,10 +27,17 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
                                           ShaderStage stage, const std::filesystem::path& bytecode);
 
 // `text`, HLSL for `target`'s `stage` with entry point main, compiled by
-// the translator's vkd3d-compiler to the target's bytecode and translated
+// the translator's vkd3d-compiler to the target's bytecode (bytecode_format())
+// in `output`: what a Direct3D engine's build does with its own shaders.
+// `name` names the source in errors (compile: the compiler's message);
+// bad_input for a target without bytecode.
+Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target,
+                             ShaderStage stage, const std::string& text, const std::string& name,
+                             const std::filesystem::path& output);
+
+// The same, then translated
 // to SPIR-V as translate_bytecode() does: the way a Direct3D engine's own
-// shaders reach a Vulkan driver under Proton. `name` names the source in
-// errors (compile: the compiler's message).
+// shaders reach a Vulkan driver under Proton.
 Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translator, Target target,
                                              ShaderStage stage, const std::string& text,
                                              const std::string& name);

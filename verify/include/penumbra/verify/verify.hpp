@@ -33,8 +33,10 @@ struct VerifyOptions {
   // Only these paths (verify.json's backend names: "vulkan", "bytecode",
   // "gl", "d3d9", "d3d10", "d3d11"); empty = every path.
   std::vector<std::string> paths = {};
-  // vkd3d-compiler for the Direct3D bytecode path; with none (empty
-  // compiler), that path's runs are reported not executed.
+  // vkd3d-compiler for the Direct3D bytecode path, and for the engine's
+  // own HLSL around each function form on that path and Wine's; with none
+  // (empty compiler), the bytecode path's runs are reported not executed
+  // and neither path draws a function form.
   BytecodeTranslator bytecode = {};
   // Only this shard's (variant, target) pairs: the library's i-th variant
   // (from 0) with kAllTargets' j-th target is in shard ((i + j) mod N) + 1.

@@ -5,7 +5,8 @@
 // engine that drops the library in does: registers, formats, sampler states
 // and input layouts come from the record alone, and D3D9's gl_HalfPixel is
 // set as docs/engines/d3d9.md says. The engine draws the depth pass, the
-// min-max chain, the query and screen_blur's chain, and reads targets back.
+// min-max chain, the query and screen_blur's chain, and an engine's own
+// geometry around a function form, and reads targets back.
 //
 // Lifecycle: create() starts one host process for the runtime in `session`;
 // every later call is one job list sent to it (no process per draw); calls
@@ -143,6 +144,18 @@ class D3dEngine {
                                               const FloatImage& receivers,
                                               const FloatImage& scene_colour,
                                               const ParamBlock& params);
+
+  // Draws `triangles` (a triangle list in whatever space the vertex
+  // shader takes, at the reflection's vertex input) with `surface`, an
+  // engine's own shaders whose pixel shader calls a variant's function
+  // form (docs/function-form.md), into a width x height target in the
+  // reflection's render-target format with a depth buffer of its own (both
+  // cleared to 1, depth test LESS), `map` bound as the function form's
+  // textures, and reads the target back.
+  Result<FloatImage> run_surface(const D3dPass& surface,
+                                 const std::vector<std::array<float, 3>>& triangles,
+                                 const D3dMap& map, int width, int height,
+                                 const ParamBlock& params);
 
  private:
   friend class d3d::Job;  // creates ids, shares the shader caches, runs itself
