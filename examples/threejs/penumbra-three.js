@@ -80,7 +80,11 @@ export class PenumbraSpotShadow {
     this.source = source;
     this.spotIndex = spotIndex;
     this.options = {lightWorldSize, bias, filterRadiusUV};
-    this.pixelArgument = /vec2\s+pixel/.test(this.form.reflection.signature);
+    // The fragment's call: the light clip position, and the pixel where the
+    // variant rotates its samples per pixel (the `rotation` key).
+    this.visibility = /vec2\s+pixel/.test(this.form.reflection.signature)
+                          ? 'penumbra_visibility(penumbraLightClip, floor(gl_FragCoord.xy))'
+                          : 'penumbra_visibility(penumbraLightClip)';
 
     const gl = renderer.getContext();
     this.gl = gl;
@@ -112,12 +116,10 @@ export class PenumbraSpotShadow {
       throw new Error(`three.js ${THREE.REVISION}'s lights_fragment_begin has no spot shadow term ` +
                       'penumbra-three knows (it is written for r187)');
     }
-    const call = this.pixelArgument ? 'penumbra_visibility(penumbraLightClip, floor(gl_FragCoord.xy))'
-                                    : 'penumbra_visibility(penumbraLightClip)';
     const lights = chunk.replace(THREE_SPOT_SHADOW,
       `#if UNROLLED_LOOP_INDEX == ${this.spotIndex}\n` +
       'directLight.color *= ( directLight.visible && receiveShadow ) ? ' +
-      `mix( 1.0, ${call}, spotLightShadow.shadowIntensity ) : 1.0;\n` +
+      `mix( 1.0, ${this.visibility}, spotLightShadow.shadowIntensity ) : 1.0;\n` +
       `#else\n${THREE_SPOT_SHADOW}\n#endif`);
     const lightMatrix = this.lightMatrix;
     const source = this.source;

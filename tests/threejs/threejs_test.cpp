@@ -30,7 +30,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // examples/threejs/manifest.json's variants: each function-form technique
-// in three's spot-light map, forward and reversed-Z.
+// in three's spot-light map, forward and reversed-Z, and pcss rotated per
+// pixel (the function's pixel argument from gl_FragCoord).
 const std::vector<Variant>& example_variants() {
   static const std::vector<Variant> variants = [] {
     auto loaded = load_variants(PENUMBRA_SOURCE_DIR "/examples/threejs/manifest.json");
@@ -124,23 +125,13 @@ Result<std::vector<float>> decode_floats(const std::string& base64, std::size_t 
   return out;
 }
 
-// A read-back picture (4 channels, row 0 at the bottom) as the stage's
-// views are: row 0 at the top, and mirrored left to right. Light-view
-// space is left-handed (x right and y up as the light sees them, looking
-// down +z); three's right-handed world holds it with z negated, its mirror
-// image, which three's camera pictures as the ray cast's mirror.
+// A read-back picture: 4 channels, row 0 first, as the reference's ray cast
+// has it (conformance.html turns three's camera to match).
 Result<FloatImage> picture(const nlohmann::json& base64, int width, int height,
                            const std::string& what) {
-  PENUMBRA_TRY_ASSIGN(
-      const std::vector<float> floats,
-      decode_floats(base64.get<std::string>(), std::size_t(width) * height * 4, what));
   FloatImage out(width, height, 4);
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) {
-      const std::size_t from = (std::size_t(height - 1 - j) * width + (width - 1 - i)) * 4;
-      std::copy_n(floats.begin() + std::ptrdiff_t(from), 4, &out.at(i, j, 0));
-    }
-  }
+  PENUMBRA_TRY_ASSIGN(
+      out.data, decode_floats(base64.get<std::string>(), std::size_t(width) * height * 4, what));
   return out;
 }
 
@@ -233,8 +224,7 @@ Result<EngineMap> three_map(const nlohmann::json& browser, const reference::Scen
   EngineMap map;
   map.stored = FloatImage(scene.map_width, scene.map_height, 1);
   map.stored.data = texels;  // row 0 first in memory: v = 0.5 / height
-  map.encoded = reference::EncodedDepth{
-      encoding, {scene.light.near_plane, 1.0 / depth_scale_for(scene.far_z)}};
+  map.encoded = encoded_depth(encoding, scene.light, depth_scale_for(scene.far_z));
   return map;
 }
 

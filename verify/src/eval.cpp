@@ -46,9 +46,7 @@ FloatImage normalized_map(const FloatImage& map, float depth_scale) {
 // light's near plane, and 1 / depth_scale for the far one; none for linear.
 std::optional<reference::EncodedDepth> encoding_of(const LibraryVariant& variant,
                                                    const EvalInputs& inputs, float depth_scale) {
-  const MapEncoding encoding = map_encoding(variant.variant.keys);
-  if (encoding == MapEncoding::linear) return std::nullopt;
-  return reference::EncodedDepth{encoding, {inputs.light.near_plane, 1.0 / depth_scale}};
+  return encoded_depth(map_encoding(variant.variant.keys), inputs.light, depth_scale);
 }
 
 // The linear map as the variant's programs read it: normalized, or stored in

@@ -72,10 +72,7 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Tar
   if (!map) return map.error();
   fixture.map = *map;
   const MapEncoding encoding = depth.reflection.map_encoding.value_or(MapEncoding::linear);
-  if (encoding != MapEncoding::linear) {
-    fixture.encoded =
-        reference::EncodedDepth{encoding, {scene.light.near_plane, 1.0 / depth_scale}};
-  }
+  fixture.encoded = encoded_depth(encoding, scene.light, depth_scale);
   // A linear map's two images are the same; an encoded one's depth image is
   // the rasterizer's depth and its colour image the shader's encoding.
   auto stored = traits(target).comparison_sampler ? engine.read_shadow_depth(**map)

@@ -12,6 +12,13 @@ float depth_scale_for(double max_z) {
   return std::ldexp(1.0f, -exponent);
 }
 
+std::optional<reference::EncodedDepth> encoded_depth(MapEncoding encoding,
+                                                     const reference::LightParams& light,
+                                                     float depth_scale) {
+  if (encoding == MapEncoding::linear) return std::nullopt;
+  return reference::EncodedDepth{encoding, {light.near_plane, 1.0 / depth_scale}};
+}
+
 ParamBlock shadow_params(const reference::LightParams& light, const ParamSizes& sizes,
                          float depth_scale) {
   const auto f = [](double value) { return static_cast<float>(value); };

@@ -6,9 +6,6 @@
 // itself, so the runtime's rasterization rules (D3D9's pixel centres) decide
 // what the map and the queries hold; the map is checked against the ray
 // cast, and the reference reads it.
-#include <unistd.h>
-
-#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -16,6 +13,7 @@
 #include "engine_shaders.hpp"
 #include "penumbra/d3d/engine.hpp"
 #include "penumbra/reference/scene.hpp"
+#include "penumbra/support/scratch_file.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 
 namespace penumbra {
@@ -156,37 +154,24 @@ class WineBackend final : public Backend {
     PENUMBRA_TRY_ASSIGN(RuntimeMap * drawn, map_of(depth, fixture));
     VertexOptions vertex = draw.vertex;
     vertex.half_pixel_offset = runtime_ == D3dRuntime::d3d9;
-    const ScratchFile vs{scratch_path(".vs")}, ps{scratch_path(".ps")};
+    const ScratchFile vs("surface", ".vs"), ps("surface", ".ps");
     PENUMBRA_TRY(
         compile_hlsl_bytecode(compiler_, draw.target, ShaderStage::vertex,
                               engine_vertex_shader(draw.target, draw.camera, draw.light, vertex),
-                              draw.where + " (engine vertex stage)", vs.path));
+                              draw.where + " (engine vertex stage)", vs.path()));
     PENUMBRA_TRY(compile_hlsl_bytecode(
         compiler_, draw.target, ShaderStage::fragment,
         engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
-        draw.where + " (engine fragment stage)", ps.path));
+        draw.where + " (engine fragment stage)", ps.path()));
     execution = {"vkd3d-compiler's bytecode loaded by the " + name() + " runtime (Wine)", {}};
-    PENUMBRA_TRY_ASSIGN(FloatImage clip,
-                        engine_->run_surface({vs.path, ps.path, draw.reflection}, draw.triangles,
-                                             drawn->map, draw.width, draw.height, fixture.params));
+    PENUMBRA_TRY_ASSIGN(
+        FloatImage clip,
+        engine_->run_surface({vs.path(), ps.path(), draw.reflection}, draw.triangles, drawn->map,
+                             draw.width, draw.height, fixture.params));
     return SurfacePicture{std::move(clip), drawn->stored};
   }
 
  private:
-  // A compiled stage's file, removed when the draw is done with it.
-  struct ScratchFile {
-    std::filesystem::path path;
-    ~ScratchFile() {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  };
-  std::filesystem::path scratch_path(const char* extension) {
-    return std::filesystem::temp_directory_path() /
-           ("penumbra-surface-" + std::to_string(::getpid()) + "-" + name() + "-" +
-            std::to_string(scratch_files_++) + extension);
-  }
-
   Status start() {
     if (engine_) return {};
     PENUMBRA_TRY_ASSIGN(auto session, session_->get());
@@ -221,7 +206,6 @@ class WineBackend final : public Backend {
   std::shared_ptr<SharedSession> session_;
   std::string missing_;
   BytecodeTranslator compiler_;  // compiles an engine's own HLSL (draw_surface)
-  int scratch_files_ = 0;
   std::unique_ptr<D3dEngine> engine_;
   std::map<std::string, RuntimeMap> maps_;
 };

@@ -1,37 +1,16 @@
-#include <unistd.h>
-
-#include <atomic>
 #include <string>
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/support/file.hpp"
+#include "penumbra/support/scratch_file.hpp"
 #include "spirv/descriptor_sets.hpp"
 #include "spirv/validation.hpp"
 #include "vkd3d/run_vkd3d.hpp"
 
 namespace penumbra {
 namespace {
-
-// vkd3d-compiler writes the module to a file: its stdout would interleave
-// the binary with its messages. One name per call, as verify may translate
-// on several threads and processes at once.
-std::filesystem::path temporary_output(std::string_view extension = ".spv") {
-  static std::atomic<unsigned> counter{0};
-  return std::filesystem::temp_directory_path() /
-         ("penumbra-vkd3d-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
-          std::string(extension));
-}
-
-// Removes the file when the translation is done with it.
-struct RemovedFile {
-  std::filesystem::path path;
-  ~RemovedFile() {
-    std::error_code ec;
-    std::filesystem::remove(path, ec);
-  }
-};
 
 // Direct3D gives each stage register files of its own; vkd3d-compiler's
 // command line takes no binding map, so each stage's descriptors, all in set
@@ -51,10 +30,12 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
                       "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
   }
   const std::string front_end = "vkd3d-compiler " + std::string(format->vkd3d_type) + " to SPIR-V";
-  const RemovedFile output{temporary_output()};
+  // vkd3d-compiler writes the module to a file: its stdout would interleave
+  // the binary with its messages.
+  const ScratchFile output("vkd3d", ".spv");
   auto run = run_vkd3d(translator.compiler,
                        {"-x", std::string(format->vkd3d_type), "-b", "spirv-binary", "-o",
-                        output.path.string(), bytecode.string()},
+                        output.path().string(), bytecode.string()},
                        translator.timeout);
   if (!run) return run.error();
   if (run->timed_out || run->exit_code != 0) {
@@ -63,7 +44,7 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
     return make_error(Error::Kind::compile, bytecode.string(),
                       front_end + ": " + why + (run->output.empty() ? "" : ":\n" + run->output));
   }
-  auto spirv = read_spirv_file(output.path);
+  auto spirv = read_spirv_file(output.path());
   if (!spirv) {
     return make_error(Error::Kind::compile, bytecode.string(),
                       front_end + " wrote no SPIR-V: " + spirv.error().message);
@@ -76,19 +57,19 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
   return FrontEndResult{std::move(*spirv), front_end, {}};
 }
 
-Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target,
-                             ShaderStage stage, const std::string& text, const std::string& name,
+Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target, ShaderStage stage,
+                             const std::string& text, const std::string& name,
                              const std::filesystem::path& output) {
   const auto format = bytecode_format(target, stage);
   if (!format) {
     return make_error(Error::Kind::bad_input, name,
                       "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
   }
-  const RemovedFile source{temporary_output(".hlsl")};
-  PENUMBRA_TRY(write_file(source.path, text));
+  const ScratchFile source("vkd3d", ".hlsl");
+  PENUMBRA_TRY(write_file(source.path(), text));
   auto run = run_vkd3d(translator.compiler,
                        {"-x", "hlsl", "-p", format->profile, "-b", std::string(format->vkd3d_type),
-                        "-e", "main", "-o", output.string(), source.path.string()},
+                        "-e", "main", "-o", output.string(), source.path().string()},
                        translator.timeout);
   if (!run) return run.error();
   if (run->timed_out || run->exit_code != 0) {
@@ -109,10 +90,10 @@ Result<FrontEndResult> compile_hlsl_to_spirv(const BytecodeTranslator& translato
     return make_error(Error::Kind::bad_input, name,
                       "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
   }
-  const RemovedFile bytecode{temporary_output(format->extension)};
-  PENUMBRA_TRY(compile_hlsl_bytecode(translator, target, stage, text, name, bytecode.path));
+  const ScratchFile bytecode("vkd3d", format->extension);
+  PENUMBRA_TRY(compile_hlsl_bytecode(translator, target, stage, text, name, bytecode.path()));
   PENUMBRA_TRY_ASSIGN(FrontEndResult translated,
-                      translate_bytecode(translator, target, stage, bytecode.path));
+                      translate_bytecode(translator, target, stage, bytecode.path()));
   translated.front_end = "vkd3d-compiler hlsl to " + std::string(format->vkd3d_type) + " (" +
                          format->profile + "), then " + translated.front_end;
   return translated;

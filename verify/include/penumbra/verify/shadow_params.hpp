@@ -3,7 +3,10 @@
 // hand to every pass (docs/shader-interface.md).
 #pragma once
 
+#include <optional>
+
 #include "penumbra/reference/light.hpp"
+#include "penumbra/reference/shadow_map.hpp"
 #include "penumbra/support/param_block.hpp"
 
 namespace penumbra {
@@ -11,6 +14,13 @@ namespace penumbra {
 // The power of two 2^-k with 2^k >= max_z, so normalized depth z * scale lies
 // in [0, 1] and scaling is exact (docs/shader-interface.md).
 float depth_scale_for(double max_z);
+
+// How a map in `encoding` stores depth under the projection these
+// parameters describe: `light`'s near plane, and 1 / depth_scale for the far
+// one (docs/shader-interface.md); none for linear z.
+std::optional<reference::EncodedDepth> encoded_depth(MapEncoding encoding,
+                                                     const reference::LightParams& light,
+                                                     float depth_scale);
 
 struct ParamSizes {
   int map_width = 0;
