@@ -1,6 +1,6 @@
 // Penumbra's soft shadows in three.js's own materials: a SpotLight's shadow
 // term replaced by a variant's essl300 function form, penumbra_visibility(),
-// reading three's own shadow map (docs/engines/threejs.md). Everything this
+// reading three's own shadow map (README.md). Everything this
 // module binds comes from index.json: the function's file, its textures and
 // their sampler states, and its parameter block.
 //
@@ -204,7 +204,7 @@ export class PenumbraSpotShadow {
     gl.bindBufferBase(gl.UNIFORM_BUFFER, this.bindingPoint, this.buffer);
     const map = shadow.map && shadow.map.depthTexture;
     const texture = map && this.renderer.properties.get(map).__webglTexture;
-    if (!texture) return;  // no shadow pass yet: three draws the light unshadowed
+    if (!texture) return;  // no shadow pass has drawn the map yet: nothing to bind
     for (const {unit, sampler} of this.textures) {
       this.renderer.state.bindTexture(gl.TEXTURE_2D, texture, gl.TEXTURE0 + unit);
       gl.bindSampler(unit, sampler);
