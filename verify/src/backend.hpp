@@ -128,6 +128,19 @@ Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
 
+// One of the engine's stages of `draw` (its text, and a name for errors)
+// compiled for the Vulkan engine: by the target's glslang front end, or to
+// bytecode and translated.
+using SurfaceStageCompiler = std::function<Result<StageCode>(
+    ShaderStage stage, const std::string& text, const std::string& name)>;
+
+// `draw` on `engine` over `fixture`'s map: `program`'s viewport and depth
+// conventions, its stages from `compile` (the paths that draw on the Vulkan
+// engine, vulkan_backend.cpp).
+Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw,
+                                         const SceneFixture& fixture, PassProgram program,
+                                         const SurfaceStageCompiler& compile);
+
 // Every path, in report order: Vulkan, the Direct3D bytecode through
 // `bytecode`, OpenGL (not executed unless `gl`) on the device `engine` runs
 // on, and the Direct3D 9, 10 and 11 runtimes under Wine (not executed unless

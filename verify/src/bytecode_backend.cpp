@@ -45,25 +45,14 @@ class BytecodeBackend final : public Backend {
   Result<SurfacePicture> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
                                       Execution& execution) override {
     PassProgram program;
-    program.target = draw.target;
-    program.reflection = draw.reflection;
     // The bytecode flips y as the HLSL text it was compiled from does.
     program.d3d_viewport = true;
     program.d3d_bytecode = true;
-    PENUMBRA_TRY_ASSIGN(program.vert,
-                        compile_bytecode_stage(
-                            translator_, draw.target, ShaderStage::vertex,
-                            engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex),
-                            draw.where + " (engine vertex stage)", execution));
-    PENUMBRA_TRY_ASSIGN(
-        program.frag, compile_bytecode_stage(
-                          translator_, draw.target, ShaderStage::fragment,
-                          engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
-                          draw.where + " (engine fragment stage)", execution));
-    PENUMBRA_TRY_ASSIGN(FloatImage clip,
-                        engine_.run_surface(program, draw.triangles, *fixture.map, draw.width,
-                                            draw.height, fixture.params));
-    return SurfacePicture{std::move(clip), nullptr};
+    return surface_on_engine(
+        engine_, draw, fixture, std::move(program),
+        [&](ShaderStage stage, const std::string& text, const std::string& name) {
+          return compile_bytecode_stage(translator_, draw.target, stage, text, name, execution);
+        });
   }
 
  private:

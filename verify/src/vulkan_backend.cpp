@@ -31,24 +31,13 @@ class VulkanBackend final : public Backend {
   Result<SurfacePicture> draw_surface(const SurfaceDraw& draw, const SceneFixture& fixture,
                                       Execution& execution) override {
     PassProgram program;
-    program.target = draw.target;
-    program.reflection = draw.reflection;
     program.d3d_viewport = traits(draw.target).is_hlsl;
     program.gl_clip_depth = !traits(draw.target).is_hlsl;
-    PENUMBRA_TRY_ASSIGN(
-        program.vert,
-        compile_text_stage(draw.target, ShaderStage::vertex,
-                           engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex),
-                           draw.where + " (engine vertex stage)", execution));
-    PENUMBRA_TRY_ASSIGN(
-        program.frag,
-        compile_text_stage(draw.target, ShaderStage::fragment,
-                           engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
-                           draw.where + " (engine fragment stage)", execution));
-    PENUMBRA_TRY_ASSIGN(FloatImage clip,
-                        engine_.run_surface(program, draw.triangles, *fixture.map, draw.width,
-                                            draw.height, fixture.params));
-    return SurfacePicture{std::move(clip), nullptr};
+    return surface_on_engine(
+        engine_, draw, fixture, std::move(program),
+        [&](ShaderStage stage, const std::string& text, const std::string& name) {
+          return compile_text_stage(draw.target, stage, text, name, execution);
+        });
   }
 
  private:
@@ -72,6 +61,24 @@ LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded)
 }
 
 }  // namespace
+
+Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw,
+                                         const SceneFixture& fixture, PassProgram program,
+                                         const SurfaceStageCompiler& compile) {
+  program.target = draw.target;
+  program.reflection = draw.reflection;
+  PENUMBRA_TRY_ASSIGN(
+      program.vert, compile(ShaderStage::vertex,
+                            engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex),
+                            draw.where + " (engine vertex stage)"));
+  PENUMBRA_TRY_ASSIGN(program.frag, compile(ShaderStage::fragment,
+                                            engine_fragment_shader(draw.target, draw.reflection,
+                                                                   draw.function_text),
+                                            draw.where + " (engine fragment stage)"));
+  PENUMBRA_TRY_ASSIGN(FloatImage clip, engine.run_surface(program, draw.triangles, *fixture.map,
+                                                          draw.width, draw.height, fixture.params));
+  return SurfacePicture{std::move(clip), nullptr};
+}
 
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load) {

@@ -51,6 +51,13 @@ Result<PassTarget> pass_target(D3dRuntime runtime, const D3dPass& pass, const st
   return PassTarget{format, static_cast<int>(texel_components(*parsed))};
 }
 
+// `triangles` (x, y, z per vertex) as a vertex buffer of the job's.
+DrawGeometry triangle_list(Job& job, const std::vector<std::array<float, 3>>& triangles) {
+  std::vector<float> vertices;
+  for (const auto& v : triangles) vertices.insert(vertices.end(), v.begin(), v.end());
+  return {job.vertices(vertices), static_cast<unsigned>(triangles.size())};
+}
+
 // A pass drawn over a whole target of `width` x `height`.
 DrawTarget whole(int colour, int width, int height) {
   return {colour, 0, std::nullopt, width, height, std::nullopt, std::nullopt};
@@ -213,9 +220,7 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
     target.depth = map.id;
   }
   job.keep(map.id);
-  std::vector<float> vertices;
-  for (const auto& v : triangles) vertices.insert(vertices.end(), v.begin(), v.end());
-  const DrawGeometry geometry{job.vertices(vertices), static_cast<unsigned>(triangles.size())};
+  const DrawGeometry geometry = triangle_list(job, triangles);
   PENUMBRA_TRY(d3d::draw_pass(job, depth, "the depth pass", {}, params, target, geometry));
   const std::size_t read = job.read(map.id, 0, width, height, 1);
   if (Status s = job.run(); !s) {
@@ -240,9 +245,7 @@ Result<FloatImage> D3dEngine::run_surface(const D3dPass& surface,
           ? surface.reflection.depth_target
           : std::string(api_format(api_target(runtime_), TextureFormat::d32_float));
   const int depth = job.texture(depth_format, width, height, 1, "depth");
-  std::vector<float> vertices;
-  for (const auto& v : triangles) vertices.insert(vertices.end(), v.begin(), v.end());
-  const DrawGeometry geometry{job.vertices(vertices), static_cast<unsigned>(triangles.size())};
+  const DrawGeometry geometry = triangle_list(job, triangles);
   const DrawTarget target{
       output, 0, depth, width, height, std::array<float, 4>{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, false};
   PENUMBRA_TRY(d3d::draw_pass(job, surface, "the surface pass",

@@ -34,11 +34,14 @@ Geometry full_screen_triangle(const PassReflection& reflection) {
   return geometry;
 }
 
+}  // namespace
+
 Result<Framebuffer> framebuffer_for(const PassProgram& pass, const Texture& target,
-                                    const std::string& what) {
+                                    const std::string& what, const Texture* depth) {
   Framebuffer framebuffer = create_framebuffer();
   const GLenum attachment = GL_COLOR_ATTACHMENT0 + pass.reflection->render_targets.front().index;
   glNamedFramebufferTexture(framebuffer.get(), attachment, target.get(), 0);
+  if (depth) glNamedFramebufferTexture(framebuffer.get(), GL_DEPTH_ATTACHMENT, depth->get(), 0);
   glNamedFramebufferDrawBuffer(framebuffer.get(), attachment);
   const GLenum status = glCheckNamedFramebufferStatus(framebuffer.get(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -46,12 +49,11 @@ Result<Framebuffer> framebuffer_for(const PassProgram& pass, const Texture& targ
     std::snprintf(code, sizeof code, "0x%04X", status);
     return make_error(Error::Kind::device, "glCheckNamedFramebufferStatus",
                       "the " + std::string(pass.target_format->name()) + " target of " + what +
-                          " is not renderable: status " + code);
+                          (depth ? " with its depth buffer" : "") + " is not renderable: status " +
+                          code);
   }
   return framebuffer;
 }
-
-}  // namespace
 
 Status bind_pass_textures(const PassProgram& pass, PassInputs& inputs) {
   for (std::size_t i = 0; i < pass.bindings.textures.size(); ++i) {

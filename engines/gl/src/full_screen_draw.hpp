@@ -27,6 +27,12 @@ class ProgramInUse {
   ~ProgramInUse() { glUseProgram(0); }
 };
 
+// A framebuffer drawing into `target` at the attachment of `pass`'s render
+// target, with `depth` (a depth texture) as its depth buffer where given.
+// Errors (device, naming `what`): it is incomplete.
+Result<Framebuffer> framebuffer_for(const PassProgram& pass, const Texture& target,
+                                    const std::string& what, const Texture* depth = nullptr);
+
 // Binds each texture `pass` samples to what `inputs` supplies for it, with
 // its sampler object. Errors: `inputs`'.
 Status bind_pass_textures(const PassProgram& pass, PassInputs& inputs);

@@ -1,6 +1,5 @@
 #include "surface_pass.hpp"
 
-#include <cstdio>
 #include <string>
 
 #include "full_screen_draw.hpp"
@@ -13,22 +12,6 @@ namespace penumbra::gl {
 namespace {
 
 constexpr const char* kWhere = "surface pass";
-
-// The colour target and the camera's own depth buffer, in one framebuffer.
-Result<Framebuffer> surface_framebuffer(const Texture& colour, const Texture& depth) {
-  Framebuffer framebuffer = create_framebuffer();
-  glNamedFramebufferTexture(framebuffer.get(), GL_COLOR_ATTACHMENT0, colour.get(), 0);
-  glNamedFramebufferTexture(framebuffer.get(), GL_DEPTH_ATTACHMENT, depth.get(), 0);
-  glNamedFramebufferDrawBuffer(framebuffer.get(), GL_COLOR_ATTACHMENT0);
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer.get(), GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04X", status);
-    return make_error(Error::Kind::device, "glCheckNamedFramebufferStatus",
-                      std::string("the surface pass's framebuffer is incomplete: status ") + code);
-  }
-  return framebuffer;
-}
 
 }  // namespace
 
@@ -58,7 +41,7 @@ Result<FloatImage> run_surface_pass(const GlPass& surface,
   if (!colour) return colour.error();
   Texture depth = create_texture_2d();
   glTextureStorage2D(depth.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
-  auto framebuffer = surface_framebuffer(*colour, depth);
+  auto framebuffer = framebuffer_for(*pass, *colour, "the surface pass", &depth);
   if (!framebuffer) return framebuffer.error();
   Buffer positions = create_buffer();
   glNamedBufferStorage(positions.get(), GLsizeiptr(triangles.size() * sizeof triangles[0]),
