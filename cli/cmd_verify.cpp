@@ -55,18 +55,21 @@ void print_summary(const VerifyReport& report, bool quiet) {
                 << c.expected_levels << " levels\n";
     }
   }
-  for (const FunctionFormCheck& c : report.function_checks) {
-    if (quiet && c.pass) continue;
-    std::cout << (c.pass ? "PASS " : "FAIL ") << "function form " << c.variant << " ["
-              << to_string(c.target) << " on " << c.backend << "] on the camera's stage: ";
-    if (!c.error.empty()) {
-      std::cout << c.error << "\n";
-      continue;
+  for (const auto& [form, checks] : {std::pair{"function form", &report.function_checks},
+                                     std::pair{"deferred mask", &report.deferred_checks}}) {
+    for (const EngineFormCheck& c : *checks) {
+      if (quiet && c.pass) continue;
+      std::cout << (c.pass ? "PASS " : "FAIL ") << form << " " << c.variant << " ["
+                << to_string(c.target) << " on " << c.backend << "] on the camera's stage: ";
+      if (!c.error.empty()) {
+        std::cout << c.error << "\n";
+        continue;
+      }
+      std::cout << "max error " << c.comparison.max_abs_error << " (tolerance "
+                << c.comparison.tolerance << "), " << c.comparison.over_tolerance << " of "
+                << c.comparison.compared << " pixels over, camera agreement " << c.camera_agreement
+                << "\n";
     }
-    std::cout << "max error " << c.comparison.max_abs_error << " (tolerance "
-              << c.comparison.tolerance << "), " << c.comparison.over_tolerance << " of "
-              << c.comparison.compared << " pixels over, camera agreement " << c.camera_agreement
-              << "\n";
   }
   for (const VariantRun& v : report.variants) {
     for (const TargetRun& t : v.runs) {

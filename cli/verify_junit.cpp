@@ -105,16 +105,19 @@ JunitReport to_junit(const VerifyReport& report) {
     if (!c.error.empty()) fail_with(check, c.error);
     suite.cases.push_back(std::move(check));
   }
-  for (const FunctionFormCheck& c : report.function_checks) {
-    JunitCase check = make_case(
-        "function_form", c.variant + "/" + std::string(to_string(c.target)) + "/" + c.backend,
-        c.seconds, c.pass,
-        std::to_string(c.comparison.over_tolerance) + " of " +
-            std::to_string(c.comparison.compared) + " pixels over the tolerance (max error " +
-            number(c.comparison.max_abs_error) + "), camera agreement " +
-            number(c.camera_agreement));
-    if (!c.error.empty()) fail_with(check, c.error);
-    suite.cases.push_back(std::move(check));
+  for (const auto& [form, checks] : {std::pair{"function_form", &report.function_checks},
+                                     std::pair{"deferred_mask", &report.deferred_checks}}) {
+    for (const EngineFormCheck& c : *checks) {
+      JunitCase check = make_case(
+          form, c.variant + "/" + std::string(to_string(c.target)) + "/" + c.backend, c.seconds,
+          c.pass,
+          std::to_string(c.comparison.over_tolerance) + " of " +
+              std::to_string(c.comparison.compared) + " pixels over the tolerance (max error " +
+              number(c.comparison.max_abs_error) + "), camera agreement " +
+              number(c.camera_agreement));
+      if (!c.error.empty()) fail_with(check, c.error);
+      suite.cases.push_back(std::move(check));
+    }
   }
   for (const VariantRun& v : report.variants) add_runs(suite, v);
   return {"penumbra verify", {std::move(suite)}};

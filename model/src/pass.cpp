@@ -7,7 +7,7 @@ namespace {
 
 // Indexed by the enum values, in declaration order.
 constexpr std::array<std::string_view, kAllPassKinds.size()> kPassNames = {
-    "depth", "minmax_init", "minmax_reduce", "query", "blur_h", "blur_v", "composite"};
+    "depth", "minmax_init", "minmax_reduce", "query", "blur_h", "blur_v", "composite", "deferred"};
 
 }  // namespace
 

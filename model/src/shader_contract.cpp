@@ -35,6 +35,9 @@ constexpr TextureDescription kTextures[] = {
     {TextureId::blocker_disk, "blocker_disk", 9, TextureFormat::rg32_float,
      TextureFormat::rg32_float, kPoint, false,
      "the blocker-search disk: point i (x, y) at texel (i, 0), one row", true},
+    {TextureId::camera_depth, "camera_depth", 10, TextureFormat::d32_float,
+     TextureFormat::r32_float, kPoint, false,
+     "the deferred pass: the engine's camera depth buffer (any depth format), point reads"},
 };
 
 constexpr ParamMember kParams[] = {
@@ -46,6 +49,19 @@ constexpr ParamMember kParams[] = {
     {"minmax_info", "N, the min-max mip's top level; 0; 0; 0"},
 };
 
+constexpr ParamMember kDeferredParams[] = {
+    {"camera_inverse_0", "column 0 of the inverse of the camera's view-projection"},
+    {"camera_inverse_1", "column 1 of it"},
+    {"camera_inverse_2", "column 2 of it"},
+    {"camera_inverse_3", "column 3 of it"},
+    {"light_view_proj_0", "column 0 of the light's view-projection, which drew the map"},
+    {"light_view_proj_1", "column 1 of it"},
+    {"light_view_proj_2", "column 2 of it"},
+    {"light_view_proj_3", "column 3 of it"},
+    {"camera_depth_range",
+     "a, b with clip z / w = a depth + b; the depth the buffer is cleared to; 0"},
+};
+
 constexpr TextureId kMinmaxInitReads[] = {TextureId::shadow_depth};
 constexpr TextureId kMinmaxReduceReads[] = {TextureId::minmax_source};
 constexpr TextureId kQueryReads[] = {TextureId::receivers,  TextureId::shadow_depth,
@@ -53,6 +69,9 @@ constexpr TextureId kQueryReads[] = {TextureId::receivers,  TextureId::shadow_de
                                      TextureId::pcf_disk,   TextureId::blocker_disk};
 constexpr TextureId kBlurReads[] = {TextureId::screen_factor, TextureId::receivers};
 constexpr TextureId kCompositeReads[] = {TextureId::screen_factor, TextureId::scene_colour};
+constexpr TextureId kDeferredReads[] = {TextureId::camera_depth, TextureId::shadow_depth,
+                                        TextureId::shadow_cmp, TextureId::pcf_disk,
+                                        TextureId::blocker_disk};
 
 constexpr VertexInput kLightSpacePosition{"position", 3, "light-view space position"};
 constexpr VertexInput kClipPosition{
@@ -124,9 +143,20 @@ constexpr PassDescription kPasses[] = {
      {"colour", TextureFormat::rgba32_float},
      false,
      kCompositeReads},
+    {PassKind::deferred,
+     "passes/fullscreen.vert",
+     "passes/deferred.frag",
+     "deferred",
+     true,
+     kClipPosition,
+     {"visibility", TextureFormat::rg32_float},
+     false,
+     kDeferredReads},
 };
 
-constexpr PassKind kSinglePass[] = {PassKind::depth, PassKind::query};
+// The query's techniques that read the map alone; the deferred pass is the
+// query's alternative for an engine's own camera, run instead of it.
+constexpr PassKind kSinglePass[] = {PassKind::depth, PassKind::query, PassKind::deferred};
 constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
                                       PassKind::minmax_reduce, PassKind::query};
 constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
@@ -233,6 +263,10 @@ const TextureDescription* find_bound_texture(std::string_view name) {
 
 std::span<const ParamMember> param_members() {
   return kParams;
+}
+
+std::span<const ParamMember> deferred_param_members() {
+  return kDeferredParams;
 }
 
 std::uint32_t half_pixel_register() {

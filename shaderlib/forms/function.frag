@@ -6,22 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "variant.glsl"
 #include "techniques/technique.glsl"
-
-#if defined(PENUMBRA_TARGET_HLSL_DX9) || defined(PENUMBRA_TARGET_HLSL_DX10) || \
-    defined(PENUMBRA_TARGET_HLSL_DX11)
-// Direct3D's viewport puts clip-space y = +1 in row 0 of the map.
-#define PENUMBRA_CLIP_Y_TO_V (-0.5)
-#else
-#define PENUMBRA_CLIP_Y_TO_V 0.5
-#endif
-
-// The receiver as the query pass reads it: (u, v) from the light's clip
-// space, and its linear light-view z, which a perspective projection puts in
-// w whatever range it maps z to.
-vec3 clip_to_query(vec4 light_clip_position) {
-  vec2 ndc = light_clip_position.xy / light_clip_position.w;
-  return vec3(0.5 + 0.5 * ndc.x, 0.5 + PENUMBRA_CLIP_Y_TO_V * ndc.y, light_clip_position.w);
-}
+#include "common/light_clip.glsl"
 
 // Visibility of the light in [0, 1] at a receiver whose position the light's
 // view-projection matrix takes to `light_clip_position`. With the rotation

@@ -39,7 +39,8 @@ Result<std::unique_ptr<TemporaryLibrary>> build_with_bytecode(const std::string&
                                  {.jobs = 2, .hlsl = {.compiler = *compiler}});
 }
 
-// verify's report on `name` in `library`, the bytecode path on.
+// verify's report on `name` in `library`, on the bytecode path alone (the
+// Vulkan path's runs of the same targets are tests/conformance's).
 Result<VerifyReport> bytecode_report(const Library& library, const std::string& name) {
   auto compiler = recorded_hlsl_compiler();
   if (!compiler) return compiler.error();
@@ -50,6 +51,7 @@ Result<VerifyReport> bytecode_report(const Library& library, const std::string& 
                          .targets = bytecode_targets(),
                          .gl = false,
                          .wine = false,  // tests/d3d runs the runtimes
+                         .paths = {"bytecode"},
                          .bytecode = {.compiler = *compiler}},
                         ignore_diagnostics());
 }
@@ -97,7 +99,7 @@ TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
   // target's bytecode by vkd3d-compiler and translated, as a Direct3D
   // engine's shaders run under Proton.
   std::set<Target> drawn;
-  for (const FunctionFormCheck& c : report->function_checks) {
+  for (const EngineFormCheck& c : report->function_checks) {
     if (c.backend != "bytecode") continue;
     const std::string label = "function form, " + std::string(to_string(c.target));
     EXPECT_TRUE(c.pass) << label << ": " << c.error << " max error " << c.comparison.max_abs_error
@@ -107,6 +109,17 @@ TEST_P(BytecodeExecution, EveryDirect3DTargetsBytecodeMatchesTheReference) {
     drawn.insert(c.target);
   }
   EXPECT_EQ(drawn.size(), has_function_form(variant.technique) ? runs->size() : 0u);
+  // The deferred pass's bytecode over the camera's depth, translated.
+  std::set<Target> masked;
+  for (const EngineFormCheck& c : report->deferred_checks) {
+    if (c.backend != "bytecode") continue;
+    const std::string label = "deferred pass, " + std::string(to_string(c.target));
+    EXPECT_TRUE(c.pass) << label << ": " << c.error << " max error " << c.comparison.max_abs_error
+                        << ", " << c.comparison.over_tolerance << " pixels over; camera agreement "
+                        << c.camera_agreement;
+    masked.insert(c.target);
+  }
+  EXPECT_EQ(masked.size(), runs_pass(PassKind::deferred, variant) ? runs->size() : 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, BytecodeExecution, ::testing::ValuesIn(default_variant_names()),

@@ -59,11 +59,10 @@ TEST_P(TextAcceptance, EveryTargetFileIsAccepted) {
       }
     }
   }
-  // Depth and query passes, and the two min-max build passes where the
-  // technique reads the mip or screen_blur's blur_h, blur_v and composite;
-  // two stages, every target.
-  const Technique technique = variant->variant.technique;
-  const int passes = uses_minmax_mip(technique) ? 4 : technique == Technique::screen_blur ? 5 : 2;
+  // Every pass the technique lists (depth and query; the two min-max build
+  // passes where it reads the mip, screen_blur's blur_h, blur_v and
+  // composite, or the deferred pass); two stages, every target.
+  const int passes = static_cast<int>(describe(variant->variant.technique).passes.size());
   EXPECT_EQ(checked, passes * 2 * static_cast<int>(variant->variant.targets.size()));
 }
 

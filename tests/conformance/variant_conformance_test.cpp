@@ -103,7 +103,7 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
   // The function form, where the variant has one, as an engine's own
   // shaders call it: every text target on Vulkan, and GLSL on the driver.
   std::set<std::pair<Target, std::string>> drawn;
-  for (const FunctionFormCheck& c : report->function_checks) {
+  for (const EngineFormCheck& c : report->function_checks) {
     const std::string label = std::string(to_string(c.target)) + " on " + c.backend;
     EXPECT_TRUE(c.pass) << "function form, " << label << ": " << c.error << " max error "
                         << c.comparison.max_abs_error << ", " << c.comparison.over_tolerance
@@ -118,6 +118,26 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
     }
   }
   EXPECT_EQ(drawn.size(), function.size() + (function.empty() ? 0 : 2));
+  // The deferred pass, where the variant has one, over the camera's depth:
+  // every target on Vulkan, and GLSL on the driver.
+  std::set<std::pair<Target, std::string>> masked;
+  for (const EngineFormCheck& c : report->deferred_checks) {
+    const std::string label = std::string(to_string(c.target)) + " on " + c.backend;
+    EXPECT_TRUE(c.pass) << "deferred pass, " << label << ": " << c.error << " max error "
+                        << c.comparison.max_abs_error << ", " << c.comparison.over_tolerance
+                        << " pixels over, " << c.comparison.ambiguous
+                        << " ambiguous; camera agreement " << c.camera_agreement;
+    masked.emplace(c.target, c.backend);
+  }
+  const LibraryVariant& entry = (*built)->library().variants.at(0);
+  const bool deferred = entry.reflection.contains(PassKind::deferred);
+  EXPECT_EQ(deferred, !function.empty()) << "the deferred pass goes with the function form";
+  if (deferred) {
+    for (Target target : entry.variant.targets) {
+      EXPECT_TRUE(masked.contains({target, "vulkan"})) << to_string(target);
+    }
+  }
+  EXPECT_EQ(masked.size(), deferred ? entry.variant.targets.size() + 2 : 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Default, VariantConformance, ::testing::ValuesIn(default_variant_names()),

@@ -6,6 +6,7 @@
 // scene's map is drawn once per runtime.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -83,14 +84,30 @@ TEST(Direct3DRuntimes, EveryDefaultVariantMatchesTheReferenceOnItsRuntime) {
   }
   // Every function form inside an engine's own HLSL, compiled to bytecode,
   // loaded by its target's runtime and drawn over the report's stage.
-  std::size_t function_forms = 0;
+  std::size_t function_forms = 0, deferred_passes = 0;
   for (const LibraryVariant& entry : (*built)->library().variants) {
     function_forms += entry.function.size();
+    if (const auto deferred = entry.reflection.find(PassKind::deferred);
+        deferred != entry.reflection.end()) {
+      deferred_passes += std::ranges::count_if(deferred->second, [](const auto& by_target) {
+        return kRuntimes.contains(by_target.first);
+      });
+    }
   }
   EXPECT_EQ(report->function_checks.size(), function_forms);
-  for (const FunctionFormCheck& c : report->function_checks) {
+  for (const EngineFormCheck& c : report->function_checks) {
     EXPECT_EQ(c.backend, kRuntimes.at(c.target));
     EXPECT_TRUE(c.pass) << "function form of " << c.variant << " [" << to_string(c.target) << " on "
+                        << c.backend << "]: " << c.error << " max error "
+                        << c.comparison.max_abs_error << ", " << c.comparison.over_tolerance
+                        << " pixels over; camera agreement " << c.camera_agreement;
+  }
+  // Every deferred pass's bytecode on its target's runtime, over the
+  // camera's depth of the report's stage.
+  EXPECT_EQ(report->deferred_checks.size(), deferred_passes);
+  for (const EngineFormCheck& c : report->deferred_checks) {
+    EXPECT_EQ(c.backend, kRuntimes.at(c.target));
+    EXPECT_TRUE(c.pass) << "deferred pass of " << c.variant << " [" << to_string(c.target) << " on "
                         << c.backend << "]: " << c.error << " max error "
                         << c.comparison.max_abs_error << ", " << c.comparison.over_tolerance
                         << " pixels over; camera agreement " << c.camera_agreement;

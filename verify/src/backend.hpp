@@ -63,6 +63,18 @@ struct SurfaceDraw {
   int height = 0;
 };
 
+// An engine's deferred pass over its camera's depth of the report's stage
+// (deferred_mask.cpp): the variant, its pass's files, the camera's depth
+// buffer as stored (one channel, the picture's size, row 0 first) and the
+// parameters with the pass's matrices.
+struct DeferredDraw {
+  const Library* library = nullptr;
+  const LibraryVariant* entry = nullptr;
+  Target target = Target::glsl450;
+  FloatImage camera_depth;
+  ParamBlock params;
+};
+
 // What a backend drew: (x, y, visibility, w) per pixel, row 0 first, and
 // the map it drew itself where it does not read the scene's (Wine's
 // runtimes draw their own), as stored.
@@ -114,19 +126,35 @@ class Backend {
     return make_error(Error::Kind::internal, draw.where,
                       "the " + name() + " path draws no surfaces");
   }
+
+  // `draw`'s deferred pass on `fixture`'s map, or on one of its own, as
+  // the query of the picture: on every target this path executes.
+  virtual Result<SceneOutput> run_deferred(const DeferredDraw& draw, const SceneFixture& fixture,
+                                           Execution& execution) = 0;
 };
 
 // `entry`'s function form for `target` drawn on `backend`, the scene's map
 // drawn on `engine` by the target's depth pass (function_form.cpp).
-Result<FunctionFormCheck> check_function_form(Engine& engine, Backend& backend,
-                                              const Library& library, const LibraryVariant& entry,
-                                              Target target);
+Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
+                                            const Library& library, const LibraryVariant& entry,
+                                            Target target);
 
 // `entry`'s query (or screen_blur's four passes), each loaded by `load`,
 // run on `engine` over the maps (and min-max mips) the scenes hold: the
 // paths that execute on the Vulkan engine (vulkan_backend.cpp).
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
+
+// `entry`'s deferred pass for `target` run on `backend`, the scene's map
+// drawn on `engine` by the target's depth pass (deferred_mask.cpp).
+Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
+                                            const Library& library, const LibraryVariant& entry,
+                                            Target target);
+
+// `draw` on `engine` over `fixture`'s map with `program`, the deferred pass
+// loaded for the Vulkan engine (the paths that run on it).
+Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
+                                       const SceneFixture& fixture, const PassProgram& program);
 
 // One of the engine's stages of `draw` (its text, and a name for errors)
 // compiled for the Vulkan engine: by the target's glslang front end, or to

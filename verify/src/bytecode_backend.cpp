@@ -55,6 +55,15 @@ class BytecodeBackend final : public Backend {
         });
   }
 
+  Result<SceneOutput> run_deferred(const DeferredDraw& draw, const SceneFixture& fixture,
+                                   Execution& execution) override {
+    PENUMBRA_TRY_ASSIGN(ExecutableProgram loaded,
+                        load_bytecode_executable(*draw.library, *draw.entry, PassKind::deferred,
+                                                 draw.target, translator_));
+    execution = std::move(loaded.execution);
+    return deferred_on_engine(engine_, draw, fixture, loaded.program);
+  }
+
  private:
   Engine& engine_;
   BytecodeTranslator translator_;

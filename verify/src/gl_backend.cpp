@@ -32,6 +32,10 @@ class MissingGlBackend final : public Backend {
                             Target /*target*/, const TargetScenes& /*scenes*/) override {
     return make_error(Error::Kind::device, entry.variant.name, why_);
   }
+  Result<SceneOutput> run_deferred(const DeferredDraw& draw, const SceneFixture& /*fixture*/,
+                                   Execution& /*execution*/) override {
+    return make_error(Error::Kind::device, draw.entry->variant.name, why_);
+  }
 
  private:
   std::string why_;
@@ -158,6 +162,21 @@ class GlBackend final : public Backend {
         engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
                              fixture.normalized_depth, draw.width, draw.height, fixture.params));
     return SurfacePicture{std::move(clip), nullptr};
+  }
+
+  Result<SceneOutput> run_deferred(const DeferredDraw& draw, const SceneFixture& fixture,
+                                   Execution& out) override {
+    out = execution();
+    PENUMBRA_TRY_ASSIGN(const GlPassTexts texts,
+                        read_pass(*draw.library, *draw.entry, PassKind::deferred, draw.target));
+    PENUMBRA_TRY_ASSIGN(auto output, engine_->run_deferred(pass(texts), fixture.normalized_depth,
+                                                           draw.camera_depth, draw.params));
+    return SceneOutput{std::move(output.visibility),
+                       std::move(output.texel_reads),
+                       std::nullopt,
+                       nullptr,
+                       nullptr,
+                       std::nullopt};
   }
 
  private:

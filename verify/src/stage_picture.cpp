@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace penumbra {
@@ -43,6 +44,21 @@ double camera_agreement(const reference::StageView& view, const FloatImage& gpu)
     }
   }
   return surfaces ? double(agreeing) / double(surfaces) : 0.0;
+}
+
+// The reference at `receivers` on `map`.
+Result<reference::ReferenceImage> reference_at(const Variant& variant, const EngineMap& map,
+                                               const reference::LightParams& light,
+                                               const FloatImage& receivers,
+                                               const reference::SamplingPrecision& precision,
+                                               const reference::ShaderLimits& limits) {
+  if (map.encoded) {
+    return reference::evaluate_image(variant, map.stored, *map.encoded, light, receivers, precision,
+                                     limits);
+  }
+  FloatImage linear = map.stored;
+  for (float& d : linear.data) d = float(d / map.depth_scale);  // exact: a power of two
+  return reference::evaluate_image(variant, linear, light, receivers, precision, limits);
 }
 
 }  // namespace
@@ -94,16 +110,20 @@ Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
-    const reference::ShaderLimits& limits) {
-  reference::ReferenceImage expected;
-  if (map.encoded) {
-    PENUMBRA_TRY_ASSIGN(expected, reference::evaluate_image(variant, map.stored, *map.encoded,
-                                                            light, receivers, precision, limits));
-  } else {
-    FloatImage linear = map.stored;
-    for (float& d : linear.data) d = float(d / map.depth_scale);  // exact: a power of two
-    PENUMBRA_TRY_ASSIGN(
-        expected, reference::evaluate_image(variant, linear, light, receivers, precision, limits));
+    const reference::ShaderLimits& limits, std::span<const FloatImage> rounded) {
+  PENUMBRA_TRY_ASSIGN(reference::ReferenceImage expected,
+                      reference_at(variant, map, light, receivers, precision, limits));
+  for (const FloatImage& alternative : rounded) {
+    PENUMBRA_TRY_ASSIGN(const reference::ReferenceImage other,
+                        reference_at(variant, map, light, alternative, precision, limits));
+    const double half_tolerance = 0.5 * reference::tolerance(variant.technique, precision);
+    for (std::size_t k = 0; k < expected.visibility.data.size(); ++k) {
+      const double apart = std::abs(double(expected.visibility.data[k]) - other.visibility.data[k]);
+      const auto reasons =
+          reference::Ambiguity(std::uint16_t(expected.ambiguous.data[k])) |
+          reference::ambiguous_if(apart > half_tolerance, reference::Ambiguity::receiver_rounding);
+      expected.ambiguous.data[k] = float(std::uint16_t(reasons));
+    }
   }
   StagePictureCheck check;
   check.camera_agreement = camera_agreement(view, receivers);
@@ -116,6 +136,7 @@ Result<StagePictureCheck> check_stage_picture(
     ambiguous.data[k] = expected.ambiguous.data[inside[k]];
   }
   check.surface_pixels = inside.size();
+
   PENUMBRA_TRY_ASSIGN(check.comparison,
                       reference::compare(gpu, reference, ambiguous,
                                          reference::tolerance(variant.technique, precision)));

@@ -29,7 +29,7 @@ nlohmann::json minmax_json(const MinmaxCheck& c) {
   return out;
 }
 
-nlohmann::json function_json(const FunctionFormCheck& c) {
+nlohmann::json function_json(const EngineFormCheck& c) {
   nlohmann::json out = {{"variant", c.variant},
                         {"target", to_string(c.target)},
                         {"backend", c.backend},
@@ -119,8 +119,11 @@ nlohmann::json to_json(const VerifyReport& report, const Library& library) {
   for (const MinmaxCheck& c : report.minmax_checks) minmax.push_back(minmax_json(c));
   out["minmax_mip"] = minmax;
   nlohmann::json function = nlohmann::json::array();
-  for (const FunctionFormCheck& c : report.function_checks) function.push_back(function_json(c));
+  for (const EngineFormCheck& c : report.function_checks) function.push_back(function_json(c));
   out["function_form"] = function;
+  nlohmann::json deferred = nlohmann::json::array();
+  for (const EngineFormCheck& c : report.deferred_checks) deferred.push_back(function_json(c));
+  out["deferred_mask"] = deferred;
   nlohmann::json variants = nlohmann::json::array();
   for (const VariantRun& v : report.variants) {
     nlohmann::json runs = nlohmann::json::array();

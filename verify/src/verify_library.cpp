@@ -34,13 +34,15 @@ struct Context {
   std::map<MapKey, Error> broken_targets;
 };
 
-// `entry`'s function form for `target` on `backend`; one that cannot run
-// fails with why.
-FunctionFormCheck run_function_form(Context& ctx, Backend& backend, const LibraryVariant& entry,
-                                    Target target) {
+// `entry`'s function form or deferred pass (`check`) for `target` on
+// `backend`; one that cannot run fails with why.
+using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, const Library&,
+                                                      const LibraryVariant&, Target);
+EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend& backend,
+                                const LibraryVariant& entry, Target target) {
   const auto start = Clock::now();
-  auto check = check_function_form(ctx.engine, backend, ctx.library, entry, target);
-  FunctionFormCheck out = check ? std::move(*check) : FunctionFormCheck{};
+  auto check = checker(ctx.engine, backend, ctx.library, entry, target);
+  EngineFormCheck out = check ? std::move(*check) : EngineFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
     out.target = target;
@@ -223,8 +225,9 @@ bool VerifyReport::pass() const {
                                     [](const DepthCheck& c) { return c.pass; });
   const bool minmax_ok = std::all_of(minmax_checks.begin(), minmax_checks.end(),
                                      [](const MinmaxCheck& c) { return c.pass; });
-  const bool function_ok = std::all_of(function_checks.begin(), function_checks.end(),
-                                       [](const FunctionFormCheck& c) { return c.pass; });
+  const auto passed = [](const EngineFormCheck& c) { return c.pass; };
+  const bool function_ok = std::all_of(function_checks.begin(), function_checks.end(), passed) &&
+                           std::all_of(deferred_checks.begin(), deferred_checks.end(), passed);
   return depth_ok && minmax_ok && function_ok && failed == 0 && (runs > 0 || shard.count > 1);
 }
 
@@ -318,7 +321,17 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
               !backend->missing().empty() || !wanted(options.paths, backend->name())) {
             continue;
           }
-          report.function_checks.push_back(run_function_form(ctx, *backend, entry, target));
+          report.function_checks.push_back(
+              run_engine_form(ctx, check_function_form, *backend, entry, target));
+        }
+        for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+          if (!runs_pass(PassKind::deferred, entry.variant) || !backend->executes(target) ||
+              !backend->missing().empty() || !backend->not_executed(entry, target).empty() ||
+              !wanted(options.paths, backend->name())) {
+            continue;
+          }
+          report.deferred_checks.push_back(
+              run_engine_form(ctx, check_deferred_mask, *backend, entry, target));
         }
         target_runs->unchecked = scenes.scenes.size();
         for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {

@@ -40,6 +40,14 @@ class VulkanBackend final : public Backend {
         });
   }
 
+  Result<SceneOutput> run_deferred(const DeferredDraw& draw, const SceneFixture& fixture,
+                                   Execution& execution) override {
+    PENUMBRA_TRY_ASSIGN(ExecutableProgram loaded, load_executable(*draw.library, *draw.entry,
+                                                                  PassKind::deferred, draw.target));
+    execution = std::move(loaded.execution);
+    return deferred_on_engine(engine_, draw, fixture, loaded.program);
+  }
+
  private:
   Engine& engine_;
 };
@@ -78,6 +86,18 @@ Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw
   PENUMBRA_TRY_ASSIGN(FloatImage clip, engine.run_surface(program, draw.triangles, *fixture.map,
                                                           draw.width, draw.height, fixture.params));
   return SurfacePicture{std::move(clip), nullptr};
+}
+
+Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
+                                       const SceneFixture& fixture, const PassProgram& program) {
+  PENUMBRA_TRY_ASSIGN(QueryOutput gpu,
+                      engine.run_deferred(program, *fixture.map, draw.camera_depth, draw.params));
+  return SceneOutput{std::move(gpu.visibility),
+                     std::move(gpu.texel_reads),
+                     std::nullopt,
+                     nullptr,
+                     nullptr,
+                     std::nullopt};
 }
 
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,

@@ -171,6 +171,26 @@ class WineBackend final : public Backend {
     return SurfacePicture{std::move(clip), drawn->stored};
   }
 
+  Result<SceneOutput> run_deferred(const DeferredDraw& draw, const SceneFixture& fixture,
+                                   Execution& execution) override {
+    PENUMBRA_TRY(start());
+    const auto pass = [&](PassKind kind) {
+      return bytecode_pass(*draw.library, *draw.entry, kind, draw.target);
+    };
+    PENUMBRA_TRY_ASSIGN(const D3dPass depth, pass(PassKind::depth));
+    PENUMBRA_TRY_ASSIGN(const D3dPass deferred, pass(PassKind::deferred));
+    PENUMBRA_TRY_ASSIGN(RuntimeMap * drawn, map_of(depth, fixture));
+    execution = {"the " + name() + " runtime (Wine) loading the bytecode", {}};
+    PENUMBRA_TRY_ASSIGN(
+        auto output, engine_->run_deferred(deferred, drawn->map, draw.camera_depth, draw.params));
+    return SceneOutput{std::move(output.visibility),
+                       std::move(output.texel_reads),
+                       std::nullopt,
+                       drawn->stored,
+                       drawn->linear,
+                       std::nullopt};
+  }
+
  private:
   Status start() {
     if (engine_) return {};

@@ -75,14 +75,16 @@ Result<std::string> dx9_explicit_registers(const std::string& hlsl, std::string_
   if (!constants) return constants.error();
   // SPIRV-Cross declares its half-pixel constant without a register. FXC
   // would pick a free one, and other HLSL compilers (glslang) pack it at c0,
-  // on top of the block: pin it where the reflection says it is.
+  // on top of the block: pin it where the reflection says it is. Only
+  // vertex shaders declare it; pixel shaders have a register file of their
+  // own, which the deferred pass fills past it.
+  static const std::regex half_pixel_decl(R"(uniform float4 gl_HalfPixel;)");
   const int half_pixel = static_cast<int>(half_pixel_register());
-  if (next_register > half_pixel) {
+  if (next_register > half_pixel && std::regex_search(*constants, half_pixel_decl)) {
     return fail("the constants reach c" + std::to_string(next_register - 1) + ", past c" +
                 std::to_string(half_pixel - 1) + "; gl_HalfPixel is pinned at c" +
                 std::to_string(half_pixel));
   }
-  static const std::regex half_pixel_decl(R"(uniform float4 gl_HalfPixel;)");
   const std::string pinned = std::regex_replace(
       *constants, half_pixel_decl,
       "uniform float4 gl_HalfPixel : register(c" + std::to_string(half_pixel) + ");");

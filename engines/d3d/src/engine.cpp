@@ -303,6 +303,33 @@ Result<D3dQueryOutput> D3dEngine::run_query(const D3dQueryPasses& passes, const 
   return D3dQueryOutput{channel(texels, 0), channel(texels, 1)};
 }
 
+Result<D3dQueryOutput> D3dEngine::run_deferred(const D3dPass& deferred, const D3dMap& map,
+                                               const FloatImage& camera_depth,
+                                               const ParamBlock& params) {
+  PENUMBRA_TRY(check_normalized_depth(camera_depth));
+  Job job(*this);
+  auto format = pass_target(runtime_, deferred, "the deferred pass");
+  if (!format) return format.error();
+  const int width = camera_depth.width;
+  const int height = camera_depth.height;
+  const int camera = job.texture(api_format(api_target(runtime_), TextureFormat::r32_float), width,
+                                 height, 1, "input");
+  job.upload(camera, 0, camera_depth.data);
+  const std::vector<float> triangle(kFullScreenTriangle.begin(), kFullScreenTriangle.end());
+  const PassTextures textures{{TextureId::shadow_depth, map.id},
+                              {TextureId::shadow_cmp, map.id},
+                              {TextureId::camera_depth, camera}};
+  ParamBlock screen_params = params;
+  screen_params["screen_size"] = size_vec4(width, height);
+  const int output = job.texture(format->format, width, height, 1, "target");
+  PENUMBRA_TRY(d3d::draw_pass(job, deferred, "the deferred pass", textures, screen_params,
+                              whole(output, width, height), {job.vertices(triangle), 3}));
+  const std::size_t read = job.read(output, 0, width, height, format->channels);
+  PENUMBRA_TRY(job.run());
+  const FloatImage texels = job.take(read);
+  return D3dQueryOutput{channel(texels, 0), channel(texels, 1)};
+}
+
 Result<D3dScreenBlurOutput> D3dEngine::run_screen_blur(const D3dScreenBlurPasses& passes,
                                                        const D3dMap& map,
                                                        const FloatImage& receivers,

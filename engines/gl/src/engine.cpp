@@ -58,6 +58,15 @@ Result<GlQueryOutput> GlEngine::run_query(const GlQueryPasses& passes,
   return gl::run_query_pass(passes, {normalized_depth, receivers, params});
 }
 
+Result<GlQueryOutput> GlEngine::run_deferred(const GlPass& deferred,
+                                             const FloatImage& normalized_depth,
+                                             const FloatImage& camera_depth,
+                                             const ParamBlock& params) {
+  auto current = context_->egl.make_current();
+  if (!current) return current.error();
+  return gl::run_deferred_pass(deferred, normalized_depth, camera_depth, params);
+}
+
 Result<FloatImage> GlEngine::run_surface(const GlPass& surface,
                                          std::span<const std::array<float, 3>> triangles,
                                          const FloatImage& normalized_depth, int width, int height,

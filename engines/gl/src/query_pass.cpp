@@ -61,4 +61,28 @@ Result<GlQueryOutput> run_query_pass(const GlQueryPasses& passes, const QueryInp
   return GlQueryOutput{channel(*output, 0), channel(*output, 1)};
 }
 
+Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& normalized_depth,
+                                        const FloatImage& camera_depth, const ParamBlock& params) {
+  PENUMBRA_TRY(check_shadow_map(normalized_depth));
+  PENUMBRA_TRY(check_shadow_map(camera_depth));
+  auto deferred = prepare_pass(pass, PassKind::deferred);
+  if (!deferred) return deferred.error();
+  PassInputs inputs;
+  inputs.give(TextureId::shadow_depth, normalized_depth);
+  inputs.give(TextureId::shadow_cmp, normalized_depth);
+  // Uploaded in the binding's format: a depth texture, as the engine's
+  // camera drew it.
+  inputs.give(TextureId::camera_depth, camera_depth);
+  const int width = camera_depth.width;
+  const int height = camera_depth.height;
+  const std::string what = "the " + deferred->where;
+  auto target = create_pass_target(*deferred, width, height, "the target of " + what);
+  if (!target) return target.error();
+  PENUMBRA_TRY(draw_full_screen(*deferred, params, inputs, {*target, width, height}, what));
+  auto output = read_texture(*target, *deferred->target_format, 0, width, height,
+                             "the deferred pass's target");
+  if (!output) return output.error();
+  return GlQueryOutput{channel(*output, 0), channel(*output, 1)};
+}
+
 }  // namespace penumbra::gl

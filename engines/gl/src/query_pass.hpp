@@ -1,5 +1,6 @@
 // The query pass on the current context, after the min-max mip when the
-// query reads it: from GLSL text and images to the query's target.
+// query reads it, and the deferred pass, which reads a camera's depth in
+// the receivers' place: from GLSL text and images to the pass's target.
 #pragma once
 
 #include <optional>
@@ -35,5 +36,10 @@ Result<Texture> draw_query(const PassProgram& query, const std::optional<GlMinma
 // See GlEngine::run_query. Every object it creates is deleted before it
 // returns.
 Result<GlQueryOutput> run_query_pass(const GlQueryPasses& passes, const QueryInputs& images);
+
+// See GlEngine::run_deferred. Every object it creates is deleted before it
+// returns.
+Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& normalized_depth,
+                                        const FloatImage& camera_depth, const ParamBlock& params);
 
 }  // namespace penumbra::gl

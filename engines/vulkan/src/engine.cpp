@@ -97,6 +97,14 @@ Result<QueryOutput> Engine::run_query_output(const PassProgram& query, const Sha
   });
 }
 
+Result<QueryOutput> Engine::run_deferred(const PassProgram& deferred, const ShadowMap& map,
+                                         const FloatImage& camera_depth, const ParamBlock& params) {
+  return detail::run_validated(*context_->validation, [&]() -> Result<QueryOutput> {
+    PENUMBRA_TRY(check_owner(*map.images_, *context_));
+    return detail::run_deferred(*context_, deferred, *map.images_, camera_depth, params);
+  });
+}
+
 Result<FloatImage> Engine::run_surface(const PassProgram& surface,
                                        std::span<const std::array<float, 3>> triangles,
                                        const ShadowMap& map, int width, int height,

@@ -1,5 +1,6 @@
 #include "query_pass.hpp"
 
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -9,6 +10,7 @@
 #include "penumbra/support/full_screen_triangle.hpp"
 #include "penumbra/support/image_checks.hpp"
 #include "reflection_binding.hpp"
+#include "shadow_map_transfer.hpp"
 
 namespace penumbra::detail {
 
@@ -28,37 +30,38 @@ Result<vk::Image> upload_receivers(Context& context, const FloatImage& receivers
   return std::move(*image);
 }
 
-Result<QueryOutput> run_query(Context& context, const PassProgram& program,
-                              const ShadowMapImages& map, const FloatImage& receivers,
-                              const ParamBlock& params) {
+namespace {
+
+// `program` over one full-screen triangle into a width x height
+// R32G32_SFLOAT target, reading the map and what `offer` adds: the query
+// and the deferred pass differ only in their per-pixel input.
+Result<QueryOutput> draw_visibility(Context& context, const PassProgram& program,
+                                    const ShadowMapImages& map, int width, int height,
+                                    const ParamBlock& params, const char* what,
+                                    const std::function<void(PassResources&)>& offer) {
   // Said here rather than as "nothing to bind": the map could have one.
   if (!map.minmax && reads_texture(program.reflection, TextureId::shadow_minmax)) {
-    return make_error(Error::Kind::bad_input, "query pass",
+    return make_error(Error::Kind::bad_input, what,
                       "the program reads shadow_minmax, the shadow map's min-max mip, but this " +
                           std::to_string(map.colour.desc().width) + "x" +
                           std::to_string(map.colour.desc().height) +
                           " map has none; build it first (Engine::build_minmax with the "
                           "variant's minmax_init and minmax_reduce passes)");
   }
-  auto receivers_image = upload_receivers(context, receivers);
-  if (!receivers_image) return receivers_image.error();
-  const auto width = static_cast<std::uint32_t>(receivers.width);
-  const auto height = static_cast<std::uint32_t>(receivers.height);
-  auto visibility =
-      vk::Image::create(*context.device,
-                        {width, height, kVisibilityFormat,
-                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                         VK_IMAGE_ASPECT_COLOR_BIT},
-                        "the visibility image");
+  auto visibility = vk::Image::create(
+      *context.device,
+      {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), kVisibilityFormat,
+       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+       VK_IMAGE_ASPECT_COLOR_BIT},
+      "the visibility image");
   if (!visibility) return visibility.error();
 
   PassDraw draw;
   draw.program = &program;
-  draw.shape = {"query pass", kVisibilityTarget, kQueryPositionFormat, 2, false, false};
+  draw.shape = {what, kVisibilityTarget, kQueryPositionFormat, 2, false, false};
   draw.resources.params = &params;
   draw.resources.offer_map(map, /*comparison=*/true);
-  draw.resources.offer(TextureId::receivers, *receivers_image,
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  offer(draw.resources);
   draw.positions = kFullScreenTriangle;
   draw.target.colour = &*visibility;
   draw.target.colour_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
@@ -72,13 +75,42 @@ Result<QueryOutput> run_query(Context& context, const PassProgram& program,
   auto texels = read_image(*context.device, *context.commands, *visibility,
                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, 2, "the visibility image");
   if (!texels) return texels.error();
-  output.visibility = FloatImage(receivers.width, receivers.height, 1);
-  output.texel_reads = FloatImage(receivers.width, receivers.height, 1);
+  output.visibility = FloatImage(width, height, 1);
+  output.texel_reads = FloatImage(width, height, 1);
   for (std::size_t p = 0; p < output.visibility.pixel_count(); ++p) {
     output.visibility.data[p] = (*texels)[2 * p];
     output.texel_reads.data[p] = (*texels)[2 * p + 1];
   }
   return output;
+}
+
+}  // namespace
+
+Result<QueryOutput> run_query(Context& context, const PassProgram& program,
+                              const ShadowMapImages& map, const FloatImage& receivers,
+                              const ParamBlock& params) {
+  auto receivers_image = upload_receivers(context, receivers);
+  if (!receivers_image) return receivers_image.error();
+  return draw_visibility(context, program, map, receivers.width, receivers.height, params,
+                         "query pass", [&](PassResources& resources) {
+                           resources.offer(TextureId::receivers, *receivers_image,
+                                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                         });
+}
+
+Result<QueryOutput> run_deferred(Context& context, const PassProgram& program,
+                                 const ShadowMapImages& map, const FloatImage& camera_depth,
+                                 const ParamBlock& params) {
+  // Images like the map's, written from the host as an engine's depth pass
+  // would have: a depth image, and the R32F twin a Direct3D 9 engine draws.
+  auto camera = upload_shadow_map(context, camera_depth);
+  if (!camera) return camera.error();
+  return draw_visibility(
+      context, program, map, camera_depth.width, camera_depth.height, params, "deferred pass",
+      [&](PassResources& resources) {
+        resources.offer(TextureId::camera_depth, (*camera)->depth, kMapDepthLayout);
+        resources.offer(TextureId::camera_depth, (*camera)->colour, kMapColourLayout);
+      });
 }
 
 }  // namespace penumbra::detail

@@ -1,5 +1,6 @@
 // The query pass: a full-screen program reading receivers and the shadow map
-// (and its min-max mip, when built).
+// (and its min-max mip, when built); and the deferred pass, which reads a
+// camera's depth in the receivers' place.
 #pragma once
 
 #include "context.hpp"
@@ -17,5 +18,10 @@ Result<vk::Image> upload_receivers(Context& context, const FloatImage& receivers
 Result<QueryOutput> run_query(Context& context, const PassProgram& program,
                               const ShadowMapImages& map, const FloatImage& receivers,
                               const ParamBlock& params);
+
+// See Engine::run_deferred.
+Result<QueryOutput> run_deferred(Context& context, const PassProgram& program,
+                                 const ShadowMapImages& map, const FloatImage& camera_depth,
+                                 const ParamBlock& params);
 
 }  // namespace penumbra::detail

@@ -16,10 +16,13 @@ enum class PassKind {
   blur_h,         // screen_blur: horizontal Gaussian blur of the factor buffer
   blur_v,         // screen_blur: vertical Gaussian blur
   composite,      // screen_blur: a scene colour times the blurred factor
+  // The deferred mask: the query's visibility at receivers rebuilt from an
+  // engine's camera depth buffer and matrices, in the query's place.
+  deferred,
 };
 inline constexpr std::array kAllPassKinds = {
     PassKind::depth,  PassKind::minmax_init, PassKind::minmax_reduce, PassKind::query,
-    PassKind::blur_h, PassKind::blur_v,      PassKind::composite};
+    PassKind::blur_h, PassKind::blur_v,      PassKind::composite,     PassKind::deferred};
 std::string_view to_string(PassKind pass);
 std::optional<PassKind> parse_pass(std::string_view name);
 

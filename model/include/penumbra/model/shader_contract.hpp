@@ -60,6 +60,7 @@ enum class TextureId {
   scene_colour,   // screen_blur's scene colour
   pcf_disk,       // the PCF disk's points, where the target reads them from a texture
   blocker_disk,   // the blocker-search disk's points, likewise
+  camera_depth,   // the deferred pass: the engine's camera depth buffer, point reads
 };
 
 struct TextureDescription {
@@ -116,6 +117,11 @@ struct ParamMember {
   std::string_view content;  // "W, H, 1/W, 1/H"
 };
 std::span<const ParamMember> param_members();
+// What the deferred pass's ShadowParams declares after param_members(): the
+// camera's and the light's matrices, column by column, and how to read the
+// camera's depth (docs/deferred-mask.md). The block's other passes end
+// before them, so their layout is the same in every pass.
+std::span<const ParamMember> deferred_param_members();
 inline constexpr std::uint32_t kParamMemberSize = 16;  // bytes: one vec4
 
 // Direct3D 9 vertex shaders: SPIRV-Cross's half-pixel constant, which the
@@ -156,7 +162,8 @@ struct PassDescription {
 const PassDescription& describe(PassKind pass);
 
 // A technique: its name, the keys that select its variants, the passes it
-// runs, in order, whether it reads the min-max mip and whether its shader needs
+// runs, in order (`deferred`, where listed, runs in the query's place, not
+// after it), whether it reads the min-max mip and whether its shader needs
 // integer bit operations. Its CPU reference is reference/'s evaluate().
 struct TechniqueDescription {
   Technique technique;
@@ -183,8 +190,8 @@ bool can_emit(const Variant& variant, Target target);
 // True when `variant`'s technique runs `pass`.
 bool runs_pass(PassKind pass, const Variant& variant);
 
-// Whether `technique` has a function form (docs/function-form.md): it runs
-// the depth and query passes only, so its query reads nothing an engine's
+// Whether `technique` has a function form (docs/function-form.md) and a
+// deferred pass (docs/deferred-mask.md): its query reads nothing an engine's
 // own shadow map does not give it (no min-max mip, no blur passes).
 bool has_function_form(Technique technique);
 

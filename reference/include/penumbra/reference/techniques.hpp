@@ -83,6 +83,10 @@ enum class Ambiguity : std::uint16_t {
   // compare it either way, and the two ways differ by more than half the
   // tolerance.
   depth_tie = 256,
+  // A receiver the GPU rebuilt in float32 (the deferred pass, from a
+  // camera's depth): its float32 rebuilding moves the result by more than
+  // half the tolerance.
+  receiver_rounding = 512,
 };
 
 constexpr Ambiguity operator|(Ambiguity a, Ambiguity b) {
@@ -108,6 +112,7 @@ inline constexpr AmbiguityReason kAmbiguityReasons[] = {
     {Ambiguity::depth_slope, "receiver_plane's depth slopes disagree"},
     {Ambiguity::area_edges, "backprojection's patch edges may move the area too far"},
     {Ambiguity::depth_tie, "an encoded map's texel at the receiver's depth"},
+    {Ambiguity::receiver_rounding, "a rebuilt receiver's float32 rounding moves the result"},
 };
 
 // `reason` where `marked`, else none.

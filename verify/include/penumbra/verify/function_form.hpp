@@ -1,8 +1,9 @@
-// A variant's function form executed as an engine's own shaders call it
-// (docs/function-form.md): the report's stage drawn from its camera by an
-// engine-like vertex and fragment stage of the target's language, the
-// fragment calling penumbra_visibility() with the light clip-space position,
-// checked against the CPU reference on the receivers the GPU interpolated.
+// A variant's engine forms executed as an engine uses them: the function
+// form (docs/function-form.md), called by an engine-like vertex and
+// fragment stage of the target's language that draw the report's stage
+// from its camera, and the deferred pass (docs/deferred-mask.md), run over
+// the camera's depth of that stage. Each is checked against the CPU
+// reference on the receivers the GPU derived.
 #pragma once
 
 #include "penumbra/compiler/library.hpp"
@@ -13,16 +14,17 @@
 
 namespace penumbra {
 
-struct FunctionFormCheck {
+struct EngineFormCheck {
   std::string variant;
   Target target = Target::glsl450;
   std::string backend = "vulkan";  // the path that ran it (verify.json's backend)
-  Execution execution;             // the front end that compiled the engine's shaders
+  Execution execution;             // how the shaders reached the device
   std::string error;               // why it could not run (verify_library's checks)
   // The visibility against the reference evaluated on the receivers the
   // GPU called the function with (u, v and z_r from the clip position it
-  // wrote), on the map the target's depth pass drew: over the pixels whose
-  // 2x2 quad lies on one face of the stage (docs/function-form.md).
+  // wrote) or, for the deferred pass, rebuilt from the camera's depth as
+  // the pass does, on the map the target's depth pass drew: over the pixels
+  // whose 2x2 quad lies on one face of the stage.
   reference::Comparison comparison;
   std::size_t surface_pixels = 0;  // those pixels, compared or ambiguous
   // Of the pixels where the camera's ray cast hits a surface, the fraction
@@ -39,7 +41,16 @@ struct FunctionFormCheck {
 // pixel's light clip position and visibility. Errors: bad_input
 // when the library has no function form for `target`; a front end's or the
 // engine's error.
-Result<FunctionFormCheck> check_function_form(Engine& engine, const Library& library,
-                                              const LibraryVariant& entry, Target target);
+Result<EngineFormCheck> check_function_form(Engine& engine, const Library& library,
+                                            const LibraryVariant& entry, Target target);
+
+// `entry`'s deferred pass for `target` on `engine`: the map drawn by the
+// target's depth pass, the report's stage seen by its camera as a depth
+// buffer in `target`'s conventions (reversed-Z with a reversed-Z map), and
+// the pass rebuilding each pixel's receiver from it with the matrices in
+// ShadowParams. Errors: bad_input when the library has no deferred pass for
+// `target`; a front end's or the engine's error.
+Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& library,
+                                            const LibraryVariant& entry, Target target);
 
 }  // namespace penumbra

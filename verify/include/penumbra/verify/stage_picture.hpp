@@ -8,6 +8,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 
 #include "penumbra/model/model.hpp"
 #include "penumbra/reference/compare.hpp"
@@ -59,11 +60,15 @@ std::vector<std::size_t> face_pixels(const reference::Stage& stage,
 
 // `visibility` (channel `channel`), drawn by `variant`'s function form at
 // `receivers` (the view's size) on `map` under `light`, against the
-// reference. Errors: the reference's, for inputs it cannot evaluate.
+// reference. `rounded` holds the same receivers as float32 shaders may
+// compute them, where the GPU's own are not known exactly (the deferred
+// pass's): a pixel whose reference differs at one of them by over half the
+// tolerance is ambiguous. Errors: the reference's, for inputs it cannot
+// evaluate.
 Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
-    const reference::ShaderLimits& limits);
+    const reference::ShaderLimits& limits, std::span<const FloatImage> rounded = {});
 
 }  // namespace penumbra

@@ -135,9 +135,11 @@ struct VerifyReport {
   std::string gl_device;  // empty when the GL path did not run
   std::vector<DepthCheck> depth_checks;
   std::vector<MinmaxCheck> minmax_checks;  // for targets that ran a variant using the mip
-  // Each variant's function form per text target, on the Vulkan path
-  // (check_function_form()).
-  std::vector<FunctionFormCheck> function_checks;
+  // Each variant's function form per text target on every path that draws
+  // it (check_function_form()), and its deferred pass per target on every
+  // path that runs the target (check_deferred_mask()).
+  std::vector<EngineFormCheck> function_checks;
+  std::vector<EngineFormCheck> deferred_checks;
   std::vector<VariantRun> variants;
   std::size_t runs = 0;    // executed (variant, target, backend, scene) runs
   std::size_t failed = 0;  // of those, failed

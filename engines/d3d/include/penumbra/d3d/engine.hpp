@@ -138,6 +138,15 @@ class D3dEngine {
   Result<D3dQueryOutput> run_query(const D3dQueryPasses& passes, const D3dMap& map,
                                    const FloatImage& receivers, const ParamBlock& params);
 
+  // A deferred pass (docs/deferred-mask.md) on `map`, into a target of
+  // `camera_depth`'s size: `camera_depth` is one channel of the camera's
+  // depth as stored, row 0 first, uploaded as an R32 float texture (what a
+  // Direct3D 10/11 engine's typeless depth buffer's shader view reads, and
+  // what a Direct3D 9 engine draws its depth into). `params` holds the
+  // pass's matrices besides ShadowParams' members.
+  Result<D3dQueryOutput> run_deferred(const D3dPass& deferred, const D3dMap& map,
+                                      const FloatImage& camera_depth, const ParamBlock& params);
+
   // screen_blur's chain on `map`: the query, blur_h, blur_v and the
   // composite over `scene_colour` (RGBA, the receivers' size).
   Result<D3dScreenBlurOutput> run_screen_blur(const D3dScreenBlurPasses& passes, const D3dMap& map,

@@ -124,6 +124,15 @@ class GlEngine {
   Result<GlQueryOutput> run_query(const GlQueryPasses& passes, const FloatImage& normalized_depth,
                                   const FloatImage& receivers, const ParamBlock& params);
 
+  // Runs a deferred pass (docs/deferred-mask.md) as run_query runs a query,
+  // into a target of `camera_depth`'s size: `camera_depth` is one channel
+  // of the camera's depth buffer as stored, row 0 first, uploaded as a
+  // GL_DEPTH_COMPONENT32F texture. `params` holds the pass's matrices
+  // besides ShadowParams' members. Errors as run_query's, `where` "deferred
+  // pass".
+  Result<GlQueryOutput> run_deferred(const GlPass& deferred, const FloatImage& normalized_depth,
+                                     const FloatImage& camera_depth, const ParamBlock& params);
+
   // Builds the min-max mip of `normalized_depth` with `passes` and reads it
   // back: levels 1..N (index 0 is level 1, ceil(W/2) x ceil(H/2); level N is
   // 1x1; N = max(1, ceil(log2(max(W, H))))), two channels (min, max) each.

@@ -140,6 +140,14 @@ class Engine {
   Result<QueryOutput> run_query_output(const PassProgram& query, const ShadowMap& map,
                                        const FloatImage& receivers, const ParamBlock& params);
 
+  // Runs a deferred pass (docs/deferred-mask.md) as run_query_output runs
+  // a query, over a target of `camera_depth`'s size: `camera_depth`, one
+  // channel of the camera's depth buffer as stored, row 0 first, uploaded
+  // as a D32_SFLOAT image and read as camera_depth. `params` holds the
+  // pass's matrices besides ShadowParams' members.
+  Result<QueryOutput> run_deferred(const PassProgram& deferred, const ShadowMap& map,
+                                   const FloatImage& camera_depth, const ParamBlock& params);
+
   // Runs screen_blur's chain over the screen `receivers` describes, each
   // pass a full-screen triangle into a target of its own, the receivers'
   // size: the query into an R32G32_SFLOAT target (factor, texel reads);

@@ -1,0 +1,22 @@
+// A receiver from its position in the light's clip space, as the function
+// form and the deferred pass take it (docs/function-form.md).
+#ifndef PENUMBRA_LIGHT_CLIP_GLSL
+#define PENUMBRA_LIGHT_CLIP_GLSL
+
+#if defined(PENUMBRA_TARGET_HLSL_DX9) || defined(PENUMBRA_TARGET_HLSL_DX10) || \
+    defined(PENUMBRA_TARGET_HLSL_DX11)
+// Direct3D's viewport puts clip-space y = +1 in a target's row 0.
+#define PENUMBRA_CLIP_Y_TO_V (-0.5)
+#else
+#define PENUMBRA_CLIP_Y_TO_V 0.5
+#endif
+
+// The receiver as the query pass reads it: (u, v) from the light's clip
+// space, and its linear light-view z, which a perspective projection puts in
+// w whatever range it maps z to.
+vec3 clip_to_query(vec4 light_clip_position) {
+  vec2 ndc = light_clip_position.xy / light_clip_position.w;
+  return vec3(0.5 + 0.5 * ndc.x, 0.5 + PENUMBRA_CLIP_Y_TO_V * ndc.y, light_clip_position.w);
+}
+
+#endif
