@@ -72,10 +72,12 @@ TEST_F(CliBytecode, TheFlagNamesTheCompiler) {
       build("--hlsl-compiler '" + compiler->string() + "'", "PENUMBRA_HLSL_COMPILER=");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.err, Not(HasSubstr(kNoBytecode)));
-  // Per target: depth.vert, depth.frag, fullscreen.vert and query.frag.
-  EXPECT_THAT(run.out, HasSubstr("12 bytecode files"));
-  EXPECT_EQ(listed_bytecode(), 12u);
+  // Per target: depth.vert, depth.frag, fullscreen.vert, query.frag,
+  // deferred.vert and deferred.frag.
+  EXPECT_THAT(run.out, HasSubstr("18 bytecode files"));
+  EXPECT_EQ(listed_bytecode(), 18u);
   EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx9/hard/query.frag.d3dbc"));
+  EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx9/hard/deferred.frag.d3dbc"));
   EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx10/hard/query.frag.dxbc"));
   EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx11/hard/query.frag.dxbc"));
 }
@@ -86,7 +88,7 @@ TEST_F(CliBytecode, TheEnvironmentVariableNamesTheCompiler) {
   const CliRun run = build("", "PENUMBRA_HLSL_COMPILER='" + compiler->string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_THAT(run.err, Not(HasSubstr(kNoBytecode)));
-  EXPECT_EQ(listed_bytecode(), 12u);
+  EXPECT_EQ(listed_bytecode(), 18u);
 }
 
 TEST_F(CliBytecode, AMissingNamedCompilerIsAnError) {

@@ -148,10 +148,9 @@ TEST_P(FrontEndVariant, EveryTextTargetCompilesToVulkanSpirvWithItsInterface) {
       EXPECT_EQ(locations(vertex, kStorageOutput), locations(vars, kStorageInput));
     }
   }
-  // depth and query; the two min-max build passes or screen_blur's three.
-  const int passes = uses_minmax_mip(variant->technique)            ? 4
-                     : variant->technique == Technique::screen_blur ? 5
-                                                                    : 2;
+  // Every pass the technique lists: depth and query; the two min-max build
+  // passes, screen_blur's three or the deferred pass.
+  const int passes = static_cast<int>(describe(variant->technique).passes.size());
   const auto targets = std::ranges::count_if(
       text_targets(), [&](Target target) { return can_emit(*variant, target); });
   EXPECT_EQ(compiled, static_cast<int>(targets) * passes * 2);  // targets, passes, stages

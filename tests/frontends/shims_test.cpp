@@ -8,6 +8,7 @@
 #include "default_library.hpp"
 #include "emitted_texts.hpp"
 #include "glslang_ast.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -47,11 +48,10 @@ TEST(EsslVersionShim, LeavesGlslangsAstOfEveryEmittedTextUnchanged) {
   int checked = 0;
   int expected = 0;
   for (const Variant& variant : default_variants()) {
-    // Two stages of each pass: depth and query, and the min-max build passes
-    // or screen_blur's blur_h, blur_v and composite.
-    expected += uses_minmax_mip(variant.technique)            ? 8
-                : variant.technique == Technique::screen_blur ? 10
-                                                              : 4;
+    // Two stages of each pass the technique lists: depth and query, and the
+    // min-max build passes, screen_blur's blur_h, blur_v and composite, or
+    // the deferred pass.
+    expected += 2 * static_cast<int>(describe(variant.technique).passes.size());
     for (const EmittedStage& emitted : emitted_stages(variant, Target::essl300)) {
       const std::string& text = emitted.compiled.text;
       auto shimmed = essl300_version_as_310(text);

@@ -237,6 +237,7 @@ INSTANTIATE_TEST_SUITE_P(Golden, VariantFunctions, ::testing::ValuesIn(function_
 // runs its pass: every shared stage of the pass plan (depth, the full-screen
 // vertex shaders, the min-max build passes, composite).
 const char* shared_representative(PassKind pass) {
+  if (pass == PassKind::deferred) return "hard";
   return pass == PassKind::blur_h || pass == PassKind::blur_v || pass == PassKind::composite
              ? "screen_blur_r4"
              : "backprojection";

@@ -1,0 +1,98 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+layout(std140) uniform ShadowParams
+{
+    vec4 shadow_map_size;
+    vec4 light;
+    vec4 sampling;
+    vec4 screen_size;
+    vec4 source_size;
+    vec4 minmax_info;
+    vec4 camera_inverse_0;
+    vec4 camera_inverse_1;
+    vec4 camera_inverse_2;
+    vec4 camera_inverse_3;
+    vec4 light_view_proj_0;
+    vec4 light_view_proj_1;
+    vec4 light_view_proj_2;
+    vec4 light_view_proj_3;
+    vec4 camera_depth_range;
+} params;
+
+uniform highp sampler2DShadow shadow_cmp;
+uniform highp sampler2D camera_depth;
+
+in vec2 screen_uv;
+layout(location = 0) out vec4 visibility;
+float penumbra_texel_reads;
+
+vec3 clip_to_query(vec4 light_clip_position)
+{
+    vec2 ndc = light_clip_position.xy / vec2(light_clip_position.w);
+    return vec3(0.5 + (0.5 * ndc.x), 0.5 + (0.5 * ndc.y), light_clip_position.w);
+}
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params.sampling.y) * params.sampling.z;
+}
+
+float shadow_compare_bilinear(vec2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 4.0;
+    float param = z_receiver;
+    float reference = shadow_reference(param);
+    vec3 _72 = vec3(uv, reference);
+    return textureLod(shadow_cmp, vec3(_72.xy, _72.z), 0.0);
+}
+
+float shadow_visibility(vec3 query)
+{
+    float sum = 0.0;
+    for (int j = -1; j <= 1; j++)
+    {
+        for (int i = -1; i <= 1; i++)
+        {
+            vec2 param = query.xy + (vec2(float(i), float(j)) * params.shadow_map_size.zw);
+            float param_1 = query.z;
+            float _117 = shadow_compare_bilinear(param, param_1);
+            sum += _117;
+        }
+    }
+    return sum / 9.0;
+}
+
+float receiver_visibility(vec3 query, vec2 pixel)
+{
+    if (!(query.z > 0.0))
+    {
+        return 1.0;
+    }
+    vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
+    float _147 = shadow_visibility(param);
+    return _147;
+}
+
+void main()
+{
+    penumbra_texel_reads = 0.0;
+    float depth = textureLod(camera_depth, screen_uv, 0.0).x;
+    vec4 clip = vec4((2.0 * screen_uv.x) - 1.0, (screen_uv.y - 0.5) / 0.5, (depth * params.camera_depth_range.x) + params.camera_depth_range.y, 1.0);
+    mat4 camera_inverse = mat4(vec4(params.camera_inverse_0), vec4(params.camera_inverse_1), vec4(params.camera_inverse_2), vec4(params.camera_inverse_3));
+    mat4 light_view_proj = mat4(vec4(params.light_view_proj_0), vec4(params.light_view_proj_1), vec4(params.light_view_proj_2), vec4(params.light_view_proj_3));
+    vec4 world = camera_inverse * clip;
+    vec4 param = light_view_proj * (world / vec4(world.w));
+    vec3 query = clip_to_query(param);
+    if (depth == params.camera_depth_range.z)
+    {
+        query = vec3(0.5, 0.5, 0.0);
+    }
+    vec3 param_1 = query;
+    vec2 param_2 = floor(screen_uv * params.screen_size.xy);
+    float _306 = receiver_visibility(param_1, param_2);
+    float visible = _306;
+    visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
+}
+
