@@ -42,6 +42,17 @@ struct SceneOutput {
   std::optional<DepthCheck> own_depth_check;
 };
 
+// What a path's passes wrote, on the scene's own map: the query's (or the
+// deferred pass's) two channels, and screen_blur's `chain`.
+inline SceneOutput scene_output(FloatImage visibility, FloatImage texel_reads,
+                                std::optional<ChainOutput> chain = std::nullopt) {
+  SceneOutput out;
+  out.visibility = std::move(visibility);
+  out.texel_reads = std::move(texel_reads);
+  out.chain = std::move(chain);
+  return out;
+}
+
 // An engine's own draw of the report's stage around a function form
 // (function_form.cpp): the variant, the engine's camera and the light's
 // view-projection, the function form's text and its reflection with the

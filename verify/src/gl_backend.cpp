@@ -171,12 +171,7 @@ class GlBackend final : public Backend {
                         read_pass(*draw.library, *draw.entry, PassKind::deferred, draw.target));
     PENUMBRA_TRY_ASSIGN(auto output, engine_->run_deferred(pass(texts), fixture.normalized_depth,
                                                            draw.camera_depth, draw.params));
-    return SceneOutput{std::move(output.visibility),
-                       std::move(output.texel_reads),
-                       std::nullopt,
-                       nullptr,
-                       nullptr,
-                       std::nullopt};
+    return scene_output(std::move(output.visibility), std::move(output.texel_reads));
   }
 
  private:
@@ -189,12 +184,7 @@ class GlBackend final : public Backend {
     auto output = engine_->run_query({pass(texts.query), minmax}, fixture.normalized_depth,
                                      fixture.receivers, fixture.params);
     if (!output) return output.error();
-    return SceneOutput{std::move(output->visibility),
-                       std::move(output->texel_reads),
-                       std::nullopt,
-                       nullptr,
-                       nullptr,
-                       std::nullopt};
+    return scene_output(std::move(output->visibility), std::move(output->texel_reads));
   }
 
   Result<SceneOutput> run_screen_blur(const GlScreenBlurTexts& texts, const SceneFixture& fixture) {
@@ -202,12 +192,8 @@ class GlBackend final : public Backend {
         {pass(texts.query), pass(texts.blur_h), pass(texts.blur_v), pass(texts.composite)},
         fixture.normalized_depth, fixture.receivers, fixture.colour, fixture.params);
     if (!output) return output.error();
-    return SceneOutput{std::move(output->factor),
-                       std::move(output->texel_reads),
-                       ChainOutput{std::move(output->blurred), std::move(output->composite)},
-                       nullptr,
-                       nullptr,
-                       std::nullopt};
+    return scene_output(std::move(output->factor), std::move(output->texel_reads),
+                        ChainOutput{std::move(output->blurred), std::move(output->composite)});
   }
 
   std::unique_ptr<GlEngine> engine_;

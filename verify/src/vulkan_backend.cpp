@@ -59,12 +59,8 @@ LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded)
         auto gpu = engine.run_screen_blur(chain->programs(), *fixture.map, fixture.receivers,
                                           fixture.colour, fixture.params);
         if (!gpu) return gpu.error();
-        return SceneOutput{std::move(gpu->factor),
-                           std::move(gpu->texel_reads),
-                           ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)},
-                           nullptr,
-                           nullptr,
-                           std::nullopt};
+        return scene_output(std::move(gpu->factor), std::move(gpu->texel_reads),
+                            ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)});
       }};
 }
 
@@ -92,12 +88,7 @@ Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
                                        const SceneFixture& fixture, const PassProgram& program) {
   PENUMBRA_TRY_ASSIGN(QueryOutput gpu,
                       engine.run_deferred(program, *fixture.map, draw.camera_depth, draw.params));
-  return SceneOutput{std::move(gpu.visibility),
-                     std::move(gpu.texel_reads),
-                     std::nullopt,
-                     nullptr,
-                     nullptr,
-                     std::nullopt};
+  return scene_output(std::move(gpu.visibility), std::move(gpu.texel_reads));
 }
 
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
@@ -114,18 +105,14 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
   auto query = load(PassKind::query);
   if (!query) return query.error();
   auto program = std::make_shared<PassProgram>(std::move(query->program));
-  return LoadedPasses{std::move(query->execution),
-                      [&engine, program](const SceneFixture& fixture) -> Result<SceneOutput> {
-                        auto gpu = engine.run_query_output(*program, *fixture.map,
-                                                           fixture.receivers, fixture.params);
-                        if (!gpu) return gpu.error();
-                        return SceneOutput{std::move(gpu->visibility),
-                                           std::move(gpu->texel_reads),
-                                           std::nullopt,
-                                           nullptr,
-                                           nullptr,
-                                           std::nullopt};
-                      }};
+  return LoadedPasses{
+      std::move(query->execution),
+      [&engine, program](const SceneFixture& fixture) -> Result<SceneOutput> {
+        auto gpu =
+            engine.run_query_output(*program, *fixture.map, fixture.receivers, fixture.params);
+        if (!gpu) return gpu.error();
+        return scene_output(std::move(gpu->visibility), std::move(gpu->texel_reads));
+      }};
 }
 
 std::unique_ptr<Backend> vulkan_backend(Engine& engine) {

@@ -183,12 +183,10 @@ class WineBackend final : public Backend {
     execution = {"the " + name() + " runtime (Wine) loading the bytecode", {}};
     PENUMBRA_TRY_ASSIGN(
         auto output, engine_->run_deferred(deferred, drawn->map, draw.camera_depth, draw.params));
-    return SceneOutput{std::move(output.visibility),
-                       std::move(output.texel_reads),
-                       std::nullopt,
-                       drawn->stored,
-                       drawn->linear,
-                       std::nullopt};
+    SceneOutput out = scene_output(std::move(output.visibility), std::move(output.texel_reads));
+    out.own_stored_depth = drawn->stored;
+    out.own_linear_depth = drawn->linear;
+    return out;
   }
 
  private:

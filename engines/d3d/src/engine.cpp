@@ -63,6 +63,12 @@ DrawTarget whole(int colour, int width, int height) {
   return {colour, 0, std::nullopt, width, height, std::nullopt, std::nullopt};
 }
 
+// The one triangle every full-screen pass draws, as a vertex buffer of the job's.
+DrawGeometry full_screen_triangle(Job& job) {
+  return {job.vertices(std::vector<float>(kFullScreenTriangle.begin(), kFullScreenTriangle.end())),
+          3};
+}
+
 // The receivers and the full-screen triangle every screen pass reads.
 struct ScreenInputs {
   int receivers = 0;
@@ -73,8 +79,26 @@ ScreenInputs screen_inputs(Job& job, const FloatImage& receivers) {
   const int id = job.texture(api_format(api_target(job.runtime()), TextureFormat::rgba32_float),
                              receivers.width, receivers.height, 1, "input");
   job.upload(id, 0, receivers_to_rgba(receivers));
-  const std::vector<float> triangle(kFullScreenTriangle.begin(), kFullScreenTriangle.end());
-  return {id, {job.vertices(triangle), 3}};
+  return {id, full_screen_triangle(job)};
+}
+
+// `pass` (the query or the deferred pass) drawn over a whole width x height
+// target with `textures`, screen_size set to that size; the job run and its
+// (visibility, texel reads) read back.
+Result<D3dQueryOutput> draw_visibility(Job& job, const D3dPass& pass, const std::string& where,
+                                       const PassTextures& textures, const ParamBlock& params,
+                                       int width, int height, DrawGeometry triangle) {
+  auto format = pass_target(job.runtime(), pass, where);
+  if (!format) return format.error();
+  ParamBlock screen_params = params;
+  screen_params["screen_size"] = size_vec4(width, height);
+  const int output = job.texture(format->format, width, height, 1, "target");
+  PENUMBRA_TRY(d3d::draw_pass(job, pass, where, textures, screen_params,
+                              whole(output, width, height), triangle));
+  const std::size_t read = job.read(output, 0, width, height, format->channels);
+  PENUMBRA_TRY(job.run());
+  const FloatImage texels = job.take(read);
+  return D3dQueryOutput{channel(texels, 0), channel(texels, 1)};
 }
 
 // Draws the min-max chain of `map` (docs/shader-interface.md): each level
@@ -88,8 +112,7 @@ Result<int> draw_minmax_chain(Job& job, const D3dMinmaxPasses& passes, const D3d
   const int side = minmax_chain_side(map.width, map.height);
   const int chain =
       job.texture(format->format, side, side, static_cast<int>(sizes.size()), "target");
-  const std::vector<float> triangle(kFullScreenTriangle.begin(), kFullScreenTriangle.end());
-  const DrawGeometry geometry{job.vertices(triangle), 3};
+  const DrawGeometry geometry = full_screen_triangle(job);
   LevelSize source{map.width, map.height};
   int source_level = 0;
   for (std::size_t l = 0; l < sizes.size(); ++l) {
@@ -280,8 +303,6 @@ Result<std::vector<FloatImage>> D3dEngine::build_minmax(const D3dMinmaxPasses& p
 Result<D3dQueryOutput> D3dEngine::run_query(const D3dQueryPasses& passes, const D3dMap& map,
                                             const FloatImage& receivers, const ParamBlock& params) {
   Job job(*this);
-  auto format = pass_target(runtime_, passes.query, "the query pass");
-  if (!format) return format.error();
   const ScreenInputs screen = screen_inputs(job, receivers);
   PassTextures textures{{TextureId::shadow_depth, map.id},
                         {TextureId::shadow_cmp, map.id},
@@ -292,15 +313,8 @@ Result<D3dQueryOutput> D3dEngine::run_query(const D3dQueryPasses& passes, const 
     if (!chain) return chain.error();
     textures[TextureId::shadow_minmax] = *chain;
   }
-  ParamBlock screen_params = params;
-  screen_params["screen_size"] = size_vec4(receivers.width, receivers.height);
-  const int output = job.texture(format->format, receivers.width, receivers.height, 1, "target");
-  PENUMBRA_TRY(d3d::draw_pass(job, passes.query, "the query pass", textures, screen_params,
-                              whole(output, receivers.width, receivers.height), screen.triangle));
-  const std::size_t read = job.read(output, 0, receivers.width, receivers.height, format->channels);
-  PENUMBRA_TRY(job.run());
-  const FloatImage texels = job.take(read);
-  return D3dQueryOutput{channel(texels, 0), channel(texels, 1)};
+  return draw_visibility(job, passes.query, "the query pass", textures, params, receivers.width,
+                         receivers.height, screen.triangle);
 }
 
 Result<D3dQueryOutput> D3dEngine::run_deferred(const D3dPass& deferred, const D3dMap& map,
@@ -308,26 +322,14 @@ Result<D3dQueryOutput> D3dEngine::run_deferred(const D3dPass& deferred, const D3
                                                const ParamBlock& params) {
   PENUMBRA_TRY(check_normalized_depth(camera_depth));
   Job job(*this);
-  auto format = pass_target(runtime_, deferred, "the deferred pass");
-  if (!format) return format.error();
-  const int width = camera_depth.width;
-  const int height = camera_depth.height;
-  const int camera = job.texture(api_format(api_target(runtime_), TextureFormat::r32_float), width,
-                                 height, 1, "input");
+  const int camera = job.texture(api_format(api_target(runtime_), TextureFormat::r32_float),
+                                 camera_depth.width, camera_depth.height, 1, "input");
   job.upload(camera, 0, camera_depth.data);
-  const std::vector<float> triangle(kFullScreenTriangle.begin(), kFullScreenTriangle.end());
   const PassTextures textures{{TextureId::shadow_depth, map.id},
                               {TextureId::shadow_cmp, map.id},
                               {TextureId::camera_depth, camera}};
-  ParamBlock screen_params = params;
-  screen_params["screen_size"] = size_vec4(width, height);
-  const int output = job.texture(format->format, width, height, 1, "target");
-  PENUMBRA_TRY(d3d::draw_pass(job, deferred, "the deferred pass", textures, screen_params,
-                              whole(output, width, height), {job.vertices(triangle), 3}));
-  const std::size_t read = job.read(output, 0, width, height, format->channels);
-  PENUMBRA_TRY(job.run());
-  const FloatImage texels = job.take(read);
-  return D3dQueryOutput{channel(texels, 0), channel(texels, 1)};
+  return draw_visibility(job, deferred, "the deferred pass", textures, params, camera_depth.width,
+                         camera_depth.height, full_screen_triangle(job));
 }
 
 Result<D3dScreenBlurOutput> D3dEngine::run_screen_blur(const D3dScreenBlurPasses& passes,
