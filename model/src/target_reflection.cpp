@@ -2,7 +2,9 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <type_traits>
 
+#include "penumbra/model/json_number.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/target_traits.hpp"
 
@@ -57,7 +59,11 @@ void put(nlohmann::json& j, const char* key, const std::vector<T>& values) {
 
 template <typename T>
 void get(const nlohmann::json& j, const char* key, std::optional<T>& value) {
-  if (j.contains(key)) value = j.at(key).get<T>();
+  if (!j.contains(key)) return;
+  if constexpr (std::is_arithmetic_v<T>)
+    value = number_as<T>(j.at(key));
+  else
+    value = j.at(key).get<T>();
 }
 void get(const nlohmann::json& j, const char* key, std::string& value) {
   if (j.contains(key)) j.at(key).get_to(value);
@@ -150,10 +156,10 @@ void from_json(const nlohmann::json& j, ConstantBinding& c) {
   j.at("name").get_to(c.name);
   j.at("parameter").get_to(c.parameter);
   j.at("type").get_to(c.type);
-  j.at("size").get_to(c.size);
+  number_at(j, "size", c.size);
   get(j, "offset", c.offset);
   get(j, "register", c.reg);
-  c.registers = j.value("registers", 0u);
+  if (j.contains("registers")) number_at(j, "registers", c.registers);
 }
 
 void to_json(nlohmann::json& j, const BlockBinding& b) {
@@ -164,7 +170,7 @@ void to_json(nlohmann::json& j, const BlockBinding& b) {
 }
 void from_json(const nlohmann::json& j, BlockBinding& b) {
   j.at("name").get_to(b.name);
-  j.at("size").get_to(b.size);
+  number_at(j, "size", b.size);
   j.at("members").get_to(b.members);
   get(j, "set", b.set);
   get(j, "binding", b.binding);
@@ -188,9 +194,14 @@ void to_json(nlohmann::json& j, const TextureContents& c) {
   j = {{"width", c.width}, {"height", c.height}, {"texels", c.texels}};
 }
 void from_json(const nlohmann::json& j, TextureContents& c) {
-  j.at("width").get_to(c.width);
-  j.at("height").get_to(c.height);
-  j.at("texels").get_to(c.texels);
+  number_at(j, "width", c.width);
+  number_at(j, "height", c.height);
+  const nlohmann::json& values = j.at("texels");
+  if (!values.is_array()) {
+    throw nlohmann::json::type_error::create(302, "texels must be an array of numbers", &values);
+  }
+  c.texels.clear();
+  for (const nlohmann::json& value : values) c.texels.push_back(number_as<float>(value));
   const std::size_t texels = std::size_t{c.width} * c.height;
   if (texels == 0 || c.texels.size() % texels != 0 || c.texels.size() / texels > 4) {
     throw nlohmann::json::other_error::create(
@@ -239,7 +250,7 @@ void to_json(nlohmann::json& j, const VertexAttribute& a) {
 }
 void from_json(const nlohmann::json& j, VertexAttribute& a) {
   j.at("name").get_to(a.name);
-  j.at("components").get_to(a.components);
+  number_at(j, "components", a.components);
   j.at("format").get_to(a.format);
   get(j, "location", a.location);
   get(j, "semantic", a.semantic);
@@ -250,7 +261,7 @@ void to_json(nlohmann::json& j, const RenderTarget& r) {
 }
 void from_json(const nlohmann::json& j, RenderTarget& r) {
   j.at("name").get_to(r.name);
-  j.at("index").get_to(r.index);
+  number_at(j, "index", r.index);
   j.at("format").get_to(r.format);
 }
 

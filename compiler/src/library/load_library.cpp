@@ -1,7 +1,5 @@
-#include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -12,6 +10,7 @@
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/json_number.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/support/file.hpp"
 #include "penumbra/support/text.hpp"
@@ -114,29 +113,6 @@ Status read_keys(const std::filesystem::path& file, const json& keys, const std:
     }
   });
   return status;
-}
-
-// `value` as a T, thrown as a json exception (reported at its place) when it
-// is no number or does not fit: nlohmann's get<T>() of 1e115 as an int is
-// undefined behaviour. Integer types take integers only.
-template <typename T>
-T number_as(const json& value) {
-  using limits = std::numeric_limits<T>;
-  if (value.is_number_unsigned()) {
-    const std::uint64_t u = value.get<std::uint64_t>();
-    if (u <= static_cast<std::uint64_t>(limits::max())) return static_cast<T>(u);
-  } else if (value.is_number_integer()) {
-    const std::int64_t i = value.get<std::int64_t>();
-    if (i >= static_cast<std::int64_t>(limits::lowest()) &&
-        (std::is_floating_point_v<T> || i <= static_cast<std::int64_t>(limits::max()))) {
-      return static_cast<T>(i);
-    }
-  } else if (std::is_floating_point_v<T> && value.is_number_float()) {
-    const double d = value.get<double>();
-    if (std::abs(d) <= static_cast<double>(limits::max())) return static_cast<T>(d);
-  }
-  throw json::out_of_range::create(
-      406, shorten(value.dump()) + " is not a number that fits its field", &value);
 }
 
 // pass_files[i].bytecode.<stage> (docs/shader-interface.md).
