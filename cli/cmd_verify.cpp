@@ -24,6 +24,7 @@ struct VerifyArgs {
   bool no_gl = false;
   bool no_wine = false;
   std::vector<std::string> paths;
+  std::string map_format = "d32_float";
   bool validation = false;
   bool verbose = false;
   bool quiet = false;  // only failures and the totals
@@ -60,7 +61,11 @@ void print_summary(const VerifyReport& report, bool quiet) {
     for (const EngineFormCheck& c : *checks) {
       if (quiet && c.pass) continue;
       std::cout << (c.pass ? "PASS " : "FAIL ") << form << " " << c.variant << " ["
-                << to_string(c.target) << " on " << c.backend << "] on the camera's stage: ";
+                << to_string(c.target) << " on " << c.backend
+                << (c.map_format == DepthFormat::d32_float
+                        ? std::string()
+                        : ", " + std::string(to_string(c.map_format)) + " map")
+                << "] on the camera's stage: ";
       if (!c.error.empty()) {
         std::cout << c.error << "\n";
         continue;
@@ -132,6 +137,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
   cmd->add_option("--path", args->paths,
                   "Only these execution paths (repeatable): " + std::string(kPathNames));
+  cmd->add_option("--map-format", args->map_format,
+                  "Depth image of encoded maps (perspective, perspective_reversed): " +
+                      allowed_depth_formats());
   cmd->add_flag(
       "--no-wine", args->no_wine,
       "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
@@ -148,6 +156,12 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                               "unknown execution path; allowed: " + std::string(kPathNames)));
         return;
       }
+    }
+    const std::optional<DepthFormat> map_format = parse_depth_format(args->map_format);
+    if (!map_format) {
+      exit_code = report(make_error(Error::Kind::bad_input, "--map-format " + args->map_format,
+                                    "unknown depth format; allowed: " + allowed_depth_formats()));
+      return;
     }
     Shard shard;
     if (!args->shard.empty()) {
@@ -193,6 +207,7 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                           .gl = !args->no_gl,
                           .wine = !args->no_wine,
                           .paths = args->paths,
+                          .map_format = *map_format,
                           .bytecode = {.compiler = *compiler},
                           .shard = shard,
                           .jobs = args->jobs,

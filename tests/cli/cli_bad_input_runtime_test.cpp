@@ -44,5 +44,17 @@ TEST(BadRuntimeInput, VerifyRefusesALibraryItCannotWriteInto) {
   }
 }
 
+// An unknown --map-format is refused with the allowed formats, before the
+// library is read or verify.json touched.
+TEST(BadRuntimeInput, VerifyRefusesAnUnknownMapFormat) {
+  ScratchDir dir("bad-map-format");
+  const CliRun run =
+      run_penumbra("verify '" + (dir.path() / "missing").string() + "' --map-format d15_unorm");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("--map-format d15_unorm"));
+  EXPECT_THAT(run.err, HasSubstr("allowed: d32_float, d24_unorm, d16_unorm"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "missing"));
+}
+
 }  // namespace
 }  // namespace penumbra::testing

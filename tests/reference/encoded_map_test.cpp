@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "fixtures.hpp"
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/scene.hpp"
+#include "penumbra/reference/shadow_map.hpp"
 #include "penumbra/reference/techniques.hpp"
 
 namespace penumbra::reference {
@@ -50,6 +52,35 @@ TEST(MapEncoding, EndsOfTheRangeAndInverse) {
 
 // A receiver at the depth of the texels it reads is a tie; a bias larger
 // than tie_margin() settles it.
+// Unorm codes round to nearest and clamp; a unorm map's tie margin is one
+// step wider, carried into z.
+TEST(DepthFormat, CodesRoundToNearestAndWidenTheTieMargin) {
+  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 0.0), 0u);
+  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 1.0), 65535u);
+  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 2.0), 65535u);
+  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, -1.0), 0u);
+  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 0.4 / 65535.0), 0u);
+  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 0.6 / 65535.0), 1u);
+  EXPECT_EQ(unorm_code(DepthFormat::d24_unorm, 1.0), 16777215u);
+  EXPECT_EQ(stored_depth(DepthFormat::d16_unorm, 0.5), float(32768.0 / 65535.0));
+  EXPECT_EQ(stored_depth(DepthFormat::d32_float, 0.1), 0.1f);
+  for (const DepthFormat format : kAllDepthFormats) {
+    EXPECT_EQ(parse_depth_format(to_string(format)), format);
+  }
+  EXPECT_FALSE(parse_depth_format("d15_unorm"));
+
+  const DepthRange range{6.0, 32.0};
+  reference::EncodedDepth d16{MapEncoding::perspective, range, DepthFormat::d16_unorm};
+  const reference::EncodedDepth d32{MapEncoding::perspective, range};
+  const double z = 16.0;
+  EXPECT_NEAR(reference::tie_margin(d16, z) - reference::tie_margin(d32, z),
+              depth_per_unit(MapEncoding::perspective, z, range) / 65535.0, 1e-12);
+  // One D16 step at z = 16 moves the stored value's decoding by about that much.
+  const double d = encode_depth(MapEncoding::perspective, z, range);
+  EXPECT_NEAR(decode_depth(MapEncoding::perspective, d + 1.0 / 65535.0, range) - z,
+              depth_per_unit(MapEncoding::perspective, z, range) / 65535.0, 1e-6);
+}
+
 TEST(EncodedMap, ReceiverAtTheTexelsDepthIsATieUnlessBiased) {
   const DepthRange range{9.5, 32.0};
   FloatImage linear(16, 16, 1);

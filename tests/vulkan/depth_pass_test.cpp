@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,39 @@ TEST(DepthPassTest, DepthImageHoldsTheSameDepth) {
       EXPECT_EQ(shadowed->at(i, j), expected_z(i, j) > 0.0f ? 0.0f : 1.0f)
           << "texel " << i << ", " << j;
     }
+  }
+}
+
+// A D24 or D16 map's depth image holds the rasterizer's depth rounded to
+// its format's codes: read back as the floats a sampler returns, each is
+// the float nearest a whole number of steps, within one step of the D32
+// map's.
+TEST(DepthPassTest, UnormDepthImagesHoldTheirFormatsCodes) {
+  auto engine = test::make_engine();
+  ASSERT_NE(engine, nullptr);
+  const ParamBlock params = test::make_params(kLight, kSize, kSize, kSize, kSize);
+  const auto triangles = scene();
+  auto exact = engine->render_depth(test::depth_program(), triangles, kSize, kSize, params);
+  ASSERT_TRUE(exact) << exact.error().to_string();
+  auto exact_depth = engine->read_shadow_depth(**exact);
+  ASSERT_TRUE(exact_depth) << exact_depth.error().to_string();
+  for (const DepthFormat format : {DepthFormat::d24_unorm, DepthFormat::d16_unorm}) {
+    SCOPED_TRACE(std::string(to_string(format)));
+    auto map = engine->render_depth(test::depth_program(), triangles, kSize, kSize, params, format);
+    ASSERT_TRUE(map) << map.error().to_string();
+    auto depth = engine->read_shadow_depth(**map);
+    ASSERT_TRUE(depth) << depth.error().to_string();
+    const double step = depth_step(format);
+    int rounded = 0;
+    for (std::size_t t = 0; t < depth->data.size(); ++t) {
+      // D24's codes are not all floats: the nearest float to a whole step.
+      const double code = std::round(depth->data[t] / step);
+      EXPECT_EQ(depth->data[t], static_cast<float>(code * step)) << "texel " << t;
+      EXPECT_LE(std::abs(double(depth->data[t]) - exact_depth->data[t]), step) << "texel " << t;
+      rounded += depth->data[t] != exact_depth->data[t];
+    }
+    // 12 / 32 and 24 / 32 are no whole number of D16 or D24 steps.
+    EXPECT_GT(rounded, 0);
   }
 }
 

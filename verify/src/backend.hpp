@@ -148,7 +148,7 @@ class Backend {
 // drawn on `engine` by the target's depth pass (function_form.cpp).
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target);
+                                            Target target, DepthFormat map_format);
 
 // `entry`'s query (or screen_blur's four passes), each loaded by `load`,
 // run on `engine` over the maps (and min-max mips) the scenes hold: the
@@ -160,7 +160,7 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
 // drawn on `engine` by the target's depth pass (deferred_mask.cpp).
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target);
+                                            Target target, DepthFormat map_format);
 
 // `draw` on `engine` over `fixture`'s map with `program`, the deferred pass
 // loaded for the Vulkan engine (the paths that run on it).

@@ -8,7 +8,8 @@
 namespace penumbra {
 
 Result<CameraStage> camera_stage(Engine& engine, const Library& library,
-                                 const LibraryVariant& entry, Target target) {
+                                 const LibraryVariant& entry, Target target,
+                                 DepthFormat map_format) {
   CameraStage out;
   out.stage = reference::report_stage();
   out.width = out.stage.scene.receivers_width;
@@ -17,16 +18,18 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
   PENUMBRA_TRY_ASSIGN(ExecutableProgram depth,
                       load_executable(library, entry, PassKind::depth, target));
   PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, depth.program, target, out.stage.scene,
-                                                 out.view.receivers));
+                                                 out.view.receivers, map_format));
   out.depth = std::move(depth.program.reflection);
   return out;
 }
 
-EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend) {
+EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend,
+                              const CameraStage& camera) {
   EngineFormCheck check;
   check.variant = entry.variant.name;
   check.target = target;
   check.backend = backend.name();
+  check.map_format = camera.fixture.map_format();
   return check;
 }
 
@@ -35,8 +38,13 @@ Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVarian
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
                      std::span<const FloatImage> rounded) {
   const SceneFixture& fixture = camera.fixture;
-  const EngineMap map{own_map ? *own_map : fixture.normalized_depth, fixture.encoded,
-                      depth_scale_for(fixture.scene.far_z)};
+  EngineMap map{own_map ? *own_map : fixture.normalized_depth, fixture.encoded,
+                depth_scale_for(fixture.scene.far_z)};
+  // A path's own map (Wine's runtimes draw theirs) is a float one.
+  if (own_map && map.encoded) {
+    map.encoded->format = DepthFormat::d32_float;
+    check.map_format = DepthFormat::d32_float;
+  }
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
   PENUMBRA_TRY_ASSIGN(

@@ -23,12 +23,16 @@ struct CameraStage {
 };
 
 // The report's stage for `entry`'s checks on `target`, its map drawn on
-// `engine`. Errors: loading or running the depth pass.
+// `engine` into a `map_format` depth image where prepare_scene() allows.
+// Errors: loading or running the depth pass.
 Result<CameraStage> camera_stage(Engine& engine, const Library& library,
-                                 const LibraryVariant& entry, Target target);
+                                 const LibraryVariant& entry, Target target,
+                                 DepthFormat map_format);
 
-// A check of `entry` on `target` by `backend`, its results to come.
-EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend);
+// A check of `entry` on `target` by `backend` on `camera`'s map, its
+// results to come.
+EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend,
+                              const CameraStage& camera);
 
 // `check`'s results: `visibility` (channel `channel`) against the reference
 // at `receivers` on the map the picture read (`own_stored_depth`, or the

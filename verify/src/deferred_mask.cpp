@@ -182,15 +182,15 @@ std::vector<FloatImage> rounding_bounds(const Variant& variant, const FloatImage
 
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target) {
+                                            Target target, DepthFormat map_format) {
   const auto pass = entry.reflection.find(PassKind::deferred);
   if (pass == entry.reflection.end() || !pass->second.contains(target)) {
     return make_error(
         Error::Kind::bad_input, entry.variant.name,
         "the library has no deferred pass for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target));
-  EngineFormCheck check = started_check(entry, target, backend);
+  PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target, map_format));
+  EngineFormCheck check = started_check(entry, target, backend, camera);
   const Matrix4 camera_matrix = camera_clip(camera.stage, camera.width, camera.height, target);
   const Matrix4 camera_inverse = inverse(camera_matrix);
   const Matrix4 light = light_clip(camera.stage.scene.light, target);
@@ -229,9 +229,10 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
 }
 
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& library,
-                                            const LibraryVariant& entry, Target target) {
+                                            const LibraryVariant& entry, Target target,
+                                            DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
-  return check_deferred_mask(engine, *vulkan, library, entry, target);
+  return check_deferred_mask(engine, *vulkan, library, entry, target, map_format);
 }
 
 }  // namespace penumbra

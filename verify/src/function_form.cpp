@@ -24,15 +24,15 @@ std::vector<std::array<float, 3>> stage_triangles(const reference::Stage& stage)
 
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target) {
+                                            Target target, DepthFormat map_format) {
   const auto form = entry.function.find(target);
   if (form == entry.function.end()) {
     return make_error(
         Error::Kind::bad_input, entry.variant.name,
         "the library has no function form for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target));
-  EngineFormCheck check = started_check(entry, target, backend);
+  PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target, map_format));
+  EngineFormCheck check = started_check(entry, target, backend, camera);
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
   SurfaceDraw draw;
   draw.library = &library;
@@ -64,9 +64,10 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
 }
 
 Result<EngineFormCheck> check_function_form(Engine& engine, const Library& library,
-                                            const LibraryVariant& entry, Target target) {
+                                            const LibraryVariant& entry, Target target,
+                                            DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
-  return check_function_form(engine, *vulkan, library, entry, target);
+  return check_function_form(engine, *vulkan, library, entry, target, map_format);
 }
 
 }  // namespace penumbra

@@ -157,10 +157,10 @@ class GlBackend final : public Backend {
         engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex);
     const std::string fragment =
         engine_fragment_shader(draw.target, draw.reflection, draw.function_text);
-    PENUMBRA_TRY_ASSIGN(
-        FloatImage clip,
-        engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
-                             fixture.normalized_depth, draw.width, draw.height, fixture.params));
+    PENUMBRA_TRY_ASSIGN(FloatImage clip,
+                        engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
+                                             fixture.normalized_depth, draw.width, draw.height,
+                                             fixture.params, fixture.map_format()));
     return SurfacePicture{std::move(clip), nullptr};
   }
 
@@ -169,8 +169,9 @@ class GlBackend final : public Backend {
     out = execution();
     PENUMBRA_TRY_ASSIGN(const GlPassTexts texts,
                         read_pass(*draw.library, *draw.entry, PassKind::deferred, draw.target));
-    PENUMBRA_TRY_ASSIGN(auto output, engine_->run_deferred(pass(texts), fixture.normalized_depth,
-                                                           draw.camera_depth, draw.params));
+    PENUMBRA_TRY_ASSIGN(
+        auto output, engine_->run_deferred(pass(texts), fixture.normalized_depth, draw.camera_depth,
+                                           draw.params, fixture.map_format()));
     return scene_output(std::move(output.visibility), std::move(output.texel_reads));
   }
 

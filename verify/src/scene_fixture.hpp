@@ -28,6 +28,9 @@ struct SceneFixture {
   FloatImage receivers;  // (u, v, z_r)
   FloatImage colour;     // what screen_blur's composite draws over (reference::scene_colour)
   DepthCheck depth_check;
+
+  // The depth image the map's readers sample: D32_SFLOAT unless encoded.
+  DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }
 };
 
 // Every scene of one target.
@@ -41,14 +44,20 @@ struct TargetScenes {
 // `linear` (a map of `scene` drawn by `target`'s depth pass, as linear z)
 // against a ray cast at each texel's centre: every texel whose centre lies
 // clear of an occluder's edge must hold the ray cast's surface, so a map
-// shifted by a texel row fails. `backend` is the path that drew it.
+// shifted by a texel row fails. `backend` is the path that drew it;
+// `quantized`, the encoding of a unorm map, whose step widens the tolerance.
 DepthCheck check_depth(const reference::Scene& scene, Target target, const FloatImage& linear,
-                       const std::string& backend);
+                       const std::string& backend,
+                       const std::optional<reference::EncodedDepth>& quantized = {});
 
 // `scene` rendered by `depth`, with `receivers` (u, v, z_r per pixel; the
-// scene's receivers_width x receivers_height).
+// scene's receivers_width x receivers_height). An encoded map is drawn into
+// a `map_format` depth image, as an engine's D24 or D16 map, on the targets
+// that compare (hlsl_dx9's map is its R32F target); a linear map, the
+// library's own depth pass, is always D32_SFLOAT.
 Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
-                                   const reference::Scene& scene, FloatImage receivers);
+                                   const reference::Scene& scene, FloatImage receivers,
+                                   DepthFormat map_format = DepthFormat::d32_float);
 
 // `stored` (a map in `encoded`'s encoding, or linear z * depth_scale when
 // none) as linear z.

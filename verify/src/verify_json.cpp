@@ -14,6 +14,7 @@ nlohmann::json depth_json(const DepthCheck& c) {
                         {"pass", c.pass}};
   // Linear maps, the library's own, are every check that has no encoding.
   if (c.map_encoding != MapEncoding::linear) out["map_encoding"] = to_string(c.map_encoding);
+  if (c.map_format != DepthFormat::d32_float) out["map_format"] = to_string(c.map_format);
   return out;
 }
 
@@ -44,6 +45,8 @@ nlohmann::json function_json(const EngineFormCheck& c) {
                         {"tolerance", c.comparison.tolerance},
                         {"camera_agreement", c.camera_agreement},
                         {"pass", c.pass}};
+  // Float maps are every check that names no format.
+  if (c.map_format != DepthFormat::d32_float) out["map_format"] = to_string(c.map_format);
   if (!c.error.empty()) out["error"] = c.error;
   return out;
 }

@@ -32,16 +32,17 @@ struct Context {
   std::map<MapKey, TargetScenes> scenes;
   // Maps whose depth pass could not run: every run on them fails with this.
   std::map<MapKey, Error> broken_targets;
+  DepthFormat map_format = DepthFormat::d32_float;  // VerifyOptions::map_format
 };
 
 // `entry`'s function form or deferred pass (`check`) for `target` on
 // `backend`; one that cannot run fails with why.
 using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, const Library&,
-                                                      const LibraryVariant&, Target);
+                                                      const LibraryVariant&, Target, DepthFormat);
 EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend& backend,
                                 const LibraryVariant& entry, Target target) {
   const auto start = Clock::now();
-  auto check = checker(ctx.engine, backend, ctx.library, entry, target);
+  auto check = checker(ctx.engine, backend, ctx.library, entry, target, ctx.map_format);
   EngineFormCheck out = check ? std::move(*check) : EngineFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
@@ -107,9 +108,9 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
   TargetScenes scenes;
   for (const reference::Scene& scene : reference::builtin_scenes()) {
     const auto start = Clock::now();
-    auto fixture =
-        prepare_scene(ctx.engine, depth->program, target, scene,
-                      reference::receivers(scene, scene.receivers_width, scene.receivers_height));
+    auto fixture = prepare_scene(
+        ctx.engine, depth->program, target, scene,
+        reference::receivers(scene, scene.receivers_width, scene.receivers_height), ctx.map_format);
     if (!fixture) return fixture.error();
     report.depth_checks.push_back(fixture->depth_check);
     report.depth_checks.back().seconds = seconds_since(start);
@@ -260,7 +261,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   report.device = engine.device_info();
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
-  Context ctx{library, engine, precision, {}, {}, {}};
+  Context ctx{library, engine, precision, {}, {}, {}, options.map_format};
   // The paths, in report order: a new one is a new backend file and a line here.
   ctx.backends = all_backends(engine, options.bytecode, options.gl, options.wine);
   for (const auto& backend : ctx.backends) {

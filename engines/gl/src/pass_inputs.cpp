@@ -4,8 +4,8 @@
 
 namespace penumbra::gl {
 
-void PassInputs::give(TextureId texture, const FloatImage& image) {
-  given_[texture] = &image;
+void PassInputs::give(TextureId texture, const FloatImage& image, DepthFormat depth) {
+  given_[texture] = Given{&image, depth};
 }
 
 void PassInputs::set(TextureId texture, GLuint name, const TexelFormat& format,
@@ -32,18 +32,22 @@ Result<GLuint> PassInputs::texture_for(TextureId texture, const TextureBinding& 
                       "nothing supplies texture '" + binding.name + "' (" +
                           std::string(describe(texture).content) + ") to this pass");
   }
+  const FloatImage& image = *given->second.image;
+  const TexelFormat* stored = (*format)->format == TextureFormat::d32_float
+                                  ? &depth_texel_format(given->second.depth)
+                                  : *format;
   for (const Upload& earlier : uploads_) {
-    if (earlier.image == given->second && earlier.format == *format) return earlier.texture.get();
+    if (earlier.image == &image && earlier.format == stored) return earlier.texture.get();
   }
-  if (given->second->channels > (*format)->channels) {
+  if (image.channels > stored->channels) {
     return make_error(Error::Kind::bad_input, where,
-                      "texture '" + binding.name + "' has " +
-                          std::to_string(given->second->channels) + " channels; its format " +
-                          binding.format + " holds " + std::to_string((*format)->channels));
+                      "texture '" + binding.name + "' has " + std::to_string(image.channels) +
+                          " channels; its format " + binding.format + " holds " +
+                          std::to_string(stored->channels));
   }
-  auto uploaded = upload(*given->second, **format, "texture '" + binding.name + "'");
+  auto uploaded = upload(image, *stored, "texture '" + binding.name + "'");
   if (!uploaded) return uploaded.error();
-  uploads_.push_back({given->second, *format, std::move(*uploaded)});
+  uploads_.push_back({&image, stored, std::move(*uploaded)});
   return uploads_.back().texture.get();
 }
 

@@ -21,8 +21,9 @@ class PassInputs {
  public:
   // `image` is read as `texture`; it must outlive this. One image given for
   // two textures (the map as shadow_depth and shadow_cmp) is uploaded once
-  // per format.
-  void give(TextureId texture, const FloatImage& image);
+  // per format. Where the binding is GL_DEPTH_COMPONENT32F, the texture is
+  // `depth`'s (an engine's D24 or D16 map).
+  void give(TextureId texture, const FloatImage& image, DepthFormat depth = DepthFormat::d32_float);
 
   // `name`, a texture in `format` an earlier pass drew (`origin` says which,
   // for errors), is read as `texture`, replacing what was read as it.
@@ -46,7 +47,11 @@ class PassInputs {
     const TexelFormat* format;
     std::string origin;
   };
-  std::map<TextureId, const FloatImage*> given_;
+  struct Given {
+    const FloatImage* image;
+    DepthFormat depth;
+  };
+  std::map<TextureId, Given> given_;
   std::vector<Upload> uploads_;
   std::map<TextureId, Drawn> drawn_;
 };

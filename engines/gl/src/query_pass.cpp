@@ -62,14 +62,15 @@ Result<GlQueryOutput> run_query_pass(const GlQueryPasses& passes, const QueryInp
 }
 
 Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& normalized_depth,
-                                        const FloatImage& camera_depth, const ParamBlock& params) {
+                                        const FloatImage& camera_depth, const ParamBlock& params,
+                                        DepthFormat map_format) {
   PENUMBRA_TRY(check_shadow_map(normalized_depth));
   PENUMBRA_TRY(check_shadow_map(camera_depth));
   auto deferred = prepare_pass(pass, PassKind::deferred);
   if (!deferred) return deferred.error();
   PassInputs inputs;
-  inputs.give(TextureId::shadow_depth, normalized_depth);
-  inputs.give(TextureId::shadow_cmp, normalized_depth);
+  inputs.give(TextureId::shadow_depth, normalized_depth, map_format);
+  inputs.give(TextureId::shadow_cmp, normalized_depth, map_format);
   // Uploaded in the binding's format: a depth texture, as the engine's
   // camera drew it.
   inputs.give(TextureId::camera_depth, camera_depth);

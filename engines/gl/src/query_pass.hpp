@@ -40,6 +40,7 @@ Result<GlQueryOutput> run_query_pass(const GlQueryPasses& passes, const QueryInp
 // See GlEngine::run_deferred. Every object it creates is deleted before it
 // returns.
 Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& normalized_depth,
-                                        const FloatImage& camera_depth, const ParamBlock& params);
+                                        const FloatImage& camera_depth, const ParamBlock& params,
+                                        DepthFormat map_format);
 
 }  // namespace penumbra::gl

@@ -18,7 +18,7 @@ constexpr const char* kWhere = "surface pass";
 Result<FloatImage> run_surface_pass(const GlPass& surface,
                                     std::span<const std::array<float, 3>> triangles,
                                     const FloatImage& normalized_depth, int width, int height,
-                                    const ParamBlock& params) {
+                                    const ParamBlock& params, DepthFormat map_format) {
   if (triangles.size() % 3 != 0) {
     return make_error(Error::Kind::bad_input, kWhere,
                       std::to_string(triangles.size()) +
@@ -34,8 +34,8 @@ Result<FloatImage> run_surface_pass(const GlPass& surface,
   auto pass = prepare_program(surface, kWhere, 3);
   if (!pass) return pass.error();
   PassInputs inputs;
-  inputs.give(TextureId::shadow_depth, normalized_depth);
-  inputs.give(TextureId::shadow_cmp, normalized_depth);
+  inputs.give(TextureId::shadow_depth, normalized_depth, map_format);
+  inputs.give(TextureId::shadow_cmp, normalized_depth, map_format);
 
   auto colour = create_pass_target(*pass, width, height, "the surface pass's target");
   if (!colour) return colour.error();

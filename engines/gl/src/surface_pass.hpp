@@ -13,6 +13,6 @@ namespace penumbra::gl {
 Result<FloatImage> run_surface_pass(const GlPass& surface,
                                     std::span<const std::array<float, 3>> triangles,
                                     const FloatImage& normalized_depth, int width, int height,
-                                    const ParamBlock& params);
+                                    const ParamBlock& params, DepthFormat map_format);
 
 }  // namespace penumbra::gl

@@ -15,7 +15,19 @@ constexpr TexelFormat kFormats[] = {
     {TextureFormat::d32_float, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1},
 };
 
+// Indexed by DepthFormat. Uploads pass floats; GL rounds them to the unorm
+// codes, which the maps' values already are.
+constexpr TexelFormat kDepthFormats[] = {
+    kFormats[static_cast<std::size_t>(TextureFormat::d32_float)],
+    {TextureFormat::d32_float, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, 1, "GL_DEPTH_COMPONENT24"},
+    {TextureFormat::d32_float, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, 1, "GL_DEPTH_COMPONENT16"},
+};
+
 }  // namespace
+
+const TexelFormat& depth_texel_format(DepthFormat format) {
+  return kDepthFormats[static_cast<std::size_t>(format)];
+}
 
 Result<const TexelFormat*> texel_format(std::string_view name, const std::string& where,
                                         const std::string& what) {

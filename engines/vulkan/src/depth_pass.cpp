@@ -12,13 +12,13 @@ namespace penumbra::detail {
 
 Result<std::unique_ptr<ShadowMapImages>> render_depth(
     Context& context, const PassProgram& program, std::span<const std::array<float, 3>> triangles,
-    int width, int height, const ParamBlock& params) {
+    int width, int height, const ParamBlock& params, DepthFormat depth_format) {
   if (triangles.size() % 3 != 0) {
     return make_error(Error::Kind::bad_input, "depth pass",
                       std::to_string(triangles.size()) +
                           " vertices are not a whole number of triangles (a triangle list)");
   }
-  auto images = create_shadow_map_images(context, width, height);
+  auto images = create_shadow_map_images(context, width, height, depth_format);
   if (!images) return images.error();
 
   std::vector<float> positions;

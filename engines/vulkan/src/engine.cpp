@@ -43,9 +43,10 @@ const DeviceInfo& Engine::device_info() const {
 
 Result<std::shared_ptr<ShadowMap>> Engine::render_depth(
     const PassProgram& depth, std::span<const std::array<float, 3>> triangles, int width,
-    int height, const ParamBlock& params) {
+    int height, const ParamBlock& params, DepthFormat depth_format) {
   return detail::run_validated(*context_->validation, [&]() -> Result<std::shared_ptr<ShadowMap>> {
-    auto images = detail::render_depth(*context_, depth, triangles, width, height, params);
+    auto images =
+        detail::render_depth(*context_, depth, triangles, width, height, params, depth_format);
     if (!images) return images.error();
     return std::shared_ptr<ShadowMap>(new ShadowMap(std::move(*images)));
   });

@@ -104,6 +104,25 @@ VkFormat vk_format(TextureFormat format) {
   return VK_FORMAT_UNDEFINED;
 }
 
+VkFormat vk_depth_format(DepthFormat format) {
+  switch (format) {
+    case DepthFormat::d32_float:
+      return VK_FORMAT_D32_SFLOAT;
+    case DepthFormat::d24_unorm:
+      return VK_FORMAT_X8_D24_UNORM_PACK32;
+    case DepthFormat::d16_unorm:
+      return VK_FORMAT_D16_UNORM;
+  }
+  return VK_FORMAT_UNDEFINED;
+}
+
+std::optional<DepthFormat> depth_format_of(VkFormat format) {
+  for (const DepthFormat depth : kAllDepthFormats) {
+    if (vk_depth_format(depth) == format) return depth;
+  }
+  return std::nullopt;
+}
+
 Result<TextureFormat> reflected_format(Target target, std::string_view api_name,
                                        std::string_view where) {
   if (auto format = parse_api_format(target, api_name)) return *format;
@@ -117,7 +136,21 @@ std::string_view api_name(Target target, VkFormat format) {
   for (TextureFormat known : kTextureFormats) {
     if (vk_format(known) == format) return api_format(target, known);
   }
+  if (depth_format_of(format)) return vk::format_name(format);
   return "an unknown format";
+}
+
+Status check_depth_format(const vk::Device& device, VkFormat format) {
+  for (const Requirement& requirement : kRequirements) {
+    if (requirement.format != kMapDepthFormat) continue;
+    if ((features_of(device, format).optimal_tiling & requirement.feature) == 0) {
+      return make_error(Error::Kind::device, "vkGetPhysicalDeviceFormatProperties",
+                        std::string(device.properties().deviceName) + " does not support " +
+                            vk::format_name(format) + " with " + requirement.feature_name +
+                            " (optimal tiling), which " + requirement.needed_for + " need(s)");
+    }
+  }
+  return {};
 }
 
 Status check_format_support(const vk::Device& device) {

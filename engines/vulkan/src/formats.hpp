@@ -4,8 +4,10 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/result.hpp"
 #include "vk/device.hpp"
@@ -43,6 +45,16 @@ inline constexpr ColourTarget kCompositeTarget{"R32G32B32A32_SFLOAT", 4};  // kC
 
 // The Vulkan format of a TextureFormat (d32_float: D32_SFLOAT).
 VkFormat vk_format(TextureFormat format);
+
+// The depth image of a map in `format`: D32_SFLOAT, X8_D24_UNORM_PACK32 or
+// D16_UNORM. Each stands for the reflection's d32_float.
+VkFormat vk_depth_format(DepthFormat format);
+// `format` as a DepthFormat; none for a colour format.
+std::optional<DepthFormat> depth_format_of(VkFormat format);
+
+// An Error naming the feature a map's depth image in `format` lacks: the
+// depth pass's attachment, sampling, comparison and transfers.
+Status check_depth_format(const vk::Device& device, VkFormat format);
 
 // The TextureFormat that `target`'s API calls `api_name` (api_format()'s
 // inverse), as index.json's reflection writes formats. A name the target

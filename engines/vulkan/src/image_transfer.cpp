@@ -1,8 +1,11 @@
 #include "image_transfer.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string>
 
+#include "penumbra/model/depth_format.hpp"
 #include "vk/barrier.hpp"
 #include "vk/buffer.hpp"
 
@@ -15,6 +18,30 @@ VkBufferImageCopy image_region(const vk::Image& image, std::uint32_t level, VkEx
   region.imageSubresource = {image.desc().aspect, level, 0, 1};
   region.imageExtent = {extent.width, extent.height, 1};
   return region;
+}
+
+// `bytes_per_texel` bytes of each texel in [0, extent) of level `level`,
+// tightly packed, row 0 first.
+Result<std::vector<std::byte>> read_bytes(const vk::Device& device, vk::CommandContext& commands,
+                                          const vk::Image& image, VkImageLayout layout,
+                                          std::uint32_t level, VkExtent2D extent,
+                                          std::size_t bytes_per_texel, std::string_view what) {
+  std::vector<std::byte> bytes(std::size_t{extent.width} * extent.height * bytes_per_texel);
+  auto staging = vk::Buffer::create(device, bytes.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    "the readback buffer for " + std::string(what));
+  if (!staging) return staging.error();
+  const VkBufferImageCopy region = image_region(image, level, extent);
+  PENUMBRA_TRY(commands.submit(
+      [&](VkCommandBuffer cmd) {
+        vk::transition(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        vkCmdCopyImageToBuffer(cmd, image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               staging->get(), 1, &region);
+        vk::transition(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
+        vk::transfer_writes_to_host(cmd);
+      },
+      "the readback of " + std::string(what)));
+  std::memcpy(bytes.data(), staging->bytes().data(), bytes.size());
+  return bytes;
 }
 
 }  // namespace
@@ -47,22 +74,40 @@ Result<std::vector<float>> read_image_region(const vk::Device& device, vk::Comma
                                              const vk::Image& image, VkImageLayout layout,
                                              std::uint32_t level, VkExtent2D extent,
                                              std::uint32_t components, std::string_view what) {
-  std::vector<float> texels(static_cast<std::size_t>(extent.width) * extent.height * components);
-  auto staging =
-      vk::Buffer::create(device, texels.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                         "the readback buffer for " + std::string(what));
-  if (!staging) return staging.error();
-  const VkBufferImageCopy region = image_region(image, level, extent);
-  PENUMBRA_TRY(commands.submit(
-      [&](VkCommandBuffer cmd) {
-        vk::transition(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        vkCmdCopyImageToBuffer(cmd, image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               staging->get(), 1, &region);
-        vk::transition(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout);
-        vk::transfer_writes_to_host(cmd);
-      },
-      "the readback of " + std::string(what)));
-  std::memcpy(texels.data(), staging->bytes().data(), texels.size() * sizeof(float));
+  PENUMBRA_TRY_ASSIGN(
+      const std::vector<std::byte> bytes,
+      read_bytes(device, commands, image, layout, level, extent, components * sizeof(float), what));
+  std::vector<float> texels(bytes.size() / sizeof(float));
+  std::memcpy(texels.data(), bytes.data(), bytes.size());
+  return texels;
+}
+
+Result<std::vector<float>> read_depth_image(const vk::Device& device, vk::CommandContext& commands,
+                                            const vk::Image& image, VkImageLayout layout,
+                                            std::string_view what) {
+  const VkFormat format = image.desc().format;
+  if (format == VK_FORMAT_D32_SFLOAT) return read_image(device, commands, image, layout, 1, what);
+  // Copies of D16 give 16-bit codes; of X8_D24, 32-bit words whose low 24
+  // bits are the code.
+  const bool d16 = format == VK_FORMAT_D16_UNORM;
+  const DepthFormat depth = d16 ? DepthFormat::d16_unorm : DepthFormat::d24_unorm;
+  PENUMBRA_TRY_ASSIGN(const std::vector<std::byte> bytes,
+                      read_bytes(device, commands, image, layout, 0, image.extent(),
+                                 d16 ? sizeof(std::uint16_t) : sizeof(std::uint32_t), what));
+  std::vector<float> texels;
+  texels.reserve(bytes.size() / (d16 ? 2 : 4));
+  for (std::size_t at = 0; at < bytes.size(); at += d16 ? 2 : 4) {
+    std::uint32_t code = 0;
+    if (d16) {
+      std::uint16_t code16 = 0;
+      std::memcpy(&code16, bytes.data() + at, sizeof(code16));
+      code = code16;
+    } else {
+      std::memcpy(&code, bytes.data() + at, sizeof(code));
+      code &= 0xFFFFFFu;
+    }
+    texels.push_back(static_cast<float>(code * depth_step(depth)));
+  }
   return texels;
 }
 

@@ -27,6 +27,12 @@ Result<std::vector<float>> read_image(const vk::Device& device, vk::CommandConte
                                       const vk::Image& image, VkImageLayout layout,
                                       std::uint32_t components, std::string_view what);
 
+// A depth image's level 0 (D32_SFLOAT, X8_D24_UNORM_PACK32 or D16_UNORM),
+// in `layout` and left in it, as the floats its sampler returns.
+Result<std::vector<float>> read_depth_image(const vk::Device& device, vk::CommandContext& commands,
+                                            const vk::Image& image, VkImageLayout layout,
+                                            std::string_view what);
+
 // The same for the texels [0, extent) of mip level `level`.
 Result<std::vector<float>> read_image_region(const vk::Device& device, vk::CommandContext& commands,
                                              const vk::Image& image, VkImageLayout layout,

@@ -55,7 +55,10 @@ Result<const OfferedImage*> find_image(const PassResources& resources,
   std::string offered;
   for (const OfferedImage& image : resources.images) {
     if (image.texture != binding.texture->id) continue;
-    if (image.image->desc().format == format) return &image;
+    const VkFormat held = image.image->desc().format;
+    // A D24 or D16 map stands where the reflection says D32_SFLOAT: shaders
+    // read every depth format as a float.
+    if (held == format || (format == kMapDepthFormat && depth_format_of(held))) return &image;
     offered +=
         (offered.empty() ? "" : ", ") + std::string(api_name(target, image.image->desc().format));
   }

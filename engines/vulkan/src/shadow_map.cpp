@@ -10,11 +10,15 @@ namespace penumbra {
 namespace detail {
 
 Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context& context, int width,
-                                                                  int height) {
+                                                                  int height,
+                                                                  DepthFormat depth_format) {
   PENUMBRA_TRY(context.check_extent(width, height, "shadow map"));
+  const VkFormat format = vk_depth_format(depth_format);
+  // D32_SFLOAT is checked when the engine starts; D24 is optional in Vulkan.
+  if (format != kMapDepthFormat) PENUMBRA_TRY(check_depth_format(*context.device, format));
   const auto w = static_cast<std::uint32_t>(width);
   const auto h = static_cast<std::uint32_t>(height);
-  const vk::ImageDesc depth_desc{w, h, kMapDepthFormat,
+  const vk::ImageDesc depth_desc{w, h, format,
                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT,

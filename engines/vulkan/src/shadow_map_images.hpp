@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "context.hpp"
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/support/minmax_levels.hpp"
 #include "vk/image.hpp"
 
@@ -31,15 +32,17 @@ struct ShadowMapImages {
   // First, so it is released after both images. Also identifies the only
   // Context that may use them: the one with the same device.
   std::shared_ptr<const vk::Device> device;
-  vk::Image depth;                     // D32_SFLOAT
-  vk::Image colour;                    // R32_SFLOAT, the same values
+  vk::Image depth;                     // D32_SFLOAT, or a unorm depth format
+  vk::Image colour;                    // R32_SFLOAT, the shader's depth output
   std::optional<MinmaxMip> minmax;     // once built (Engine::build_minmax)
   std::optional<double> depth_gpu_ms;  // the depth pass that drew it, when timed
 };
 
 // Both images, uninitialized (layout UNDEFINED), usable as attachments,
-// sampled images and transfer source/destination.
-Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(const Context& context, int width,
-                                                                  int height);
+// sampled images and transfer source/destination; the depth image in
+// `depth_format`, an Error where the device cannot use it so.
+Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(
+    const Context& context, int width, int height,
+    DepthFormat depth_format = DepthFormat::d32_float);
 
 }  // namespace penumbra::detail

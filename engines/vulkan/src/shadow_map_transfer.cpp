@@ -25,7 +25,9 @@ namespace {
 
 Result<FloatImage> read_map_image(Context& context, const vk::Image& image, VkImageLayout layout,
                                   const std::string& what) {
-  auto texels = read_image(*context.device, *context.commands, image, layout, 1, what);
+  auto texels = image.desc().aspect == VK_IMAGE_ASPECT_DEPTH_BIT
+                    ? read_depth_image(*context.device, *context.commands, image, layout, what)
+                    : read_image(*context.device, *context.commands, image, layout, 1, what);
   if (!texels) return texels.error();
   FloatImage out(static_cast<int>(image.desc().width), static_cast<int>(image.desc().height), 1);
   out.data = std::move(*texels);

@@ -38,6 +38,8 @@ constexpr std::pair<VkResult, const char*> kResultNames[] = {
 
 constexpr std::pair<VkFormat, const char*> kFormatNames[] = {
     {VK_FORMAT_D32_SFLOAT, "VK_FORMAT_D32_SFLOAT"},
+    {VK_FORMAT_X8_D24_UNORM_PACK32, "VK_FORMAT_X8_D24_UNORM_PACK32"},
+    {VK_FORMAT_D16_UNORM, "VK_FORMAT_D16_UNORM"},
     {VK_FORMAT_R32_SFLOAT, "VK_FORMAT_R32_SFLOAT"},
     {VK_FORMAT_R32G32_SFLOAT, "VK_FORMAT_R32G32_SFLOAT"},
     {VK_FORMAT_R32G32B32_SFLOAT, "VK_FORMAT_R32G32B32_SFLOAT"},

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/support/image.hpp"
 
@@ -17,13 +18,16 @@ namespace penumbra::reference {
 struct EncodedDepth {
   MapEncoding encoding = MapEncoding::perspective;
   DepthRange range;
+  DepthFormat format = DepthFormat::d32_float;  // the depth texture holding it
 };
 
 // How far from a texel's depth z a receiver's (biased) depth must lie for
 // every conformant shader to compare it as the exact decoding does: the
 // shader encodes the reference in float32 (a subtraction and a division
 // over operands the size of 1, within 16 ulp of 1 in the stored value) and
-// rounds z_r - bias (a quarter of that, relative to z).
+// rounds z_r - bias (a quarter of that, relative to z). A unorm map adds one
+// step of its format: hardware may compare at the texture's precision,
+// rounding the reference to a neighbouring code.
 double tie_margin(const EncodedDepth& encoded, double z);
 
 class ShadowMapView {

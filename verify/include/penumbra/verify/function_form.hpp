@@ -7,6 +7,7 @@
 #pragma once
 
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/verify/stage_picture.hpp"
 #include "penumbra/vulkan/engine.hpp"
@@ -20,6 +21,9 @@ struct EngineFormCheck {
   std::string backend = "vulkan";  // the path that ran it (verify.json's backend)
   Execution execution;             // how the shaders reached the device
   std::string error;               // why it could not run (verify_library's checks)
+  // The depth image the map was read from: an encoded map's D24 or D16 on
+  // the paths that read the Vulkan engine's map (docs/verification.md).
+  DepthFormat map_format = DepthFormat::d32_float;
   // The visibility against the reference evaluated on the receivers the
   // GPU called the function with (u, v and z_r from the clip position it
   // wrote) or, for the deferred pass, rebuilt from the camera's depth as
@@ -40,17 +44,21 @@ struct EngineFormCheck {
 // by engine shaders compiled with the target's front end, writing each
 // pixel's light clip position and visibility. Errors: bad_input
 // when the library has no function form for `target`; a front end's or the
-// engine's error.
+// engine's error. `map_format`: the map's depth image, as prepare_scene()
+// takes it (an encoded map's D24 or D16).
 Result<EngineFormCheck> check_function_form(Engine& engine, const Library& library,
-                                            const LibraryVariant& entry, Target target);
+                                            const LibraryVariant& entry, Target target,
+                                            DepthFormat map_format = DepthFormat::d32_float);
 
 // `entry`'s deferred pass for `target` on `engine`: the map drawn by the
 // target's depth pass, the report's stage seen by its camera as a depth
 // buffer in `target`'s conventions (reversed-Z with a reversed-Z map), and
 // the pass rebuilding each pixel's receiver from it with the matrices in
 // ShadowParams. Errors: bad_input when the library has no deferred pass for
-// `target`; a front end's or the engine's error.
+// `target`; a front end's or the engine's error. `map_format` as
+// check_function_form()'s.
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& library,
-                                            const LibraryVariant& entry, Target target);
+                                            const LibraryVariant& entry, Target target,
+                                            DepthFormat map_format = DepthFormat::d32_float);
 
 }  // namespace penumbra

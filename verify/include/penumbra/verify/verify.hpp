@@ -9,6 +9,7 @@
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
 #include "penumbra/compiler/library.hpp"
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/support/shard.hpp"
@@ -33,6 +34,11 @@ struct VerifyOptions {
   // Only these paths (verify.json's backend names: "vulkan", "bytecode",
   // "gl", "d3d9", "d3d10", "d3d11"); empty = every path.
   std::vector<std::string> paths = {};
+  // The depth image of maps in a hardware encoding (perspective,
+  // perspective_reversed) on the paths that read the Vulkan engine's maps
+  // and on gl: d24_unorm or d16_unorm as engines store them. Linear maps,
+  // hlsl_dx9's R32F map and Wine's runtimes' own maps stay float.
+  DepthFormat map_format = DepthFormat::d32_float;
   // vkd3d-compiler for the Direct3D bytecode path, and for the engine's
   // own HLSL around each function form on that path and Wine's; with none
   // (empty compiler), the bytecode path's runs are reported not executed
@@ -102,9 +108,12 @@ struct DepthCheck {
   std::string scene;
   Target target = Target::spirv;
   std::string backend = "vulkan";  // the path whose map it is (verify.json's backend)
-  MapEncoding map_encoding = MapEncoding::linear;  // what the map stores
-  std::size_t texels = 0;      // texels whose centre is clear of every occluder edge
-  std::size_t mismatched = 0;  // of those, |gpu - ray cast| > 1e-5 relative
+  MapEncoding map_encoding = MapEncoding::linear;   // what the map stores
+  DepthFormat map_format = DepthFormat::d32_float;  // in which depth image
+  std::size_t texels = 0;  // texels whose centre is clear of every occluder edge
+  // Of those, |gpu - ray cast| > 1e-5 relative, plus the z one step of a
+  // unorm format spans there.
+  std::size_t mismatched = 0;
   double max_abs_error = 0.0;
   bool pass = false;
   double seconds = 0.0;  // rendering and checking the map

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
@@ -102,10 +103,13 @@ class Engine {
   // culling) with the depth program into a new width x height shadow map:
   // both images cleared to 1.0, depth test LESS (a reversed-Z program, by its
   // reflection's map_encoding: 0.0 and GREATER), the fragment's output 0 into
-  // the colour image and its depth into the depth image.
-  Result<std::shared_ptr<ShadowMap>> render_depth(const PassProgram& depth,
-                                                  std::span<const std::array<float, 3>> triangles,
-                                                  int width, int height, const ParamBlock& params);
+  // the colour image and its depth into the depth image, a `depth_format`
+  // image (D24 and D16 as an engine's hardware depth map is stored; programs
+  // then read shadow_depth from it too). Errors: device where the device
+  // cannot render, sample or copy that format.
+  Result<std::shared_ptr<ShadowMap>> render_depth(
+      const PassProgram& depth, std::span<const std::array<float, 3>> triangles, int width,
+      int height, const ParamBlock& params, DepthFormat depth_format = DepthFormat::d32_float);
 
   // A new shadow map holding `normalized_depth` (one channel, every value in
   // [0, 1], row 0 first) in both of its images.
@@ -113,7 +117,8 @@ class Engine {
 
   // The colour image's normalized depth, one channel, row 0 first.
   Result<FloatImage> read_shadow_map(const ShadowMap& map);
-  // The depth image's values, likewise: what programs with `shadow_cmp` read.
+  // The depth image's values, likewise: what programs with `shadow_cmp` read
+  // (a unorm image's codes as the floats its sampler returns).
   // The same as read_shadow_map() for a linear map; for an engine's hardware
   // depth (a map_encoding) the rasterizer's depth, where the colour image
   // holds the shader's encoding of the same surface.
