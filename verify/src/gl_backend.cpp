@@ -183,7 +183,7 @@ class GlBackend final : public Backend {
     std::optional<GlMinmaxPasses> minmax;
     if (texts.minmax) minmax.emplace(pass(texts.minmax->init), pass(texts.minmax->reduce));
     auto output = engine_->run_query({pass(texts.query), minmax}, fixture.normalized_depth,
-                                     fixture.receivers, fixture.params);
+                                     fixture.receivers, fixture.params, fixture.map_format());
     if (!output) return output.error();
     return scene_output(std::move(output->visibility), std::move(output->texel_reads));
   }

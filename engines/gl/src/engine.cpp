@@ -52,10 +52,11 @@ const GlInfo& GlEngine::info() const {
 
 Result<GlQueryOutput> GlEngine::run_query(const GlQueryPasses& passes,
                                           const FloatImage& normalized_depth,
-                                          const FloatImage& receivers, const ParamBlock& params) {
+                                          const FloatImage& receivers, const ParamBlock& params,
+                                          DepthFormat map_format) {
   auto current = context_->egl.make_current();
   if (!current) return current.error();
-  return gl::run_query_pass(passes, {normalized_depth, receivers, params});
+  return gl::run_query_pass(passes, {normalized_depth, receivers, params, map_format});
 }
 
 Result<GlQueryOutput> GlEngine::run_deferred(const GlPass& deferred,

@@ -10,8 +10,8 @@
 namespace penumbra::gl {
 
 void give_query_images(PassInputs& inputs, const QueryInputs& images) {
-  inputs.give(TextureId::shadow_depth, images.normalized_depth);
-  inputs.give(TextureId::shadow_cmp, images.normalized_depth);
+  inputs.give(TextureId::shadow_depth, images.normalized_depth, images.map_format);
+  inputs.give(TextureId::shadow_cmp, images.normalized_depth, images.map_format);
   inputs.give(TextureId::receivers, images.receivers);
 }
 

@@ -19,6 +19,7 @@ struct QueryInputs {
   const FloatImage& normalized_depth;  // checked by check_shadow_map
   const FloatImage& receivers;         // checked by check_receivers
   const ParamBlock& params;
+  DepthFormat map_format = DepthFormat::d32_float;  // the map's depth texture
 };
 
 // The query's images: the map as shadow_depth and shadow_cmp, the receivers.

@@ -53,7 +53,8 @@ Result<GlScreenBlurOutput> run_screen_blur_chain(const GlScreenBlurPasses& passe
   const FloatImage& screen = inputs.receivers;
   ParamBlock screen_params = inputs.params;
   screen_params["screen_size"] = size_vec4(screen.width, screen.height);
-  const QueryInputs query_images{inputs.normalized_depth, inputs.receivers, screen_params};
+  const QueryInputs query_images{inputs.normalized_depth, inputs.receivers, screen_params,
+                                 DepthFormat::d32_float};
   PassInputs textures;
   give_query_images(textures, query_images);
   textures.give(TextureId::scene_colour, inputs.scene_colour);

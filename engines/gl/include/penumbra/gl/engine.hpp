@@ -121,9 +121,12 @@ class GlEngine {
   // "minmax_init pass", ...) or the input: compile (a stage's or the link's
   // log), bad_input (inputs; a program that disagrees with its reflection,
   // e.g. an active uniform the reflection lacks; a missing parameter; a
-  // query reading shadow_minmax without `passes.minmax`), device.
+  // query reading shadow_minmax without `passes.minmax`), device. The map is
+  // a `map_format` depth texture: an engine's D24 or D16 map holds values
+  // those formats represent.
   Result<GlQueryOutput> run_query(const GlQueryPasses& passes, const FloatImage& normalized_depth,
-                                  const FloatImage& receivers, const ParamBlock& params);
+                                  const FloatImage& receivers, const ParamBlock& params,
+                                  DepthFormat map_format = DepthFormat::d32_float);
 
   // Runs a deferred pass (docs/deferred-mask.md) as run_query runs a query,
   // into a target of `camera_depth`'s size: `camera_depth` is one channel
