@@ -1,6 +1,5 @@
 #include "penumbra/model/depth_format.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace penumbra {
@@ -22,18 +21,8 @@ double depth_step(DepthFormat format) {
   return bits == 0 ? 0.0 : 1.0 / (std::ldexp(1.0, bits) - 1.0);
 }
 
-unsigned unorm_code(DepthFormat format, double depth) {
-  const int bits = unorm_bits(format);
-  if (bits == 0) return 0;
-  const double largest = std::ldexp(1.0, bits) - 1.0;
-  // NaN clamps to 0, as the APIs' float-to-unorm conversion does.
-  const double clamped = std::isnan(depth) ? 0.0 : std::clamp(depth, 0.0, 1.0);
-  return static_cast<unsigned>(std::nearbyint(clamped * largest));
-}
-
-float stored_depth(DepthFormat format, double depth) {
-  if (format == DepthFormat::d32_float) return static_cast<float>(depth);
-  return static_cast<float>(unorm_code(format, depth) * depth_step(format));
+float unorm_depth(DepthFormat format, std::uint32_t code) {
+  return static_cast<float>(code * depth_step(format));
 }
 
 std::string_view to_string(DepthFormat format) {

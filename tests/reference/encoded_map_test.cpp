@@ -52,18 +52,15 @@ TEST(MapEncoding, EndsOfTheRangeAndInverse) {
 
 // A receiver at the depth of the texels it reads is a tie; a bias larger
 // than tie_margin() settles it.
-// Unorm codes round to nearest and clamp; a unorm map's tie margin is one
-// step wider, carried into z.
-TEST(DepthFormat, CodesRoundToNearestAndWidenTheTieMargin) {
-  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 0.0), 0u);
-  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 1.0), 65535u);
-  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 2.0), 65535u);
-  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, -1.0), 0u);
-  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 0.4 / 65535.0), 0u);
-  EXPECT_EQ(unorm_code(DepthFormat::d16_unorm, 0.6 / 65535.0), 1u);
-  EXPECT_EQ(unorm_code(DepthFormat::d24_unorm, 1.0), 16777215u);
-  EXPECT_EQ(stored_depth(DepthFormat::d16_unorm, 0.5), float(32768.0 / 65535.0));
-  EXPECT_EQ(stored_depth(DepthFormat::d32_float, 0.1), 0.1f);
+// Unorm codes read as code / (2^bits - 1), both ends exact; a unorm map's
+// tie margin is one step wider, carried into z.
+TEST(DepthFormat, CodesReadAsTheirStepAndWidenTheTieMargin) {
+  EXPECT_EQ(unorm_depth(DepthFormat::d16_unorm, 0), 0.0f);
+  EXPECT_EQ(unorm_depth(DepthFormat::d16_unorm, 65535), 1.0f);
+  EXPECT_EQ(unorm_depth(DepthFormat::d24_unorm, 16777215), 1.0f);
+  EXPECT_EQ(unorm_depth(DepthFormat::d16_unorm, 32768), float(32768.0 / 65535.0));
+  EXPECT_EQ(depth_step(DepthFormat::d32_float), 0.0);
+  EXPECT_EQ(depth_step(DepthFormat::d16_unorm), 1.0 / 65535.0);
   for (const DepthFormat format : kAllDepthFormats) {
     EXPECT_EQ(parse_depth_format(to_string(format)), format);
   }

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -122,8 +123,8 @@ TEST(DepthPassTest, UnormDepthImagesHoldTheirFormatsCodes) {
     int rounded = 0;
     for (std::size_t t = 0; t < depth->data.size(); ++t) {
       // D24's codes are not all floats: the nearest float to a whole step.
-      const double code = std::round(depth->data[t] / step);
-      EXPECT_EQ(depth->data[t], static_cast<float>(code * step)) << "texel " << t;
+      const auto code = static_cast<std::uint32_t>(std::lround(depth->data[t] / step));
+      EXPECT_EQ(depth->data[t], unorm_depth(format, code)) << "texel " << t;
       EXPECT_LE(std::abs(double(depth->data[t]) - exact_depth->data[t]), step) << "texel " << t;
       rounded += depth->data[t] != exact_depth->data[t];
     }

@@ -23,13 +23,11 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
   return out;
 }
 
-EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend,
-                              const CameraStage& camera) {
+EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend) {
   EngineFormCheck check;
   check.variant = entry.variant.name;
   check.target = target;
   check.backend = backend.name();
-  check.map_format = camera.fixture.map_format();
   return check;
 }
 
@@ -41,10 +39,8 @@ Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVarian
   EngineMap map{own_map ? *own_map : fixture.normalized_depth, fixture.encoded,
                 depth_scale_for(fixture.scene.far_z)};
   // A path's own map (Wine's runtimes draw theirs) is a float one.
-  if (own_map && map.encoded) {
-    map.encoded->format = DepthFormat::d32_float;
-    check.map_format = DepthFormat::d32_float;
-  }
+  if (own_map && map.encoded) map.encoded->format = DepthFormat::d32_float;
+  check.map_format = map.encoded ? map.encoded->format : DepthFormat::d32_float;
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
   PENUMBRA_TRY_ASSIGN(

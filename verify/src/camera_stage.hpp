@@ -29,10 +29,8 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
                                  const LibraryVariant& entry, Target target,
                                  DepthFormat map_format);
 
-// A check of `entry` on `target` by `backend` on `camera`'s map, its
-// results to come.
-EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend,
-                              const CameraStage& camera);
+// A check of `entry` on `target` by `backend`, its results to come.
+EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend);
 
 // `check`'s results: `visibility` (channel `channel`) against the reference
 // at `receivers` on the map the picture read (`own_stored_depth`, or the

@@ -190,7 +190,7 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
         "the library has no deferred pass for target " + std::string(to_string(target)));
   }
   PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target, map_format));
-  EngineFormCheck check = started_check(entry, target, backend, camera);
+  EngineFormCheck check = started_check(entry, target, backend);
   const Matrix4 camera_matrix = camera_clip(camera.stage, camera.width, camera.height, target);
   const Matrix4 camera_inverse = inverse(camera_matrix);
   const Matrix4 light = light_clip(camera.stage.scene.light, target);

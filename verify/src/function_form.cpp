@@ -32,7 +32,7 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
         "the library has no function form for target " + std::string(to_string(target)));
   }
   PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target, map_format));
-  EngineFormCheck check = started_check(entry, target, backend, camera);
+  EngineFormCheck check = started_check(entry, target, backend);
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
   SurfaceDraw draw;
   draw.library = &library;

@@ -88,6 +88,20 @@ FormatFeatures features_of(const vk::Device& device, VkFormat format) {
   return features;
 }
 
+// An Error naming the device, `format` and the feature `requirement` asks
+// of it, where the device lacks it.
+Status require(const vk::Device& device, VkFormat format, const Requirement& requirement) {
+  const FormatFeatures features = features_of(device, format);
+  const VkFormatFeatureFlags2 supported =
+      requirement.vertex_buffer ? features.buffer : features.optimal_tiling;
+  if ((supported & requirement.feature) != 0) return {};
+  return make_error(Error::Kind::device, "vkGetPhysicalDeviceFormatProperties",
+                    std::string(device.properties().deviceName) + " does not support " +
+                        vk::format_name(format) + " with " + requirement.feature_name + " (" +
+                        (requirement.vertex_buffer ? "buffer" : "optimal tiling") + "), which " +
+                        requirement.needed_for + " need(s)");
+}
+
 }  // namespace
 
 VkFormat vk_format(TextureFormat format) {
@@ -142,13 +156,7 @@ std::string_view api_name(Target target, VkFormat format) {
 
 Status check_depth_format(const vk::Device& device, VkFormat format) {
   for (const Requirement& requirement : kRequirements) {
-    if (requirement.format != kMapDepthFormat) continue;
-    if ((features_of(device, format).optimal_tiling & requirement.feature) == 0) {
-      return make_error(Error::Kind::device, "vkGetPhysicalDeviceFormatProperties",
-                        std::string(device.properties().deviceName) + " does not support " +
-                            vk::format_name(format) + " with " + requirement.feature_name +
-                            " (optimal tiling), which " + requirement.needed_for + " need(s)");
-    }
+    if (requirement.format == kMapDepthFormat) PENUMBRA_TRY(require(device, format, requirement));
   }
   return {};
 }
@@ -159,17 +167,7 @@ Status check_format_support(const vk::Device& device) {
   static_assert(kSceneColourFormat == kReceiversFormat && kCompositeFormat == kReceiversFormat,
                 "one RGBA32F requirement list serves receivers, scene colour and composite");
   for (const Requirement& requirement : kRequirements) {
-    const FormatFeatures features = features_of(device, requirement.format);
-    const VkFormatFeatureFlags2 supported =
-        requirement.vertex_buffer ? features.buffer : features.optimal_tiling;
-    if ((supported & requirement.feature) == 0) {
-      return make_error(Error::Kind::device, "vkGetPhysicalDeviceFormatProperties",
-                        std::string(device.properties().deviceName) + " does not support " +
-                            vk::format_name(requirement.format) + " with " +
-                            requirement.feature_name + " (" +
-                            (requirement.vertex_buffer ? "buffer" : "optimal tiling") +
-                            "), which " + requirement.needed_for + " need(s)");
-    }
+    PENUMBRA_TRY(require(device, requirement.format, requirement));
   }
   return {};
 }

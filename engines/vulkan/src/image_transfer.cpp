@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "formats.hpp"
 #include "penumbra/model/depth_format.hpp"
 #include "vk/barrier.hpp"
 #include "vk/buffer.hpp"
@@ -85,28 +86,27 @@ Result<std::vector<float>> read_image_region(const vk::Device& device, vk::Comma
 Result<std::vector<float>> read_depth_image(const vk::Device& device, vk::CommandContext& commands,
                                             const vk::Image& image, VkImageLayout layout,
                                             std::string_view what) {
-  const VkFormat format = image.desc().format;
-  if (format == VK_FORMAT_D32_SFLOAT) return read_image(device, commands, image, layout, 1, what);
+  const DepthFormat depth = depth_format_of(image.desc().format).value_or(DepthFormat::d32_float);
+  if (depth == DepthFormat::d32_float) return read_image(device, commands, image, layout, 1, what);
   // Copies of D16 give 16-bit codes; of X8_D24, 32-bit words whose low 24
   // bits are the code.
-  const bool d16 = format == VK_FORMAT_D16_UNORM;
-  const DepthFormat depth = d16 ? DepthFormat::d16_unorm : DepthFormat::d24_unorm;
+  const bool d16 = depth == DepthFormat::d16_unorm;
+  const std::size_t size = d16 ? sizeof(std::uint16_t) : sizeof(std::uint32_t);
   PENUMBRA_TRY_ASSIGN(const std::vector<std::byte> bytes,
-                      read_bytes(device, commands, image, layout, 0, image.extent(),
-                                 d16 ? sizeof(std::uint16_t) : sizeof(std::uint32_t), what));
+                      read_bytes(device, commands, image, layout, 0, image.extent(), size, what));
   std::vector<float> texels;
-  texels.reserve(bytes.size() / (d16 ? 2 : 4));
-  for (std::size_t at = 0; at < bytes.size(); at += d16 ? 2 : 4) {
+  texels.reserve(bytes.size() / size);
+  for (std::size_t at = 0; at < bytes.size(); at += size) {
     std::uint32_t code = 0;
     if (d16) {
       std::uint16_t code16 = 0;
-      std::memcpy(&code16, bytes.data() + at, sizeof(code16));
+      std::memcpy(&code16, bytes.data() + at, size);
       code = code16;
     } else {
-      std::memcpy(&code, bytes.data() + at, sizeof(code));
+      std::memcpy(&code, bytes.data() + at, size);
       code &= 0xFFFFFFu;
     }
-    texels.push_back(static_cast<float>(code * depth_step(depth)));
+    texels.push_back(unorm_depth(depth, code));
   }
   return texels;
 }

@@ -3,6 +3,7 @@
 // depth texture holding a map_encoding's values at that format's precision.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,13 +26,9 @@ int unorm_bits(DepthFormat format);
 // 1 / (2^bits - 1); 0 for d32_float, whose rounding the encodings allow for.
 double depth_step(DepthFormat format);
 
-// The unorm code a depth value in [0, 1] becomes, rounded to nearest as
-// Vulkan, OpenGL and Direct3D convert floats to unorm; 0 for d32_float.
-unsigned unorm_code(DepthFormat format, double depth);
-
-// What a sampler returns for `depth` written to a `format` texture: the
-// nearest unorm step as a float, or the float itself.
-float stored_depth(DepthFormat format, double depth);
+// What a sampler returns for the unorm `code` of a d24_unorm or d16_unorm
+// texel: code / (2^bits - 1), rounded to float.
+float unorm_depth(DepthFormat format, std::uint32_t code);
 
 // "d32_float", "d24_unorm", "d16_unorm"; and back (none for any other).
 std::string_view to_string(DepthFormat format);

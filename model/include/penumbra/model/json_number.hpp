@@ -18,8 +18,8 @@ namespace penumbra {
 // an unsigned, or of 1e39 as a float, is undefined behaviour. Integer types
 // take integers only; true and false are no numbers.
 template <typename T>
-requires std::is_arithmetic_v<T> &&(!std::is_same_v<T, bool>)T
-    number_as(const nlohmann::json& value) {
+T number_as(const nlohmann::json& value) {
+  static_assert(std::is_arithmetic_v<T> && !std::is_same_v<T, bool>, "a number type");
   if constexpr (std::is_integral_v<T>) {
     if (value.is_number_unsigned()) {
       const std::uint64_t u = value.get<std::uint64_t>();
