@@ -228,10 +228,12 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                   "codes below)");
   // Their ranges are checked with the inputs (check_eval_inputs), NaN included.
   // The defaults shown are index.json's `defaults`.
-  cmd->add_option("--light-size", args->light.light_world_size, "Light half-width L (0: a point)")
+  cmd->add_option("--light-size", args->light.light_world_size,
+                  "Light half-width L (0: a point); orthographic variants: the tangent of the "
+                  "directional light's angular half-width")
       ->capture_default_str();
   cmd->add_option("--frustum-width", args->light.frustum_width,
-                  "Frustum width Fw at the near plane")
+                  "Frustum width Fw at the near plane; orthographic variants: the box's width")
       ->capture_default_str();
   cmd->add_option("--near", args->light.near_plane, "Near plane n")->capture_default_str();
   cmd->add_option("--bias", args->light.bias, "Depth bias subtracted from z_r")

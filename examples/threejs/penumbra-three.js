@@ -1,6 +1,6 @@
-// Penumbra's soft shadows in three.js's own materials: a SpotLight's shadow
-// term replaced by a variant's essl300 function form, penumbra_visibility(),
-// reading three's own shadow map (README.md). Everything this
+// Penumbra's soft shadows in three.js's own materials: a SpotLight's or a
+// DirectionalLight's shadow term replaced by a variant's essl300 function
+// form, penumbra_visibility(), reading three's own shadow map (README.md). Everything this
 // module binds comes from index.json: the function's file, its textures and
 // their sampler states, and its parameter block.
 //
@@ -14,11 +14,15 @@ import * as THREE from 'three';
 
 const TARGET = 'essl300';
 
-// The spot-light shadow term of three r187's lights_fragment_begin chunk.
-const THREE_SPOT_SHADOW =
-  'directLight.color *= ( directLight.visible && receiveShadow ) ? getShadow( spotShadowMap[ i ], ' +
-  'spotLightShadow.shadowMapSize, spotLightShadow.shadowIntensity, spotLightShadow.shadowBias, ' +
-  'spotLightShadow.shadowRadius, vSpotLightCoord[ i ] ) : 1.0;';
+// The shadow term of a `kind` of light ('spot' or 'directional') in three
+// r187's lights_fragment_begin chunk.
+function threeShadowTerm(kind) {
+  const coord = kind === 'spot' ? 'vSpotLightCoord' : 'vDirectionalShadowCoord';
+  return 'directLight.color *= ( directLight.visible && receiveShadow ) ? ' +
+         `getShadow( ${kind}ShadowMap[ i ], ${kind}LightShadow.shadowMapSize, ` +
+         `${kind}LightShadow.shadowIntensity, ${kind}LightShadow.shadowBias, ` +
+         `${kind}LightShadow.shadowRadius, ${coord}[ i ] ) : 1.0;`;
+}
 
 // index.json's record of `name`'s function form for essl300, or an error
 // naming what is missing.
@@ -54,32 +58,24 @@ function createSampler(gl, state) {
   return sampler;
 }
 
-export class PenumbraSpotShadow {
-  // `light`: a THREE.SpotLight that casts shadows, the `spotIndex`-th of
-  // three's shadow-casting spot lights (0 for the first or only one).
-  // `index` is the library's parsed index.json, `variant` a variant name,
-  // `source` the text of its essl300 function form file. Options:
-  //   lightWorldSize: half-width of the square area light, world units
-  //   bias: subtracted from the receiver's light-view depth (world units)
-  //   filterRadiusUV: pcf_poisson's radius in map uv (default 2 texels)
-  constructor(renderer, light, {index, variant, source, spotIndex = 0, lightWorldSize,
-                                bias = 0, filterRadiusUV} = {}) {
-    if (!light || !light.isSpotLight || !light.castShadow) {
-      throw new Error('PenumbraSpotShadow: the light must be a THREE.SpotLight with castShadow');
-    }
-    if (!(lightWorldSize > 0)) throw new Error('PenumbraSpotShadow: lightWorldSize must be > 0');
+// What PenumbraSpotShadow and PenumbraDirectionalShadow share: `kind` is
+// 'spot' or 'directional', `lightIndex` the light's place among three's
+// shadow-casting lights of that kind, `expected` the map_encoding of three's
+// map for it, `lightSize` ShadowParams' L.
+class PenumbraShadow {
+  constructor(renderer, light, kind, {index, variant, source, lightIndex, expected, lightSize,
+                                      bias, filterRadiusUV}) {
     this.form = functionForm(index, variant);
-    const reversed = renderer.capabilities.reversedDepthBuffer === true;
-    const expected = reversed ? 'perspective_reversed' : 'perspective';
     if (this.form.encoding !== expected) {
       throw new Error(`${variant}: map_encoding '${this.form.encoding}' does not match three's ` +
-                      `spot-light map (${expected}); build the variant with "map_encoding": "${expected}"`);
+                      `${kind}-light map (${expected}); build the variant with "map_encoding": "${expected}"`);
     }
     this.renderer = renderer;
     this.light = light;
+    this.kind = kind;
     this.source = source;
-    this.spotIndex = spotIndex;
-    this.options = {lightWorldSize, bias, filterRadiusUV};
+    this.lightIndex = lightIndex;
+    this.options = {lightSize, bias, filterRadiusUV};
     // The fragment's call: the light clip position, and the pixel where the
     // variant rotates its samples per pixel (the `rotation` key).
     this.visibility = /vec2\s+pixel/.test(this.form.reflection.signature)
@@ -112,15 +108,16 @@ export class PenumbraSpotShadow {
   // Returns the material.
   apply(material) {
     const chunk = THREE.ShaderChunk.lights_fragment_begin;
-    if (!chunk.includes(THREE_SPOT_SHADOW)) {
-      throw new Error(`three.js ${THREE.REVISION}'s lights_fragment_begin has no spot shadow term ` +
-                      'penumbra-three knows (it is written for r187)');
+    const term = threeShadowTerm(this.kind);
+    if (!chunk.includes(term)) {
+      throw new Error(`three.js ${THREE.REVISION}'s lights_fragment_begin has no ${this.kind} ` +
+                      'shadow term penumbra-three knows (it is written for r187)');
     }
-    const lights = chunk.replace(THREE_SPOT_SHADOW,
-      `#if UNROLLED_LOOP_INDEX == ${this.spotIndex}\n` +
+    const lights = chunk.replace(term,
+      `#if UNROLLED_LOOP_INDEX == ${this.lightIndex}\n` +
       'directLight.color *= ( directLight.visible && receiveShadow ) ? ' +
-      `mix( 1.0, ${this.visibility}, spotLightShadow.shadowIntensity ) : 1.0;\n` +
-      `#else\n${THREE_SPOT_SHADOW}\n#endif`);
+      `mix( 1.0, ${this.visibility}, ${this.kind}LightShadow.shadowIntensity ) : 1.0;\n` +
+      `#else\n${term}\n#endif`);
     const lightMatrix = this.lightMatrix;
     const source = this.source;
     const previous = material.onBeforeCompile;
@@ -171,17 +168,14 @@ export class PenumbraSpotShadow {
   parameters() {
     const shadow = this.light.shadow;
     const camera = shadow.camera;
-    if (Math.abs(camera.aspect - 1) > 1e-6) {
-      throw new Error('PenumbraSpotShadow: the shadow camera must be square (aspect 1)');
-    }
     const width = shadow.mapSize.x, height = shadow.mapSize.y;
     const near = camera.near, far = camera.far;
-    const frustumWidth = 2 * near * Math.tan(THREE.MathUtils.DEG2RAD * 0.5 * camera.fov) / camera.zoom;
+    const frustumWidth = this.frustumWidth(camera);
     const size = this.renderer.getDrawingBufferSize(new THREE.Vector2());
-    const {lightWorldSize, bias, filterRadiusUV} = this.options;
+    const {lightSize, bias, filterRadiusUV} = this.options;
     return {
       shadow_map_size: [width, height, 1 / width, 1 / height],
-      light: [lightWorldSize, frustumWidth, near, lightWorldSize / frustumWidth],
+      light: [lightSize, frustumWidth, near, lightSize / frustumWidth],
       sampling: [filterRadiusUV ?? 2 / width, bias, 1 / far, far],
       screen_size: [size.x, size.y, 1 / size.x, 1 / size.y],
       source_size: [0, 0, 0, 0],
@@ -237,5 +231,70 @@ export class PenumbraSpotShadow {
       this.gl.deleteSampler(sampler);
     }
     this.gl.deleteBuffer(this.buffer);
+  }
+}
+
+export class PenumbraSpotShadow extends PenumbraShadow {
+  // `light`: a THREE.SpotLight that casts shadows, the `spotIndex`-th of
+  // three's shadow-casting spot lights (0 for the first or only one).
+  // `index` is the library's parsed index.json, `variant` a variant name,
+  // `source` the text of its essl300 function form file. Options:
+  //   lightWorldSize: half-width of the square area light, world units
+  //   bias: subtracted from the receiver's light-view depth (world units)
+  //   filterRadiusUV: pcf_poisson's radius in map uv (default 2 texels)
+  constructor(renderer, light, {index, variant, source, spotIndex = 0, lightWorldSize,
+                                bias = 0, filterRadiusUV} = {}) {
+    if (!light || !light.isSpotLight || !light.castShadow) {
+      throw new Error('PenumbraSpotShadow: the light must be a THREE.SpotLight with castShadow');
+    }
+    if (!(lightWorldSize > 0)) throw new Error('PenumbraSpotShadow: lightWorldSize must be > 0');
+    const reversed = renderer.capabilities.reversedDepthBuffer === true;
+    super(renderer, light, 'spot', {
+      index, variant, source, lightIndex: spotIndex, lightSize: lightWorldSize, bias,
+      filterRadiusUV, expected: reversed ? 'perspective_reversed' : 'perspective'});
+  }
+
+  // Fw = 2 n tan(fov / 2) of the square perspective shadow camera.
+  frustumWidth(camera) {
+    if (Math.abs(camera.aspect - 1) > 1e-6) {
+      throw new Error('PenumbraSpotShadow: the shadow camera must be square (aspect 1)');
+    }
+    return 2 * camera.near * Math.tan(THREE.MathUtils.DEG2RAD * 0.5 * camera.fov) / camera.zoom;
+  }
+}
+
+export class PenumbraDirectionalShadow extends PenumbraShadow {
+  // `light`: a THREE.DirectionalLight that casts shadows, the
+  // `directionalIndex`-th of three's shadow-casting directional lights.
+  // Options as PenumbraSpotShadow's, but for the light's size:
+  //   angularRadius: half the angle the light spans (radians; the sun's is
+  //   about 0.0047), a square of directions for PCSS and the reference
+  constructor(renderer, light, {index, variant, source, directionalIndex = 0, angularRadius,
+                                bias = 0, filterRadiusUV} = {}) {
+    if (!light || !light.isDirectionalLight || !light.castShadow) {
+      throw new Error('PenumbraDirectionalShadow: the light must be a THREE.DirectionalLight ' +
+                      'with castShadow');
+    }
+    if (!(angularRadius > 0 && angularRadius < Math.PI / 2)) {
+      throw new Error('PenumbraDirectionalShadow: angularRadius must be in (0, pi / 2) radians');
+    }
+    if (renderer.capabilities.reversedDepthBuffer === true) {
+      throw new Error('PenumbraDirectionalShadow: a reversed-Z renderer draws a reversed ' +
+                      'orthographic map, which has no map_encoding yet');
+    }
+    super(renderer, light, 'directional', {
+      index, variant, source, lightIndex: directionalIndex, lightSize: Math.tan(angularRadius),
+      bias, filterRadiusUV, expected: 'orthographic'});
+  }
+
+  // The orthographic shadow camera's width, right - left over its zoom.
+  frustumWidth(camera) {
+    const {left, right, bottom, top} = camera;
+    if (Math.abs(left + right) > 1e-6 * right || Math.abs(bottom + top) > 1e-6 * top ||
+        Math.abs((right - left) - (top - bottom)) > 1e-6 * (right - left)) {
+      throw new Error('PenumbraDirectionalShadow: the shadow camera must be square and centred ' +
+                      '(left = -right, bottom = -top, right - left = top - bottom)');
+    }
+    return (right - left) / camera.zoom;
   }
 }

@@ -11,6 +11,8 @@ double encode_depth(MapEncoding encoding, double z, const DepthRange& range) {
       return f * (z - n) / (z * (f - n));
     case MapEncoding::perspective_reversed:
       return n * (f - z) / (z * (f - n));
+    case MapEncoding::orthographic:
+      return (z - n) / (f - n);
   }
   return z;
 }
@@ -27,6 +29,8 @@ double decode_depth(MapEncoding encoding, double d, const DepthRange& range) {
       return n * f / ((1.0 - d) * f + d * n);
     case MapEncoding::perspective_reversed:
       return n * f / (d * f + (1.0 - d) * n);
+    case MapEncoding::orthographic:
+      return (1.0 - d) * n + d * f;
   }
   return d;
 }
@@ -38,8 +42,17 @@ bool depth_increases(MapEncoding encoding) {
 double depth_per_unit(MapEncoding encoding, double z, const DepthRange& range) {
   const double n = range.near_plane;
   const double f = range.far_plane;
-  // Both perspective encodings are a + b / z with |b| = n f / (f - n).
-  return encoding == MapEncoding::linear ? f : z * z * (f - n) / (n * f);
+  switch (encoding) {
+    case MapEncoding::linear:
+      return f;
+    case MapEncoding::orthographic:
+      return f - n;
+    // Both perspective encodings are a + b / z with |b| = n f / (f - n).
+    case MapEncoding::perspective:
+    case MapEncoding::perspective_reversed:
+      return z * z * (f - n) / (n * f);
+  }
+  return f;
 }
 
 std::string_view to_string(MapEncoding encoding) {
@@ -50,6 +63,8 @@ std::string_view to_string(MapEncoding encoding) {
       return "perspective";
     case MapEncoding::perspective_reversed:
       return "perspective_reversed";
+    case MapEncoding::orthographic:
+      return "orthographic";
   }
   return "linear";
 }

@@ -2,7 +2,8 @@
 // plane is a convex polygon (a rectangle's is an axis-aligned rectangle, a
 // box's the hull of its projected corners), so the occluded part of the
 // light is the area of a union of convex polygons clipped to the light
-// square (convex_union.cpp).
+// square (convex_union.cpp). A directional light's square is one of ray
+// slopes, and a point's shadow there is the slopes whose rays it blocks.
 #include "penumbra/reference/exact_visibility.hpp"
 
 #include <tbb/parallel_for.h>
@@ -22,10 +23,18 @@ Point2 project_from(double px, double py, double pz, double x, double y, double 
   return {px + (x - px) * scale, py + (y - py) * scale};
 }
 
+// The slope (s_x, s_y) of the directional ray that reaches P = (px, py, pz)
+// through (x', y', z'), z' < pz: P - s (pz - z') = (x', y').
+Point2 slope_through(double px, double py, double pz, double x, double y, double z) {
+  const double scale = 1.0 / (pz - z);
+  return {(px - x) * scale, (py - y) * scale};
+}
+
 }  // namespace
 
 double exact_visibility(const Scene& scene, double x, double y, double z) {
   const double L = scene.light.light_world_size;
+  const auto shadow_of = scene.light.orthographic() ? slope_through : project_from;
   // Only what lies nearer the light than z - bias occludes; a box reaching
   // past that depth is cut there (never at z itself, where the projection
   // has no bound).
@@ -37,8 +46,8 @@ double exact_visibility(const Scene& scene, double x, double y, double z) {
   };
   for (const Rect& r : scene.occluders) {
     if (!(r.z < z - scene.light.bias)) continue;
-    add({project_from(x, y, z, r.x0, r.y0, r.z), project_from(x, y, z, r.x1, r.y0, r.z),
-         project_from(x, y, z, r.x1, r.y1, r.z), project_from(x, y, z, r.x0, r.y1, r.z)});
+    add({shadow_of(x, y, z, r.x0, r.y0, r.z), shadow_of(x, y, z, r.x1, r.y0, r.z),
+         shadow_of(x, y, z, r.x1, r.y1, r.z), shadow_of(x, y, z, r.x0, r.y1, r.z)});
   }
   for (const Box& b : scene.boxes) {
     if (!(b.z0 < limit)) continue;
@@ -46,7 +55,7 @@ double exact_visibility(const Scene& scene, double x, double y, double z) {
     std::vector<Point2> corners;
     for (double cz : {b.z0, z1}) {
       for (double cy : {b.y0, b.y1}) {
-        for (double cx : {b.x0, b.x1}) corners.push_back(project_from(x, y, z, cx, cy, cz));
+        for (double cx : {b.x0, b.x1}) corners.push_back(shadow_of(x, y, z, cx, cy, cz));
       }
     }
     add(convex_hull(std::move(corners)));
@@ -58,7 +67,9 @@ Scene clipped_to_map(const Scene& scene) {
   Scene clipped = scene;
   clipped.occluders.clear();
   for (const Rect& r : scene.occluders) {
-    const double half = scene.light.frustum_width * r.z / (2 * scene.light.near_plane);
+    const double half = scene.light.orthographic()
+                            ? scene.light.frustum_width / 2
+                            : scene.light.frustum_width * r.z / (2 * scene.light.near_plane);
     const Rect inside{std::max(r.x0, -half), std::max(r.y0, -half), std::min(r.x1, half),
                       std::min(r.y1, half), r.z};
     if (inside.x0 < inside.x1 && inside.y0 < inside.y1) clipped.occluders.push_back(inside);
@@ -72,8 +83,8 @@ FloatImage exact_visibility_image(const Scene& scene, const FloatImage& receiver
   tbb::parallel_for(0, receivers.height, [&](int j) {
     for (int i = 0; i < receivers.width; ++i) {
       const double z = receivers.at(i, j, 2);
-      const UV slope = ray_slope(scene.light, receivers.at(i, j, 0), receivers.at(i, j, 1));
-      image.at(i, j) = float(exact_visibility(scene, slope.u * z, slope.v * z, z));
+      const UV xy = map_ray(scene.light, receivers.at(i, j, 0), receivers.at(i, j, 1)).at(z);
+      image.at(i, j) = float(exact_visibility(scene, xy.u, xy.v, z));
     }
   });
   return image;

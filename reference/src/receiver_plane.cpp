@@ -38,8 +38,10 @@ std::array<double, 2> depth_slope(double du_dx, double dv_dx, double dz_dx, doub
 }
 
 double max_depth_slope(const LightParams& light, double z) {
-  // One unit of u or v spans Fw z / n across the light's view at depth z.
-  return kMaxPlaneTangent * (light.frustum_width / light.near_plane) * z;
+  // One unit of u or v spans Fw z / n across the light's view at depth z
+  // (Fw at every depth, orthographic).
+  return kMaxPlaneTangent * light.frustum_width *
+         (light.orthographic() ? 1.0 : z / light.near_plane);
 }
 
 std::vector<std::array<double, 2>> depth_slope_candidates(const FloatImage& receivers, int i, int j,

@@ -1,5 +1,5 @@
 // Geometry of the test scenes: every occluder and the receiver plane are met
-// by rays from the light's centre through texel or pixel centres.
+// by the map's rays (map_ray()) through texel or pixel centres.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -40,10 +40,12 @@ FloatImage receivers(const Scene& scene, int width, int height) {
     for (int i = 0; i < width; ++i) {
       const double u = (i + 0.5) / width;
       const double v = (j + 0.5) / height;
-      // The ray (s_x z, s_y z, z) meets z = z0 + a x + b y at z0 / (1 - a s_x - b s_y).
-      const UV slope = ray_slope(scene.light, u, v);
+      // The ray (o_x + s_x z, o_y + s_y z, z) meets z = z0 + a x + b y at
+      // (z0 + a o_x + b o_y) / (1 - a s_x - b s_y).
+      const MapRay ray = map_ray(scene.light, u, v);
       const double z =
-          scene.plane_z0 / (1.0 - scene.plane_dzdx * slope.u - scene.plane_dzdy * slope.v);
+          (scene.plane_z0 + scene.plane_dzdx * ray.origin.u + scene.plane_dzdy * ray.origin.v) /
+          (1.0 - scene.plane_dzdx * ray.slope.u - scene.plane_dzdy * ray.slope.v);
       image.at(i, j, 0) = float(u);
       image.at(i, j, 1) = float(v);
       image.at(i, j, 2) = float(z);
@@ -58,17 +60,18 @@ FloatImage ray_cast_depth(const Scene& scene, int width, int height, double far_
   // Rows in parallel: each texel's ray is its own.
   tbb::parallel_for(0, height, [&](int j) {
     for (int i = 0; i < width; ++i) {
-      const UV slope =
-          ray_slope(scene.light, (i + 0.5 + within[0]) / width, (j + 0.5 + within[1]) / height);
+      const MapRay ray =
+          map_ray(scene.light, (i + 0.5 + within[0]) / width, (j + 0.5 + within[1]) / height);
       double nearest = far_z;
       for (const Rect& r : scene.occluders) {
-        const double x = slope.u * r.z;
-        const double y = slope.v * r.z;
-        if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) nearest = std::min(nearest, r.z);
+        const UV p = ray.at(r.z);
+        if (p.u >= r.x0 && p.u < r.x1 && p.v >= r.y0 && p.v < r.y1)
+          nearest = std::min(nearest, r.z);
       }
       for (const Box& b : scene.boxes) {
-        // With direction (s_u, s_v, 1), the parameter t is the hit's z.
-        const auto hit = ray_box(b, {0.0, 0.0, 0.0}, {slope.u, slope.v, 1.0});
+        // With direction (s_u, s_v, 1) from z = 0, the parameter t is the hit's z.
+        const auto hit =
+            ray_box(b, {ray.origin.u, ray.origin.v, 0.0}, {ray.slope.u, ray.slope.v, 1.0});
         if (hit) nearest = std::min(nearest, hit->t);
       }
       image.at(i, j) = float(nearest);

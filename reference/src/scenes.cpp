@@ -79,4 +79,13 @@ std::vector<Scene> builtin_scenes() {
   return {steps(), tilted_overlap(), custom_light()};
 }
 
+Scene for_map_encoding(Scene scene, MapEncoding encoding) {
+  if (!is_orthographic(encoding) || scene.light.orthographic()) return scene;
+  LightParams& light = scene.light;
+  light.frustum_width *= scene.plane_z0 / light.near_plane;
+  light.light_world_size /= scene.plane_z0;
+  light.projection = LightProjection::orthographic;
+  return scene;
+}
+
 }  // namespace penumbra::reference

@@ -124,8 +124,9 @@ StageView light_view(const Scene& scene, int width, int height) {
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
       const double z = out.receivers.at(i, j, 2);
-      const UV slope = ray_slope(scene.light, out.receivers.at(i, j, 0), out.receivers.at(i, j, 1));
-      out.points[std::size_t(j) * width + i] = {slope.u * z, slope.v * z, z};
+      const UV xy =
+          map_ray(scene.light, out.receivers.at(i, j, 0), out.receivers.at(i, j, 1)).at(z);
+      out.points[std::size_t(j) * width + i] = {xy.u, xy.v, z};
     }
   }
   return out;

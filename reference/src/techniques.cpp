@@ -43,9 +43,11 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   // holds nothing there to occlude the receiver.
   if (!(q.z > light.near_plane)) return {1.0};
   // Step 1, blocker search: point samples over the light's footprint on the
-  // near plane, seen from the receiver (similar triangles).
+  // near plane, seen from the receiver (similar triangles). A directional
+  // light's footprint widens with the distance to the near plane alone.
   const double light_size_uv = light.light_size_uv();
-  const double search_width = light_size_uv * (q.z - light.near_plane) / q.z;
+  const double search_width = light.orthographic() ? light_size_uv * (q.z - light.near_plane)
+                                                   : light_size_uv * (q.z - light.near_plane) / q.z;
   // What one blocker sample contributes against reference `z`: its depth
   // when it occludes.
   auto blocker_against = [&](double z) {
@@ -78,7 +80,11 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   // nothing nearer; a blocker at z = 0 would make the penumbra infinite).
   const double avg_blocker_depth = std::max(blocker_sum / blockers, light.near_plane);
   const double penumbra = (q.z - avg_blocker_depth) / avg_blocker_depth;
-  const double filter_radius_uv = penumbra * light_size_uv * light.near_plane / q.z;
+  // A directional light's penumbra is the slope's spread over the distance
+  // from blocker to receiver.
+  const double filter_radius_uv = light.orthographic()
+                                      ? light_size_uv * (q.z - avg_blocker_depth)
+                                      : penumbra * light_size_uv * light.near_plane / q.z;
 
   // Step 3, filtering.
   return {poisson_pcf(map, q, z_ref, pcf_disk.points, filter_radius_uv), ambiguous};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/report/figures.hpp"
 
 namespace penumbra::report {
@@ -21,6 +22,12 @@ std::vector<TimedVariant> time_variants(const Library& library, Engine& engine,
     if (!listed(pictures.variants, variant.name) ||
         std::find(variant.targets.begin(), variant.targets.end(), Target::spirv) ==
             variant.targets.end()) {
+      continue;
+    }
+    if (is_orthographic(map_encoding(variant.keys))) {
+      diagnostics({Severity::note, variant.name,
+                   "not timed for the cost chart: the stage's light is not the directional one "
+                   "an orthographic map needs"});
       continue;
     }
     auto cost = measure_gpu_cost(library, engine, entry, scene, options);

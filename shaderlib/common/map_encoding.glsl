@@ -1,7 +1,8 @@
 // The map's encoding (the map_encoding key, docs/techniques.md, "Map
 // encodings"): PENUMBRA_MAP_ENCODING 0 or unset, linear z * DEPTH_SCALE; 1,
 // the hardware depth of a perspective projection from NEAR_PLANE to
-// 1 / DEPTH_SCALE; 2, the same reversed-Z.
+// 1 / DEPTH_SCALE; 2, the same reversed-Z; 3, the depth of an orthographic
+// projection over the same planes (a directional light).
 #ifndef PENUMBRA_MAP_ENCODING_GLSL
 #define PENUMBRA_MAP_ENCODING_GLSL
 
@@ -11,11 +12,23 @@
 #define PENUMBRA_MAP_ENCODING 0
 #endif
 
+// An orthographic map's light is directional (docs/techniques.md, "Map
+// encodings"): PCSS's search and penumbra widths follow.
+#define PENUMBRA_ORTHOGRAPHIC (PENUMBRA_MAP_ENCODING == 3)
+
 #if PENUMBRA_MAP_ENCODING == 0
 // Linear z: macros, so that the library's own maps compile to the text they
 // always did.
 #define shadow_encode(z) ((z) * DEPTH_SCALE)
 #define shadow_linear(stored) ((stored) * INV_DEPTH_SCALE)
+#elif PENUMBRA_MAP_ENCODING == 3
+// Orthographic depth is affine in z: the planes' weights, exact at both ends.
+float shadow_encode(float z) {
+  return (z - NEAR_PLANE) / (INV_DEPTH_SCALE - NEAR_PLANE);
+}
+float shadow_linear(float stored) {
+  return (1.0 - stored) * NEAR_PLANE + stored * INV_DEPTH_SCALE;
+}
 #else
 // The stored value for linear z. Written as a quotient of differences, not
 // A - B / z: its float32 error stays within a few ulp of the stored value,

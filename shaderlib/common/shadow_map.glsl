@@ -3,8 +3,9 @@
 // chooses the hardware comparison sampler or in-shader compares (Direct3D 9).
 // The map holds normalized depth d = z * DEPTH_SCALE (a power of two, exact),
 // or with PENUMBRA_MAP_ENCODING (the map_encoding key) an engine's hardware
-// depth for a perspective projection from NEAR_PLANE to 1 / DEPTH_SCALE:
-// 1, forward; 2, reversed-Z (docs/techniques.md, "Map encodings").
+// depth for a projection from NEAR_PLANE to 1 / DEPTH_SCALE: 1, perspective;
+// 2, perspective reversed-Z; 3, orthographic (docs/techniques.md, "Map
+// encodings").
 #ifndef PENUMBRA_SHADOW_MAP_GLSL
 #define PENUMBRA_SHADOW_MAP_GLSL
 
@@ -38,8 +39,13 @@ vec2 penumbra_depth_slope;
 vec2 receiver_depth_slope(vec3 dx, vec3 dy, float z) {
   float det = dx.x * dy.y - dy.x * dx.y;
   vec2 scaled = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z);
-  // One unit of u or v spans Fw z / n across the light's view at depth z.
+  // One unit of u or v spans Fw z / n across the light's view at depth z
+  // (Fw at every depth, orthographic).
+#if PENUMBRA_ORTHOGRAPHIC
+  float limit = PENUMBRA_MAX_PLANE_TANGENT * LIGHT_FRUSTUM_WIDTH;
+#else
   float limit = PENUMBRA_MAX_PLANE_TANGENT * (LIGHT_FRUSTUM_WIDTH / NEAR_PLANE) * z;
+#endif
   // Tested before dividing (`<` is false for NaN and infinities), and 0 / 0
   // (a quad whose row and column see the same two receivers) never computed:
   // hlsl_dx9's bytecode let that NaN through the select.

@@ -6,8 +6,13 @@
 #include "techniques/pcss_filter.glsl"
 
 void FindBlocker(out float avgBlockerDepth, out float numBlockers, vec2 uv, float zReceiver) {
-  // Similar triangles give the region of the map to search.
+  // Similar triangles give the region of the map to search; a directional
+  // light's widens with the distance to the near plane alone.
+#if PENUMBRA_ORTHOGRAPHIC
+  float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE);
+#else
   float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE) / zReceiver;
+#endif
   float blockerSum = 0.0;
   numBlockers = 0.0;
   PENUMBRA_SAMPLE_LOOP for (int i = 0; i < BLOCKER_SEARCH_NUM_SAMPLES; ++i) {
@@ -41,8 +46,14 @@ float PCSS(vec3 coords) {
 
   // Step 2: penumbra size, the blocker no nearer than the near plane (as
   // pcss_minmax: a blocker at z = 0 would make the penumbra infinite).
+#if PENUMBRA_ORTHOGRAPHIC
+  // A directional light's penumbra: its slopes spread over the distance
+  // from blocker to receiver.
+  float filterRadiusUV = LIGHT_SIZE_UV * (zReceiver - max(avgBlockerDepth, NEAR_PLANE));
+#else
   float penumbraRatio = PenumbraSize(zReceiver, max(avgBlockerDepth, NEAR_PLANE));
   float filterRadiusUV = penumbraRatio * LIGHT_SIZE_UV * NEAR_PLANE / coords.z;
+#endif
 
   // Step 3: filtering.
   return PCF_Filter(uv, zReceiver, filterRadiusUV);

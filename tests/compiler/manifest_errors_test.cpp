@@ -265,8 +265,8 @@ TEST(ManifestErrors, MapEncodingIsAnEncodingOfATechniqueThatTakesOne) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "hard",
                                               "map_encoding": ["perspective", "reversed"]})")),
                    "perms.json: /sets/1/map_encoding/1: unknown map_encoding 'reversed'; allowed "
-                   "map encodings: linear, perspective, perspective_reversed (docs/techniques.md, "
-                   "\"Map encodings\")");
+                   "map encodings: linear, perspective, perspective_reversed, orthographic "
+                   "(docs/techniques.md, \"Map encodings\")");
   expect_bad_input(manifest_error(with_set(R"({"technique": "backprojection",
                                               "map_encoding": "perspective"})")),
                    "perms.json: /sets/1/map_encoding: key 'map_encoding' is used by none of this "

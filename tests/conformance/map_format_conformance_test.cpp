@@ -21,12 +21,13 @@ struct MapFormatCase {
 };
 
 // A comparison-filtered technique and the one that linearizes blocker
-// depths, forward and reversed-Z.
+// depths, forward, reversed-Z and orthographic.
 const MapFormatCase kCases[] = {
     {"pcf_grid_k3_perspective", DepthFormat::d16_unorm},
     {"pcf_grid_k3_perspective", DepthFormat::d24_unorm},
     {"pcss_b16_p16_poisson_perspective_reversed", DepthFormat::d16_unorm},
     {"pcss_b16_p16_poisson_perspective_reversed", DepthFormat::d24_unorm},
+    {"pcss_b16_p16_poisson_orthographic", DepthFormat::d16_unorm},
 };
 
 class MapFormatConformance : public ::testing::TestWithParam<MapFormatCase> {};

@@ -47,7 +47,8 @@ constexpr const char* kRepresentatives[] = {"hard",
                                             "pcss_minmax_p16_whitepaper16",
                                             "screen_blur_r4",
                                             "bitmask_backprojection_bits64",
-                                            "pcss_b16_p16_poisson_perspective_reversed"};
+                                            "pcss_b16_p16_poisson_perspective_reversed",
+                                            "pcss_b16_p16_poisson_orthographic"};
 
 // Representatives the default manifest does not build: an even kernel that
 // every target counts exactly (hlsl_dx9 up to K = 8), and the NVIDIA PCSS

@@ -17,7 +17,8 @@
 namespace penumbra::reference {
 namespace {
 
-constexpr MapEncoding kEncodings[] = {MapEncoding::perspective, MapEncoding::perspective_reversed};
+constexpr MapEncoding kEncodings[] = {MapEncoding::perspective, MapEncoding::perspective_reversed,
+                                      MapEncoding::orthographic};
 
 bool marked(const FloatImage& ambiguous, std::size_t k, Ambiguity reason) {
   return (std::uint16_t(ambiguous.data[k]) & std::uint16_t(reason)) != 0;
@@ -36,8 +37,11 @@ TEST(MapEncoding, EndsOfTheRangeAndInverse) {
   EXPECT_DOUBLE_EQ(encode_depth(MapEncoding::perspective, 32.0, range), 1.0);
   EXPECT_DOUBLE_EQ(encode_depth(MapEncoding::perspective_reversed, 6.0, range), 1.0);
   EXPECT_DOUBLE_EQ(encode_depth(MapEncoding::perspective_reversed, 32.0, range), 0.0);
-  for (const MapEncoding e :
-       {MapEncoding::linear, MapEncoding::perspective, MapEncoding::perspective_reversed}) {
+  EXPECT_DOUBLE_EQ(encode_depth(MapEncoding::orthographic, 6.0, range), 0.0);
+  EXPECT_DOUBLE_EQ(encode_depth(MapEncoding::orthographic, 32.0, range), 1.0);
+  EXPECT_DOUBLE_EQ(encode_depth(MapEncoding::orthographic, 19.0, range), 0.5);
+  EXPECT_DOUBLE_EQ(depth_per_unit(MapEncoding::orthographic, 7.0, range), 26.0);
+  for (const MapEncoding e : kAllMapEncodings) {
     double last = encode_depth(e, 6.0, range);
     for (double z = 6.5; z <= 32.0; z += 0.5) {
       EXPECT_NEAR(decode_depth(e, encode_depth(e, z, range), range), z, 1e-12 * z) << to_string(e);
@@ -111,16 +115,18 @@ TEST(EncodedMap, ReceiverAtTheTexelsDepthIsATieUnlessBiased) {
 // Whether every float32 encoding a shader may compute for the reference
 // z_ref compares with the stored value `stored` as `lit` says. The shader
 // (shaderlib/common/map_encoding.glsl) computes (z - n) f / (z (f - n)),
-// reversed (f - z) n / (z (f - n)); a compiler may divide within 2.5 ulp
-// (here 2 either way), or multiply by the divisor's reciprocal, or by the
-// quotient of the far factor and the divisor.
+// reversed (f - z) n / (z (f - n)), orthographic (z - n) / (f - n); a
+// compiler may divide within 2.5 ulp (here 2 either way), or multiply by
+// the divisor's reciprocal, or by the quotient of the far factor and the
+// divisor.
 bool shader_lit_everywhere_as(bool lit, MapEncoding e, const DepthRange& range, double z_ref,
                               float stored) {
-  const bool forward = e == MapEncoding::perspective;
+  const bool forward = depth_increases(e);
+  const bool orthographic = is_orthographic(e);
   const float n = float(range.near_plane), f = float(range.far_plane), z = float(z_ref);
   const float difference = forward ? z - n : f - z;
-  const float factor = forward ? f : n;
-  const float divisor = z * (f - n);
+  const float factor = orthographic ? 1.0f : forward ? f : n;
+  const float divisor = orthographic ? f - n : z * (f - n);
   const float quotient = difference * factor / divisor;
   const float ulp = std::nextafter(std::abs(quotient), 2.0f) - std::abs(quotient);
   std::vector<float> candidates = {difference * (factor / divisor),
@@ -142,11 +148,14 @@ TEST(EncodedMap, MatchesTheLinearMapAndTheShadersComparisonOnEveryScene) {
       testing::hard_variant(), testing::grid_variant(3),
       testing::pcss_variant({{0.5f, 0.0f}, {-0.5f, 0.0f}, {0.0f, 0.5f}, {0.0f, -0.5f}},
                             {{0.25f, 0.25f}, {-0.25f, 0.25f}, {0.25f, -0.25f}, {-0.25f, -0.25f}})};
-  for (const Scene& scene : builtin_scenes()) {
-    const FloatImage depth = ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);
-    const FloatImage recv = receivers(scene, scene.receivers_width, scene.receivers_height);
-    const DepthRange range{scene.light.near_plane, 64.0};
+  for (const Scene& builtin : builtin_scenes()) {
     for (const MapEncoding e : kEncodings) {
+      // An orthographic map's scene is lit by a directional light.
+      const Scene scene = for_map_encoding(builtin, e);
+      const FloatImage depth =
+          ray_cast_depth(scene, scene.map_width, scene.map_height, scene.far_z);
+      const FloatImage recv = receivers(scene, scene.receivers_width, scene.receivers_height);
+      const DepthRange range{scene.light.near_plane, 64.0};
       const FloatImage stored = encoded(depth, e, range);
       // The depths as the encoded map holds them, rounded to float: ties
       // aside, the linear reference decides as the encoded one does.

@@ -17,7 +17,7 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
   auto variants =
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
-  ASSERT_EQ(variants->size(), 60u);
+  ASSERT_EQ(variants->size(), 64u);
   const Pipeline pipeline(embedded_shaderlib(), std::nullopt);
   std::set<std::pair<Target, const PassStageSource*>> shared;  // each compiled once per target
   for (const Variant& variant : *variants) {

@@ -1,11 +1,11 @@
 // three.js r187 (npm, pinned by examples/threejs/package-lock.json) drawing
-// the report's stage with its own SpotLight, shadow map (24-bit depth) and
-// camera, the spot light's shadow term replaced by a variant's essl300
-// function form through examples/threejs/penumbra-three.js, in headless
-// Chromium. Each picture must agree with the CPU reference evaluated on
-// three's own map at the receivers three's shaders derived; the figures
-// against the exact area-light truth, beside three's own PCF, are printed
-// for docs/accuracy.md.
+// the report's stage with its own SpotLight or DirectionalLight, shadow map
+// (24-bit depth) and camera, the light's shadow term replaced by a variant's
+// essl300 function form through examples/threejs/penumbra-three.js, in
+// headless Chromium. Each picture must agree with the CPU reference
+// evaluated on three's own map at the receivers three's shaders derived;
+// the figures against the exact truth of each light, beside three's own
+// PCF, are printed for docs/accuracy.md.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -30,8 +30,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // examples/threejs/manifest.json's variants: each function-form technique
-// in three's spot-light map, forward and reversed-Z, and pcss rotated per
-// pixel (the function's pixel argument from gl_FragCoord).
+// in three's spot-light map, forward and reversed-Z, and in its
+// directional-light map, and pcss rotated per pixel (the function's pixel
+// argument from gl_FragCoord).
 const std::vector<Variant>& example_variants() {
   static const std::vector<Variant> variants = [] {
     auto loaded = load_variants(PENUMBRA_SOURCE_DIR "/examples/threejs/manifest.json");
@@ -56,8 +57,9 @@ std::vector<std::string> example_names() {
   return out;
 }
 
-// The ratios of the accuracy figures are to this variant's.
+// The ratios of the accuracy figures are to these variants', per light.
 constexpr const char* kPcss = "pcss_b16_p16_poisson_perspective";
+constexpr const char* kPcssDirectional = "pcss_b16_p16_poisson_orthographic";
 // three's PCF (Vogel disk of 5 hardware comparisons) at these radii, in
 // texels: its default, 1, and wider ones.
 const std::vector<int> kThreeRadii = {1, 2, 4, 8};
@@ -74,6 +76,8 @@ Result<nlohmann::json> stage_json(const reference::Stage& stage) {
   const reference::Scene& scene = stage.scene;
   nlohmann::json boxes = nlohmann::json::array();
   for (const reference::Box& b : scene.boxes) boxes.push_back({b.x0, b.y0, b.x1, b.y1, b.z0, b.z1});
+  const reference::LightParams directional =
+      reference::for_map_encoding(scene, MapEncoding::orthographic).light;
   const nlohmann::json expected = {
       {"width", scene.receivers_width},
       {"height", scene.receivers_height},
@@ -89,7 +93,10 @@ Result<nlohmann::json> stage_json(const reference::Stage& stage) {
         {"far", 1.0 / depth_scale_for(scene.far_z)},
         {"frustum_width", scene.light.frustum_width},
         {"light_world_size", scene.light.light_world_size},
-        {"bias", scene.light.bias}}}};
+        {"bias", scene.light.bias}}},
+      {"directional",
+       {{"frustum_width", directional.frustum_width},
+        {"light_world_size", directional.light_world_size}}}};
   if (json != expected) {
     return make_error(Error::Kind::bad_input, path.string(),
                       "is not reference::report_stage(), which is " + expected.dump());
@@ -135,9 +142,11 @@ Result<FloatImage> picture(const nlohmann::json& base64, int width, int height,
   return out;
 }
 
-// The light three's shadow camera gave the function (its ShadowParams).
-reference::LightParams light_of(const nlohmann::json& parameters) {
+// The light three's shadow camera gave the function (its ShadowParams),
+// directional for an orthographic map.
+reference::LightParams light_of(const nlohmann::json& parameters, MapEncoding encoding) {
   reference::LightParams light;
+  if (is_orthographic(encoding)) light.projection = reference::LightProjection::orthographic;
   light.light_world_size = parameters.at("light")[0].get<double>();
   light.frustum_width = parameters.at("light")[1].get<double>();
   light.near_plane = parameters.at("light")[2].get<double>();
@@ -206,8 +215,11 @@ struct Stage {
   int width = 0, height = 0;
 };
 
-Stage three_stage() {
+// The stage under the light that draws a map in `encoding`: the spot
+// light's, or the directional one (reference::for_map_encoding()).
+Stage three_stage(MapEncoding encoding) {
   Stage out;
+  out.stage.scene = reference::for_map_encoding(out.stage.scene, encoding);
   out.width = out.stage.scene.receivers_width;
   out.height = out.stage.scene.receivers_height;
   out.view = reference::view(out.stage, out.width, out.height);
@@ -234,20 +246,23 @@ TEST_P(ThreeJs, FunctionFormInThreesMaterialsMatchesTheReferenceOnThreesMap) {
   const BrowserRun& run = shared();
   ASSERT_TRUE(run.error.empty()) << run.error;
   EXPECT_EQ(run.browser.at("three"), "187");
-  EXPECT_EQ(run.browser.at("errors"), nlohmann::json::array({0, 0})) << "WebGL errors";
-  const Stage stage = three_stage();
+  EXPECT_EQ(run.browser.at("errors"), nlohmann::json::array({0, 0, 0})) << "WebGL errors";
   const Variant& variant = example_variant(GetParam());
-  auto map = three_map(run.browser, stage.stage.scene, map_encoding(variant.keys));
+  const MapEncoding encoding = map_encoding(variant.keys);
+  const Stage stage = three_stage(encoding);
+  auto map = three_map(run.browser, stage.stage.scene, encoding);
   ASSERT_TRUE(map) << map.error().to_string();
   auto gpu =
       picture(run.browser.at("pictures").at(GetParam()), stage.width, stage.height, GetParam());
   ASSERT_TRUE(gpu) << gpu.error().to_string();
-  const reference::LightParams light = light_of(run.browser.at("parameters").at(GetParam()));
+  const reference::LightParams light =
+      light_of(run.browser.at("parameters").at(GetParam()), encoding);
   const reference::LightParams& expected = stage.stage.scene.light;
   EXPECT_NEAR(light.frustum_width, expected.frustum_width, 1e-6);
   EXPECT_NEAR(light.near_plane, expected.near_plane, 1e-9);
+  EXPECT_NEAR(light.light_world_size, expected.light_world_size, 1e-12);
 
-  const FloatImage receivers = receivers_from_clip(*gpu, 3, 0.5);
+  const FloatImage receivers = receivers_from_clip(*gpu, 3, 0.5, is_orthographic(encoding));
   // SwiftShader's texel coordinates carry 8 fractional bits, as lavapipe's.
   const reference::SamplingPrecision precision{8};
   auto check = check_stage_picture(variant, stage.stage, stage.view, *map, light, receivers, *gpu,
@@ -284,29 +299,32 @@ double penumbra_mae(const Stage& stage, const FloatImage& receivers, const Float
   return count ? sum / double(count) : 0.0;
 }
 
-// The figures docs/accuracy.md quotes, each also as a ratio to pcss's; at
-// every radius three's PCF must stay further from the truth than pcss.
-TEST(ThreeJsAccuracy, AgainstTheExactAreaLightBesideThreesPcf) {
-  const BrowserRun& run = shared();
-  ASSERT_TRUE(run.error.empty()) << run.error;
-  const Stage stage = three_stage();
-  auto pcss = picture(run.browser.at("pictures").at(kPcss), stage.width, stage.height, kPcss);
-  ASSERT_TRUE(pcss) << pcss.error().to_string();
-  const FloatImage receivers = receivers_from_clip(*pcss, 3, 0.5);
+// The figures docs/accuracy.md quotes for the light that draws maps in
+// `encoding`, each also as a ratio to `pcss`'s; at every radius three's PCF
+// on the same map must stay further from the truth than pcss.
+void accuracy_against_the_truth(const BrowserRun& run, MapEncoding encoding, const char* pcss) {
+  const Stage stage = three_stage(encoding);
+  auto pcss_picture = picture(run.browser.at("pictures").at(pcss), stage.width, stage.height, pcss);
+  ASSERT_TRUE(pcss_picture) << pcss_picture.error().to_string();
+  const bool directional = is_orthographic(encoding);
+  const FloatImage receivers = receivers_from_clip(*pcss_picture, 3, 0.5, directional);
   const FloatImage exact = reference::exact_visibility_image(stage.stage.scene, receivers);
-  const double pcss_mae = penumbra_mae(stage, receivers, exact, *pcss, 2);
-  std::cout << std::fixed << std::setprecision(4) << "penumbra MAE against the exact area light ("
+  const double pcss_mae = penumbra_mae(stage, receivers, exact, *pcss_picture, 2);
+  std::cout << std::fixed << std::setprecision(4) << "penumbra MAE against the exact "
+            << (directional ? "directional light" : "area light") << " ("
             << run.browser.value("renderer", "") << "):\n";
   for (const std::string& name : example_names()) {
+    if (map_encoding(example_variant(name).keys) != encoding) continue;
     auto gpu = picture(run.browser.at("pictures").at(name), stage.width, stage.height, name);
     ASSERT_TRUE(gpu) << gpu.error().to_string();
     const double mae = penumbra_mae(stage, receivers, exact, *gpu, 2);
     std::cout << "  penumbra " << name << ": " << mae << " (" << mae / pcss_mae << ")\n";
   }
   double best_three = 1.0;
+  const nlohmann::json& pcf = run.browser.at("pcf").at(std::string(to_string(encoding)));
   for (int radius : kThreeRadii) {
     const std::string key = std::to_string(radius);
-    auto three = picture(run.browser.at("pcf").at(key), stage.width, stage.height, key);
+    auto three = picture(pcf.at(key), stage.width, stage.height, key);
     ASSERT_TRUE(three) << three.error().to_string();
     const double mae = penumbra_mae(stage, receivers, exact, *three, 0);
     std::cout << "  three PCFShadowMap radius " << radius << ": " << mae << " (" << mae / pcss_mae
@@ -315,6 +333,18 @@ TEST(ThreeJsAccuracy, AgainstTheExactAreaLightBesideThreesPcf) {
   }
   EXPECT_GT(pcss_mae, 0.0);
   EXPECT_LT(pcss_mae, best_three);
+}
+
+TEST(ThreeJsAccuracy, AgainstTheExactAreaLightBesideThreesPcf) {
+  const BrowserRun& run = shared();
+  ASSERT_TRUE(run.error.empty()) << run.error;
+  accuracy_against_the_truth(run, MapEncoding::perspective, kPcss);
+}
+
+TEST(ThreeJsAccuracy, AgainstTheExactDirectionalLightBesideThreesPcf) {
+  const BrowserRun& run = shared();
+  ASSERT_TRUE(run.error.empty()) << run.error;
+  accuracy_against_the_truth(run, MapEncoding::orthographic, kPcssDirectional);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 
@@ -12,6 +13,7 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
                                  DepthFormat map_format) {
   CameraStage out;
   out.stage = reference::report_stage();
+  out.stage.scene = reference::for_map_encoding(out.stage.scene, map_encoding(entry.variant.keys));
   out.width = out.stage.scene.receivers_width;
   out.height = out.stage.scene.receivers_height;
   out.view = reference::view(out.stage, out.width, out.height);

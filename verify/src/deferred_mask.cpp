@@ -115,7 +115,8 @@ FloatImage camera_depth(const reference::StageView& view, const Matrix4& camera,
 // themselves, float for a float32 shader's rounding of them.
 template <typename Real>
 FloatImage rebuilt_receivers(const FloatImage& depth, const Matrix4& camera_inverse,
-                             const Matrix4& light, const DepthConvention& convention, double v_sign,
+                             const Matrix4& light, const LightClipDepth& light_depth,
+                             const DepthConvention& convention, double v_sign,
                              Rounding rounding = Rounding::separate) {
   FloatImage out(depth.width, depth.height, 3);
   const Real half(0.5), one(1.0), two(2.0), sign = static_cast<Real>(v_sign);
@@ -137,7 +138,7 @@ FloatImage rebuilt_receivers(const FloatImage& depth, const Matrix4& camera_inve
       const std::array<Real, 4> lit = times_in(light, world, rounding);
       out.at(i, j, 0) = float(half + half * quotient(lit[0], lit[3], rounding));
       out.at(i, j, 1) = float(half + sign * quotient(lit[1], lit[3], rounding));
-      out.at(i, j, 2) = float(lit[3]);
+      out.at(i, j, 2) = float(light_depth.linear_z(lit[2], lit[3]));
     }
   }
   return out;
@@ -193,7 +194,9 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
   EngineFormCheck check = started_check(entry, target, backend);
   const Matrix4 camera_matrix = camera_clip(camera.stage, camera.width, camera.height, target);
   const Matrix4 camera_inverse = inverse(camera_matrix);
-  const Matrix4 light = light_clip(camera.stage.scene.light, target);
+  const LightClipDepth light_depth =
+      light_clip_depth(camera.stage.scene.light, camera.fixture.far_plane(), target);
+  const Matrix4 light = light_clip(camera.stage.scene.light, light_depth, target);
   const DepthConvention convention = depth_convention(
       target, map_encoding(entry.variant.keys) == MapEncoding::perspective_reversed);
   DeferredDraw draw;
@@ -213,12 +216,12 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
                       backend.run_deferred(draw, camera.fixture, check.execution));
 
   const double v_sign = traits(target).is_hlsl ? -0.5 : 0.5;
-  const FloatImage receivers =
-      rebuilt_receivers<double>(draw.camera_depth, camera_inverse, light, convention, v_sign);
+  const FloatImage receivers = rebuilt_receivers<double>(draw.camera_depth, camera_inverse, light,
+                                                         light_depth, convention, v_sign);
   std::vector<FloatImage> rounded;
   for (Rounding rounding : {Rounding::separate, Rounding::fused}) {
-    rounded.push_back(rebuilt_receivers<float>(draw.camera_depth, camera_inverse, light, convention,
-                                               v_sign, rounding));
+    rounded.push_back(rebuilt_receivers<float>(draw.camera_depth, camera_inverse, light,
+                                               light_depth, convention, v_sign, rounding));
   }
   for (FloatImage& bound : rounding_bounds(entry.variant, receivers, rounded)) {
     rounded.push_back(std::move(bound));

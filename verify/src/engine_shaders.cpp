@@ -44,6 +44,16 @@ std::string constants(const Matrix4& m, const std::string& prefix, bool hlsl) {
   return out;
 }
 
+// `depth`'s linear_z() of the clip position `clip`, in shader text: the
+// function form's own expression, so both round alike.
+std::string clip_linear_z(const LightClipDepth& depth, const std::string& clip) {
+  if (!depth.orthographic) return clip + ".w";
+  std::string d = "(" + clip + ".z / " + clip + ".w)";
+  if (!depth.zero_to_one) d = "(0.5 * " + d + " + 0.5)";
+  return "((1.0 - " + d + ") * " + literal(depth.near_plane) + " + " + d + " * " +
+         literal(depth.far_plane) + ")";
+}
+
 std::string glsl_version(Target target) {
   if (target == Target::glsl450) return "#version 450\n";
   if (target == Target::glsl330) return "#version 330\n";
@@ -71,11 +81,29 @@ Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target
           row(frame.forward, 1.0, 0.0)};
 }
 
-Matrix4 light_clip(const reference::LightParams& light, Target target) {
-  const double scale = 2.0 * light.near_plane / light.frustum_width;
-  const double y_scale = traits(target).is_hlsl ? -scale : scale;
+LightClipDepth light_clip_depth(const reference::LightParams& light, double far_plane,
+                                Target target) {
+  return {light.orthographic(), traits(target).is_hlsl || target == Target::spirv, light.near_plane,
+          far_plane};
+}
+
+Matrix4 light_clip(const reference::LightParams& light, const LightClipDepth& depth,
+                   Target target) {
+  const double y_sign = traits(target).is_hlsl ? -1.0 : 1.0;
+  const double n = light.near_plane;
+  if (depth.orthographic) {
+    const double scale = 2.0 / light.frustum_width;
+    // z / w = d, or 2 d - 1, for d = (z - n) / (f - n).
+    const double z_scale = (depth.zero_to_one ? 1.0 : 2.0) / (depth.far_plane - n);
+    const double z_offset = -n * z_scale - (depth.zero_to_one ? 0.0 : 1.0);
+    return {{{scale, 0.0, 0.0, 0.0},
+             {0.0, y_sign * scale, 0.0, 0.0},
+             {0.0, 0.0, z_scale, z_offset},
+             {0.0, 0.0, 0.0, 1.0}}};
+  }
+  const double scale = 2.0 * n / light.frustum_width;
   return {{{scale, 0.0, 0.0, 0.0},
-           {0.0, y_scale, 0.0, 0.0},
+           {0.0, y_sign * scale, 0.0, 0.0},
            {0.0, 0.0, 0.0, 0.0},
            {0.0, 0.0, 1.0, 0.0}}};
 }
@@ -132,12 +160,11 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
 }
 
 std::string engine_fragment_shader(Target target, const PassReflection& reflection,
-                                   const std::string& function_text) {
+                                   const std::string& function_text, const LightClipDepth& depth) {
   const bool hlsl = traits(target).is_hlsl;
   const bool pixel = takes_pixel(reflection);
-  const std::string result =
-      "light_clip_position.x, light_clip_position.y, visible, "
-      "light_clip_position.w";
+  const std::string result = "light_clip_position.x, light_clip_position.y, visible, " +
+                             clip_linear_z(depth, "light_clip_position");
   if (hlsl) {
     const bool sm3 = traits(target).shader_model == 3;
     std::string out = function_text + "\n";

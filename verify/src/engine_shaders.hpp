@@ -24,10 +24,35 @@ using Matrix4 = std::array<std::array<double, 4>, 4>;
 // Direct3D's; z in [-w, w] for GL, [0, w] for Direct3D).
 Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target target);
 
-// The light's view-projection for the function form: x and y scaled by
-// 2 n / Fw (y negated for Direct3D, whose viewport puts +1 on the map's
-// first row), w = z.
-Matrix4 light_clip(const reference::LightParams& light, Target target);
+// How a receiver's linear light-view z comes out of its light clip position
+// (shaderlib/common/light_clip.glsl): w for a perspective light; for an
+// orthographic one, z / w taken to the depth d in [0, 1] and mixed between
+// the planes as the shader does, (1 - d) n + d f.
+struct LightClipDepth {
+  bool orthographic = false;
+  bool zero_to_one = true;  // clip z / w spans [0, 1] (Direct3D, SPIR-V); else [-1, 1]
+  double near_plane = 0.0;  // n
+  double far_plane = 0.0;   // f
+
+  template <typename Real>
+  Real linear_z(Real z, Real w) const {
+    if (!orthographic) return w;
+    Real d = z / w;
+    if (!zero_to_one) d = Real(0.5) * d + Real(0.5);
+    return (Real(1) - d) * Real(near_plane) + d * Real(far_plane);
+  }
+};
+
+// `light`'s clip depth for `target`, its far plane at `far_plane`.
+LightClipDepth light_clip_depth(const reference::LightParams& light, double far_plane,
+                                Target target);
+
+// The light's view-projection for the function form and the deferred pass:
+// x and y scaled by 2 n / Fw (y negated for Direct3D, whose viewport puts +1
+// on the map's first row), w = z. An orthographic light's scales x and y by
+// 2 / Fw, keeps w = 1 and maps z from n to f onto the clip depth `depth`
+// describes.
+Matrix4 light_clip(const reference::LightParams& light, const LightClipDepth& depth, Target target);
 
 // Whether the function form `reflection` describes takes the pixel (the
 // `rotation` key).
@@ -55,9 +80,9 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
 
 // The fragment stage around `function_text` (the function form's file),
 // declared as its `reflection` says. Output 0 is the light clip position it
-// called penumbra_visibility() with, its z (which the function does not
-// read) replaced by the visibility: (x, y, visibility, w).
+// called penumbra_visibility() with and the visibility: (x, y, visibility,
+// z_r), z_r its linear z as `depth` takes it out (w, perspective).
 std::string engine_fragment_shader(Target target, const PassReflection& reflection,
-                                   const std::string& function_text);
+                                   const std::string& function_text, const LightClipDepth& depth);
 
 }  // namespace penumbra

@@ -152,11 +152,16 @@ Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, 
   // The limits verify_library holds `target`'s runs to: hlsl_dx9's step cap.
   const float depth_scale = depth_scale_for(max_depth(inputs));
   const auto encoded = encoding_of(variant, inputs, depth_scale);
+  // An orthographic map's light is directional: --light-size is its half-slope.
+  reference::LightParams light = inputs.light;
+  if (encoded && is_orthographic(encoded->encoding)) {
+    light.projection = reference::LightProjection::orthographic;
+  }
   auto image =
       encoded ? reference::evaluate_image(
                     variant.variant, stored_map(inputs.shadow_map, encoded, depth_scale), *encoded,
-                    inputs.light, inputs.receivers, {}, reference::shader_limits(target))
-              : reference::evaluate_image(variant.variant, inputs.shadow_map, inputs.light,
+                    light, inputs.receivers, {}, reference::shader_limits(target))
+              : reference::evaluate_image(variant.variant, inputs.shadow_map, light,
                                           inputs.receivers, {}, reference::shader_limits(target));
   if (!image) return image.error();
   if (variant.variant.technique == Technique::screen_blur) {

@@ -40,7 +40,8 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
   draw.target = target;
   draw.where = form->second.file;
   draw.camera = camera_clip(camera.stage, camera.width, camera.height, target);
-  draw.light = light_clip(camera.stage.scene.light, target);
+  draw.light_depth = light_clip_depth(camera.stage.scene.light, camera.fixture.far_plane(), target);
+  draw.light = light_clip(camera.stage.scene.light, draw.light_depth, target);
   draw.vertex = {takes_pixel(form->second.reflection), camera.width, camera.height};
   draw.function_text = text;
   // The engine's own vertex input, render target and depth buffer: the
@@ -56,8 +57,8 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
   // (x, y, visibility, w) per pixel; the background keeps the clear, 1.
   PENUMBRA_TRY_ASSIGN(const SurfacePicture drawn,
                       backend.draw_surface(draw, camera.fixture, check.execution));
-  const FloatImage receivers =
-      receivers_from_clip(drawn.clip, 3, traits(target).is_hlsl ? -0.5 : 0.5);
+  const FloatImage receivers = receivers_from_clip(
+      drawn.clip, 3, traits(target).is_hlsl ? -0.5 : 0.5, draw.light_depth.orthographic);
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,
                              drawn.clip, 2));
   return check;

@@ -156,7 +156,7 @@ class GlBackend final : public Backend {
     const std::string vertex =
         engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex);
     const std::string fragment =
-        engine_fragment_shader(draw.target, draw.reflection, draw.function_text);
+        engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth);
     PENUMBRA_TRY_ASSIGN(FloatImage clip,
                         engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
                                              fixture.normalized_depth, draw.width, draw.height,

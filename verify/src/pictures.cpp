@@ -219,6 +219,11 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
           run.backend = backend->name();
           run.not_executed = backend->missing();
           if (run.not_executed.empty()) run.not_executed = backend->not_executed(entry, target);
+          if (run.not_executed.empty() && is_orthographic(map_encoding(variant.keys))) {
+            run.not_executed =
+                "the pictures' stage has a perspective light; verify checks "
+                "orthographic maps on its directional one";
+          }
           if (!run.not_executed.empty()) continue;
           Status ran = [&]() -> Status {
             PENUMBRA_TRY_ASSIGN(const TargetScenes* scenes, stages.get(entry, target));

@@ -9,6 +9,7 @@
 
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
+#include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "penumbra/vulkan/engine.hpp"
 
@@ -31,6 +32,8 @@ struct SceneFixture {
 
   // The depth image the map's readers sample: D32_SFLOAT unless encoded.
   DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }
+  // The map's far plane, 1 / depth_scale in ShadowParams.
+  double far_plane() const { return 1.0 / depth_scale_for(scene.far_z); }
 };
 
 // Every scene of one target.

@@ -63,19 +63,21 @@ Result<reference::ReferenceImage> reference_at(const Variant& variant, const Eng
 
 }  // namespace
 
-FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign) {
+FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign,
+                               bool orthographic) {
   FloatImage out(clip.width, clip.height, 3);
   for (int j = 0; j < clip.height; ++j) {
     for (int i = 0; i < clip.width; ++i) {
-      const double w = clip.at(i, j, w_channel);
-      if (!(w > 0.0)) {
+      const double z_r = clip.at(i, j, w_channel);
+      if (!(z_r > 0.0)) {
         out.at(i, j, 0) = out.at(i, j, 1) = 0.5f;
         out.at(i, j, 2) = 0.0f;
         continue;
       }
+      const double w = orthographic ? 1.0 : z_r;
       out.at(i, j, 0) = float(0.5 + 0.5 * (clip.at(i, j, 0) / w));
       out.at(i, j, 1) = float(0.5 + v_sign * (clip.at(i, j, 1) / w));
-      out.at(i, j, 2) = float(w);
+      out.at(i, j, 2) = float(z_r);
     }
   }
   return out;
@@ -89,11 +91,17 @@ std::vector<std::size_t> face_pixels(const reference::Stage& stage,
     return receivers.at(x, y, 2) > 0.0f ? face_of(stage.scene, view.points[k], view.surfaces[k])
                                         : -1;
   };
+  // A box's side is parallel to a directional light's rays: the map sees it
+  // edge-on, so its every point lies on an occluder's silhouette (a tie),
+  // and it receives no light at any visibility.
+  const auto judged = [&](int k) {
+    return k >= 0 && !(stage.scene.light.orthographic() && k > 0 && (k - 1) % 6 < 4);
+  };
   std::vector<std::size_t> out;
   for (int j = 0; j < receivers.height; ++j) {
     for (int i = 0; i < receivers.width; ++i) {
       const int own = face(i, j);
-      bool inside = own >= 0;
+      bool inside = judged(own);
       const int qi = i & ~1, qj = j & ~1;
       for (int d = 0; d < 4 && inside; ++d) {
         const int x = std::min(qi + d % 2, receivers.width - 1);

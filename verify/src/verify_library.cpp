@@ -106,8 +106,11 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
   auto depth = load_executable(ctx.library, entry, PassKind::depth, target);
   if (!depth) return depth.error();
   TargetScenes scenes;
-  for (const reference::Scene& scene : reference::builtin_scenes()) {
+  for (const reference::Scene& builtin : reference::builtin_scenes()) {
     const auto start = Clock::now();
+    // An orthographic map's scenes are lit by a directional light.
+    const reference::Scene scene =
+        reference::for_map_encoding(builtin, map_encoding(entry.variant.keys));
     auto fixture = prepare_scene(
         ctx.engine, depth->program, target, scene,
         reference::receivers(scene, scene.receivers_width, scene.receivers_height), ctx.map_format);

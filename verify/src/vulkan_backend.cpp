@@ -75,10 +75,11 @@ Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw
       program.vert, compile(ShaderStage::vertex,
                             engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex),
                             draw.where + " (engine vertex stage)"));
-  PENUMBRA_TRY_ASSIGN(program.frag, compile(ShaderStage::fragment,
-                                            engine_fragment_shader(draw.target, draw.reflection,
-                                                                   draw.function_text),
-                                            draw.where + " (engine fragment stage)"));
+  PENUMBRA_TRY_ASSIGN(
+      program.frag, compile(ShaderStage::fragment,
+                            engine_fragment_shader(draw.target, draw.reflection, draw.function_text,
+                                                   draw.light_depth),
+                            draw.where + " (engine fragment stage)"));
   PENUMBRA_TRY_ASSIGN(FloatImage clip, engine.run_surface(program, draw.triangles, *fixture.map,
                                                           draw.width, draw.height, fixture.params));
   return SurfacePicture{std::move(clip), nullptr};

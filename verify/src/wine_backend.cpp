@@ -161,7 +161,7 @@ class WineBackend final : public Backend {
                               draw.where + " (engine vertex stage)", vs.path()));
     PENUMBRA_TRY(compile_hlsl_bytecode(
         compiler_, draw.target, ShaderStage::fragment,
-        engine_fragment_shader(draw.target, draw.reflection, draw.function_text),
+        engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth),
         draw.where + " (engine fragment stage)", ps.path()));
     execution = {"vkd3d-compiler's bytecode loaded by the " + name() + " runtime (Wine)", {}};
     PENUMBRA_TRY_ASSIGN(

@@ -62,7 +62,7 @@ std::string variant_header(const Variant* variant, Target target, MapEncoding en
   out += "#define PENUMBRA_LOOP [[dont_unroll]]\n";
   out += target_defines(target);
   out += slot_defines();
-  // 1: perspective, 2: reversed-Z (common/shadow_map.glsl); linear leaves
+  // 1: perspective, 2: reversed-Z, 3: orthographic (common/map_encoding.glsl); linear leaves
   // the text as it was before encodings.
   if (encoding != MapEncoding::linear) {
     out += "#define PENUMBRA_MAP_ENCODING " + std::to_string(int(encoding)) + "\n";

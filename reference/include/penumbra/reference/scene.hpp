@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/light.hpp"
 #include "penumbra/support/image.hpp"
 
@@ -53,6 +54,12 @@ struct Scene {
 
 // The project's scenes; names are unique and stable.
 std::vector<Scene> builtin_scenes();
+
+// `scene` laid out for a map in `encoding`: itself, but for an orthographic
+// map, whose light becomes directional: the box as wide as the scene's
+// frustum at plane_z0 (the receivers' texel density), and ray slopes up to
+// L / plane_z0 (the angle its area light spans seen from the plane).
+Scene for_map_encoding(Scene scene, MapEncoding encoding);
 
 // The occluders as a triangle list in light-view space, two per rectangle
 // and twelve per box (winding unspecified: draw with culling off).

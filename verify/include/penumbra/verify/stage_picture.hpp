@@ -45,16 +45,20 @@ struct StagePictureCheck {
 
 // (u, v, z_r) from each pixel's light clip position (x, y, w in channels
 // 0, 1 and `w_channel`), as the function form derives them: v = 0.5 +
-// `v_sign` y / w (0.5 for the GL targets, -0.5 for Direct3D's). A pixel no
-// surface covers (w <= 0, the clear) gets a receiver at the light, which is
-// lit.
-FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign);
+// `v_sign` y / w (0.5 for the GL targets, -0.5 for Direct3D's), z_r = w.
+// An `orthographic` light's w is 1, and `w_channel` holds z_r instead.
+// A pixel no surface covers (that channel <= 0, the clear) gets a receiver
+// at the light, which is lit.
+FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign,
+                               bool orthographic = false);
 
 // The pixels of `receivers` (the stage seen through `view`'s pixels, row 0
 // at the top) inside one face of the stage with the rest of their 2x2
 // quad, the pixels a GPU takes screen derivatives over, as indices in
 // row-major order. Elsewhere the GPU's derivatives extrapolate a face past
 // its edge, and rasterization and the ray cast may see different surfaces.
+// Under an orthographic (directional) light, boxes' sides are left out:
+// they lie along its rays.
 std::vector<std::size_t> face_pixels(const reference::Stage& stage,
                                      const reference::StageView& view, const FloatImage& receivers);
 
