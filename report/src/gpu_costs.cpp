@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "penumbra/model/map_encoding.hpp"
 #include "penumbra/report/figures.hpp"
 
 namespace penumbra::report {
@@ -24,10 +23,8 @@ std::vector<TimedVariant> time_variants(const Library& library, Engine& engine,
             variant.targets.end()) {
       continue;
     }
-    if (is_orthographic(map_encoding(variant.keys))) {
-      diagnostics({Severity::note, variant.name,
-                   "not timed for the cost chart: the stage's light is not the directional one "
-                   "an orthographic map needs"});
+    if (const std::string reason = off_stage(variant); !reason.empty()) {
+      diagnostics({Severity::note, variant.name, "not timed for the cost chart: " + reason});
       continue;
     }
     auto cost = measure_gpu_cost(library, engine, entry, scene, options);

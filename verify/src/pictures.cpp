@@ -179,6 +179,12 @@ std::size_t count_runs(const Library& library, const PictureOptions& options,
 
 }  // namespace
 
+std::string off_stage(const Variant& variant) {
+  if (!is_orthographic(map_encoding(variant.keys))) return {};
+  return "the pictures' stage has a perspective light; verify checks orthographic maps on its "
+         "directional one";
+}
+
 Status render_pictures(const Library& library, Engine& engine, const PictureScene& scene,
                        const PictureOptions& options, const PictureSink& sink,
                        const DiagnosticConsumer& diagnostics) {
@@ -219,11 +225,7 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
           run.backend = backend->name();
           run.not_executed = backend->missing();
           if (run.not_executed.empty()) run.not_executed = backend->not_executed(entry, target);
-          if (run.not_executed.empty() && is_orthographic(map_encoding(variant.keys))) {
-            run.not_executed =
-                "the pictures' stage has a perspective light; verify checks "
-                "orthographic maps on its directional one";
-          }
+          if (run.not_executed.empty()) run.not_executed = off_stage(variant);
           if (!run.not_executed.empty()) continue;
           Status ran = [&]() -> Status {
             PENUMBRA_TRY_ASSIGN(const TargetScenes* scenes, stages.get(entry, target));

@@ -25,6 +25,10 @@ struct PictureOptions {
   ProgressConsumer progress = {};  // told as each run is handed to the sink; none: nothing is
 };
 
+// Why a scene under the report's spot light cannot show `variant`, or
+// empty: an orthographic map needs a directional light.
+std::string off_stage(const Variant& variant);
+
 // A scene and the receivers to shade it at (u, v, z_r per pixel, the
 // scene's receivers_width x receivers_height).
 struct PictureScene {
