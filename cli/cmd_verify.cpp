@@ -37,18 +37,25 @@ std::string run_label(const VariantRun& v, const TargetRun& t) {
   return label + "]";
 }
 
+// ", perspective" after a per-target check's target where its maps are an
+// engine's: each encoding has its own.
+std::string encoding_note(MapEncoding encoding) {
+  return encoding == MapEncoding::linear ? "" : ", " + std::string(to_string(encoding));
+}
+
 // Every check's line (with `quiet`, only the failed ones), then the totals.
 void print_summary(const VerifyReport& report, bool quiet) {
   for (const DepthCheck& c : report.depth_checks) {
     if (quiet && c.pass) continue;
     std::cout << (c.pass ? "PASS " : "FAIL ") << "depth pass [" << to_string(c.target)
-              << (c.backend == "vulkan" ? "" : " on " + c.backend) << "] on " << c.scene << ": "
-              << c.mismatched << " of " << c.texels << " texels off\n";
+              << (c.backend == "vulkan" ? "" : " on " + c.backend) << encoding_note(c.map_encoding)
+              << "] on " << c.scene << ": " << c.mismatched << " of " << c.texels
+              << " texels off\n";
   }
   for (const MinmaxCheck& c : report.minmax_checks) {
     if (quiet && c.pass) continue;
-    std::cout << (c.pass ? "PASS " : "FAIL ") << "min-max mip [" << to_string(c.target) << "] on "
-              << c.scene << ": ";
+    std::cout << (c.pass ? "PASS " : "FAIL ") << "min-max mip [" << to_string(c.target)
+              << encoding_note(c.map_encoding) << "] on " << c.scene << ": ";
     if (!c.error.empty()) {
       std::cout << c.error << "\n";
     } else {

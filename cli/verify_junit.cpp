@@ -59,6 +59,12 @@ std::string scene_failure(const SceneRun& s) {
   return message;
 }
 
+// A per-target check's scene, after the map encoding it ran on where that
+// is an engine's ("perspective/steps"): each encoding has its own maps.
+std::string encoded_scene(MapEncoding encoding, const std::string& scene) {
+  return encoding == MapEncoding::linear ? scene : std::string(to_string(encoding)) + "/" + scene;
+}
+
 void add_runs(JunitSuite& suite, const VariantRun& v) {
   for (const TargetRun& t : v.runs) {
     const std::string path = std::string(to_string(t.target)) + "/" + t.backend;
@@ -89,17 +95,19 @@ JunitReport to_junit(const VerifyReport& report) {
                       {"penumbra.device", report.device.name}};
   suite.seconds = report.seconds;
   for (const DepthCheck& c : report.depth_checks) {
-    suite.cases.push_back(
-        make_case("depth_pass",
-                  std::string(to_string(c.target)) +
-                      (c.backend == "vulkan" ? "" : "@" + c.backend) + "/" + c.scene,
-                  c.seconds, c.pass,
-                  std::to_string(c.mismatched) + " of " + std::to_string(c.texels) +
-                      " texels off the ray cast (max error " + number(c.max_abs_error) + ")"));
+    suite.cases.push_back(make_case(
+        "depth_pass",
+        std::string(to_string(c.target)) + (c.backend == "vulkan" ? "" : "@" + c.backend) + "/" +
+            encoded_scene(c.map_encoding, c.scene),
+        c.seconds, c.pass,
+        std::to_string(c.mismatched) + " of " + std::to_string(c.texels) +
+            " texels off the ray cast (max error " + number(c.max_abs_error) + ")"));
   }
   for (const MinmaxCheck& c : report.minmax_checks) {
     JunitCase check = make_case(
-        "minmax_mip", std::string(to_string(c.target)) + "/" + c.scene, c.seconds, c.pass,
+        "minmax_mip",
+        std::string(to_string(c.target)) + "/" + encoded_scene(c.map_encoding, c.scene), c.seconds,
+        c.pass,
         std::to_string(c.mismatched) + " of " + std::to_string(c.texels) + " nodes off, " +
             std::to_string(c.levels) + " of " + std::to_string(c.expected_levels) + " levels");
     if (!c.error.empty()) fail_with(check, c.error);

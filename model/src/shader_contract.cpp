@@ -166,16 +166,18 @@ constexpr std::string_view kEncoding[] = {"map_encoding"};
 constexpr std::string_view kGridKeys[] = {"kernel", "map_encoding"};
 constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk", "rotation", "receiver_plane",
                                              "map_encoding"};
-constexpr std::string_view kMinmaxPoissonKeys[] = {"pcf_samples", "disk", "rotation"};
+constexpr std::string_view kMinmaxPoissonKeys[] = {"pcf_samples", "disk", "rotation",
+                                                   "map_encoding"};
 constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples",    "disk",
                                           "rotation",        "receiver_plane", "map_encoding"};
-constexpr std::string_view kMinmaxPcfKeys[] = {"kernel", "traversal"};
-constexpr std::string_view kBackprojectionKeys[] = {"traversal", "max_nodes"};
+constexpr std::string_view kMinmaxPcfKeys[] = {"kernel", "traversal", "map_encoding"};
+constexpr std::string_view kBackprojectionKeys[] = {"traversal", "max_nodes", "map_encoding"};
 constexpr std::string_view kScreenBlurKeys[] = {"blur_radius", "depth_aware"};
-constexpr std::string_view kBitmaskKeys[] = {"traversal", "max_nodes", "light_bits"};
-constexpr std::string_view kTraversal[] = {"traversal"};
+constexpr std::string_view kBitmaskKeys[] = {"traversal", "max_nodes", "light_bits",
+                                             "map_encoding"};
+constexpr std::string_view kTraversalEncoding[] = {"traversal", "map_encoding"};
 constexpr std::string_view kDepthAware[] = {"depth_aware"};
-constexpr std::string_view kRotation[] = {"rotation"};
+constexpr std::string_view kRotationEncoding[] = {"rotation", "map_encoding"};
 constexpr std::string_view kRotationPlaneEncoding[] = {"rotation", "receiver_plane",
                                                        "map_encoding"};
 
@@ -186,10 +188,11 @@ constexpr TechniqueDescription kTechniques[] = {
     {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, kRotationPlaneEncoding, kSinglePass,
      false},
     {Technique::pcss, "pcss", kPcssKeys, kRotationPlaneEncoding, kSinglePass, false},
-    {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversal, kMinmaxPasses, true},
+    {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversalEncoding, kMinmaxPasses, true},
     {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
      kMinmaxPasses, true},
-    {Technique::pcss_minmax, "pcss_minmax", kMinmaxPoissonKeys, kRotation, kMinmaxPasses, true},
+    {Technique::pcss_minmax, "pcss_minmax", kMinmaxPoissonKeys, kRotationEncoding, kMinmaxPasses,
+     true},
     {Technique::screen_blur, "screen_blur", kScreenBlurKeys, kDepthAware, kScreenBlurPasses, false},
     {Technique::bitmask_backprojection, "bitmask_backprojection", kBitmaskKeys, kBackprojectionKeys,
      kMinmaxPasses, true, true},

@@ -1,11 +1,11 @@
 // backprojection's reference: brute force over the texels that can matter.
 // In slopes a = (u - 0.5) Fw / n, a patch at depth z projects from the
-// receiver (slope a_r, depth z_r) to X = (a - a_r) g(z), g(z) = z z_r / (z_r - z).
-// g grows with z, so a texel whose nearest slope edge is farther than
-// L / g(zlo) from a_r misses the light for every depth >= zlo: with zlo the
-// map's minimum, the texels outside backprojection_window() add exactly 0.
-// Texels at or behind the receiver (possible only with a negative bias)
-// cannot be projected towards the light and add nothing.
+// receiver (slope a_r, depth z_r) to X = (a - a_r) g(z), g(z) = z z_r / (z_r - z)
+// (a directional light's: backprojection.hpp). g grows with z, so a texel whose nearest slope edge
+// is farther than L / g(zlo) from a_r misses the light for every depth >= zlo: with zlo the map's
+// minimum, the texels outside backprojection_window() add exactly 0. Texels at or behind the
+// receiver (possible only with a negative bias) cannot be projected towards the light and add
+// nothing.
 #include "penumbra/reference/backprojection.hpp"
 
 #include <algorithm>
@@ -27,6 +27,20 @@ int texel_floor(double coord, int size) {
 
 }  // namespace
 
+double backprojection_to_slope(const LightParams& light) {
+  return light.orthographic() ? light.frustum_width : light.frustum_width / light.near_plane;
+}
+
+double backprojection_gain(const LightParams& light, double z, double z_receiver) {
+  return light.orthographic() ? 1.0 / (z_receiver - z) : z * z_receiver / (z_receiver - z);
+}
+
+double backprojection_reach(const LightParams& light, const Query& q, double min_depth) {
+  return light.orthographic()
+             ? light.light_size_uv() * (q.z - min_depth)
+             : light.light_size_uv() * light.near_plane * (q.z - min_depth) / (q.z * min_depth);
+}
+
 double detail::overlap(double lo, double hi, double half) {
   return std::max(0.0, std::min(hi, half) - std::max(lo, -half));
 }
@@ -35,10 +49,8 @@ TexelRect backprojection_window(const ShadowMapView& map, const LightParams& lig
                                 double min_depth) {
   if (min_depth >= q.z) return {};
   const TexelRect whole{0, 0, map.width() - 1, map.height() - 1};
-  if (min_depth <= 0.0) return whole;
-  // L / g(zlo) as a slope, then in uv.
-  const double reach =
-      light.light_size_uv() * light.near_plane * (q.z - min_depth) / (q.z * min_depth);
+  if (min_depth <= 0.0 && !light.orthographic()) return whole;
+  const double reach = backprojection_reach(light, q, min_depth);
   const TexelRect window{
       texel_floor(q.u - reach, map.width()) - 1, texel_floor(q.v - reach, map.height()) - 1,
       texel_floor(q.u + reach, map.width()) + 1, texel_floor(q.v + reach, map.height()) + 1};
@@ -49,7 +61,7 @@ double backprojected_area(const ShadowMapView& map, const LightParams& light, co
                           const TexelRect& texels) {
   const TexelRect inside = clip(texels, map.width(), map.height());
   const float z_ref = float_reference(q.z, light.bias);
-  const double to_slope = light.frustum_width / light.near_plane;
+  const double to_slope = backprojection_to_slope(light);
   const double L = light.light_world_size;
   const double a_r = (q.u - 0.5) * to_slope;
   const double b_r = (q.v - 0.5) * to_slope;
@@ -60,7 +72,7 @@ double backprojected_area(const ShadowMapView& map, const LightParams& light, co
     for (int i = inside.x0; i <= inside.x1; ++i) {
       const double z = map.depth(i, j);
       if (!(float(z) < z_ref) || z >= q.z) continue;
-      const double g = z * q.z / (q.z - z);
+      const double g = backprojection_gain(light, z, q.z);
       const double a0 = (double(i) / map.width() - 0.5) * to_slope - a_r;
       const double a1 = (double(i + 1) / map.width() - 0.5) * to_slope - a_r;
       area += detail::overlap(a0 * g, a1 * g, L) * detail::overlap(b0 * g, b1 * g, L);

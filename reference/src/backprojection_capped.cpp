@@ -24,7 +24,7 @@ bool edge_close(double uv, int size) {
 bool window_edges_close(const ShadowMapView& map, const MinMaxMip& mip, const LightParams& light,
                         const Query& q) {
   const double nearest = mip.node(mip.top_level(), 0, 0).min;
-  const double reach = light.light_size_uv() * light.near_plane * (q.z - nearest) / (q.z * nearest);
+  const double reach = backprojection_reach(light, q, nearest);
   bool close = false;
   for (double sign : {-1.0, 1.0}) {
     close = close || edge_close(q.u + sign * reach, map.width()) ||

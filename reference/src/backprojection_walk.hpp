@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "penumbra/model/model.hpp"
+#include "penumbra/reference/backprojection.hpp"
 #include "penumbra/reference/light.hpp"
 #include "penumbra/reference/minmax_cursor.hpp"
 #include "penumbra/reference/sampling.hpp"
@@ -26,12 +27,13 @@ class Projector {
  public:
   Projector(const ShadowMapView& map, const LightParams& light, const Query& q)
       : map_(map),
+        light_(light),
         q_(q),
-        to_slope_(light.frustum_width / light.near_plane),
+        to_slope_(backprojection_to_slope(light)),
         half_(light.light_world_size) {}
 
-  // g(z), from slope difference to light-plane distance.
-  double gain(double z) const { return z * q_.z / (q_.z - z); }
+  // g(z), from slope difference to light-plane distance (backprojection.hpp).
+  double gain(double z) const { return backprojection_gain(light_, z, q_.z); }
   // The patch of `texels` at linear depth z projected from the receiver.
   PlaneRect project(const TexelRect& texels, double z) const {
     const double g = gain(z);
@@ -90,6 +92,7 @@ class Projector {
 
  private:
   const ShadowMapView& map_;
+  const LightParams& light_;
   const Query& q_;
   double to_slope_;
   double half_;

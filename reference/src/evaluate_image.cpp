@@ -109,13 +109,6 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                       const ShaderLimits& limits) {
   PENUMBRA_TRY(check_variant(variant));
   PENUMBRA_TRY(check_inputs(stored, receivers));
-  if (reference_reads_mip(variant.technique)) {
-    return make_error(Error::Kind::bad_input, variant.name,
-                      "a map in the " + std::string(to_string(encoded.encoding)) +
-                          " encoding: the reference of " +
-                          std::string(to_string(variant.technique)) +
-                          " reads a min-max mip, which is built from linear depth only");
-  }
   const auto at_shift = [&](int shift) {
     return evaluate_view(variant, ShadowMapView(stored, encoded, shift), light, receivers,
                          precision, limits);

@@ -27,22 +27,36 @@
 
 #include "common/minmax_traversal.glsl"
 
-// Slopes (u - 0.5) Fw / n of map coordinates `uv`.
-vec2 backprojection_slope(vec2 uv) {
+// Slopes (u - 0.5) Fw / n of map coordinates `uv`, two points (u0, v0, u1,
+// v1) at once; under a directional light (an orthographic map) the
+// positions (u - 0.5) Fw across its box.
+vec4 backprojection_slope(vec4 uv) {
+#if PENUMBRA_ORTHOGRAPHIC
+  return (uv - 0.5) * LIGHT_FRUSTUM_WIDTH;
+#else
   return (uv - 0.5) * (LIGHT_FRUSTUM_WIDTH / NEAR_PLANE);
+#endif
 }
 
-// g(z): the factor from slope difference to light-plane distance.
+// g(z): the factor from slope difference to light-plane distance; under a
+// directional light, from position difference to the slope of the
+// direction, whose square [-L, L]^2 is then the light.
 float backprojection_gain(float z, float z_receiver) {
+#if PENUMBRA_ORTHOGRAPHIC
+  return 1.0 / (z_receiver - z);
+#else
   return z * z_receiver / (z_receiver - z);
+#endif
 }
 
 // Light-plane extent of texels `texels` (x0, y0, x1, y1) at linear depth z
-// seen from the receiver with slopes `receiver_slope`: (X0, Y0, X1, Y1).
-vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slope) {
+// seen from the receiver with slopes `receiver_slope` (twice: x, y, x, y):
+// (X0, Y0, X1, Y1). Both corners in one vec4, lane for lane the same
+// arithmetic: Shader Model 3 counts a vec4 operation as one slot.
+vec4 backprojection_project(vec4 texels, float z, vec3 query, vec4 receiver_slope) {
   float gain = backprojection_gain(z, query.z);
-  return vec4((backprojection_slope(texels.xy * TEXEL_SIZE) - receiver_slope) * gain,
-              (backprojection_slope((texels.zw + 1.0) * TEXEL_SIZE) - receiver_slope) * gain);
+  vec4 corners = vec4(texels.xy, texels.zw + 1.0) * TEXEL_SIZE.xyxy;
+  return (backprojection_slope(corners) - receiver_slope) * gain;
 }
 
 // Whether a light-plane rectangle meets the light. For texels projected at
@@ -55,7 +69,11 @@ bool backprojection_touches(vec4 rect) {
 // The texels whose patches can reach the light from the receiver when no
 // occluder is nearer than z_min, plus one texel, clipped to the map.
 vec4 backprojection_window(vec3 query, float z_min) {
+#if PENUMBRA_ORTHOGRAPHIC
+  float half_width = LIGHT_SIZE_UV * (query.z - z_min);
+#else
   float half_width = LIGHT_SIZE_UV * NEAR_PLANE * (query.z - z_min) / (query.z * z_min);
+#endif
   vec2 map_size = params.shadow_map_size.xy;
   return minmax_clip_window(floor((query.xy - half_width) * map_size) - 1.0,
                             floor((query.xy + half_width) * map_size) + 1.0);
@@ -68,7 +86,7 @@ vec4 backprojection_window(vec3 query, float z_min) {
 // or after BACKPROJECTION_MAX_STEPS steps.
 BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
                                         BackprojectionState state) {
-  vec2 receiver_slope = backprojection_slope(query.xy);
+  vec4 receiver_slope = backprojection_slope(query.xyxy);
   float visits = 0.0;
 #if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
   vec2 texel = window.xy;
@@ -145,10 +163,10 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
 // in front of it. A texel occludes when d < reference; one at or behind
 // the receiver (a negative bias lets it pass) cannot be projected towards
 // the light (g(z) is infinite or negative) and is skipped, as the reference
-// does. DEPTH_SCALE is a power of two, so d < z_r DEPTH_SCALE is exactly
-// z < z_r.
+// does. For the library's linear map DEPTH_SCALE is a power of two, so
+// d < z_r DEPTH_SCALE is exactly z < z_r.
 float backprojection_limit(vec3 query) {
-  return min(shadow_reference(query.z), query.z * DEPTH_SCALE);
+  return min(shadow_normalized_reference(query.z), query.z * DEPTH_SCALE);
 }
 
 // Whether any texel can occlude the receiver; `limit` and `window` are then

@@ -55,6 +55,27 @@ float shadow_linear(float stored) {
 }
 #endif
 
+// Normalized linear depth z(d) * DEPTH_SCALE, z(d) / f, of a stored value:
+// what the min-max techniques work in. Their mip is built from it
+// (passes/minmax_init.frag), and back-projection and the blocker average
+// need z. shadow_linear()'s weights over f, with f cancelled: a product
+// fewer per read, which hlsl_dx9's slots count.
+#if PENUMBRA_MAP_ENCODING == 0
+#define shadow_normalized(stored) (stored)
+#elif PENUMBRA_MAP_ENCODING == 3
+float shadow_normalized(float stored) {
+  return (1.0 - stored) * (NEAR_PLANE * DEPTH_SCALE) + stored;
+}
+#else
+float shadow_normalized(float stored) {
+#if PENUMBRA_MAP_ENCODING == 1
+  return NEAR_PLANE / ((1.0 - stored) * INV_DEPTH_SCALE + stored * NEAR_PLANE);
+#else
+  return NEAR_PLANE / (stored * INV_DEPTH_SCALE + (1.0 - stored) * NEAR_PLANE);
+#endif
+}
+#endif
+
 // Whether a stored texel lets a receiver with stored reference `reference`
 // see the light: reversed-Z stores the nearer surface as the larger value.
 #if PENUMBRA_MAP_ENCODING == 2

@@ -1,7 +1,8 @@
 // The min-max mip (Dmitriev 2007) and its reads, for the techniques that use it
 // (minmax_pcf, backprojection, pcss_minmax): a square chain of 2^(N-1)
 // texels a side whose mip m holds hierarchy level m + 1, (min, max) of
-// normalized depth, at texel (0, 0); level 0 is the map itself.
+// normalized linear depth (shadow_normalized()), at texel (0, 0); level 0
+// is the map itself, read through shadow_texel().
 #ifndef PENUMBRA_MINMAX_MIP_GLSL
 #define PENUMBRA_MINMAX_MIP_GLSL
 

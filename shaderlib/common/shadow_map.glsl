@@ -102,10 +102,19 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver) {
 #endif
 }
 
-// Normalized depth of map texel `texel` (integer coordinates), point read.
+// The reference the min-max techniques compare their normalized linear
+// depths (shadow_normalized()) with: (z_r - bias) * DEPTH_SCALE.
+#if PENUMBRA_MAP_ENCODING == 0
+#define shadow_normalized_reference(z_receiver) shadow_reference(z_receiver)
+#else
+#define shadow_normalized_reference(z_receiver) (((z_receiver) - DEPTH_BIAS) * DEPTH_SCALE)
+#endif
+
+// Normalized linear depth of map texel `texel` (integer coordinates), point
+// read.
 float shadow_texel(vec2 texel) {
   penumbra_texel_reads += 1.0;
-  return textureLod(shadow_depth, (texel + 0.5) * TEXEL_SIZE, 0.0).r;
+  return shadow_normalized(textureLod(shadow_depth, (texel + 0.5) * TEXEL_SIZE, 0.0).r);
 }
 
 #endif

@@ -12,7 +12,12 @@
 // z: node minima weighted by the window texels of each node.
 bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float reference) {
   zBlocker = zReceiver;
+  // pcss's search region, a directional light's as well.
+#if PENUMBRA_ORTHOGRAPHIC
+  float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE);
+#else
   float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE) / zReceiver;
+#endif
   vec2 map_size = params.shadow_map_size.xy;
   vec4 window = minmax_clip_window(floor((uv - searchWidth) * map_size),
                                    floor((uv + searchWidth) * map_size));
@@ -45,12 +50,16 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
 float shadow_visibility(vec3 query) {
   if (!(query.z > NEAR_PLANE)) return 1.0;  // up to the near plane, lit, as pcss
   float zBlocker = 0.0;
-  if (!minmax_find_blocker(zBlocker, query.xy, query.z, shadow_reference(query.z))) {
+  if (!minmax_find_blocker(zBlocker, query.xy, query.z, shadow_normalized_reference(query.z))) {
     return 1.0;  // no blocker: fully lit
   }
   // A rendered map holds nothing nearer than the near plane; a blocker there
   // (z = 0 in a hand-made map) would make the penumbra infinite.
   zBlocker = max(zBlocker, NEAR_PLANE);
+#if PENUMBRA_ORTHOGRAPHIC
+  float filterRadiusUV = LIGHT_SIZE_UV * (query.z - zBlocker);  // pcss's directional width
+#else
   float filterRadiusUV = PenumbraSize(query.z, zBlocker) * LIGHT_SIZE_UV * NEAR_PLANE / query.z;
+#endif
   return PCF_Filter(query.xy, query.z, filterRadiusUV);
 }

@@ -147,7 +147,8 @@ TEST(ManifestErrors, LightBitsAreASquareGrid) {
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "bitmask_backprojection", "target": "spirv"})")),
       "perms.json: /sets/1: technique bitmask_backprojection needs key 'light_bits'; "
-      "bitmask_backprojection uses traversal (optional), max_nodes (optional), light_bits");
+      "bitmask_backprojection uses traversal (optional), max_nodes (optional), light_bits, "
+      "map_encoding (optional)");
 }
 
 // Shader Model 3 has no integer bit operations: the set is refused where the
@@ -224,7 +225,7 @@ TEST(ManifestErrors, TraversalAndMaxNodesOnlyWhereUsed) {
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "minmax_pcf", "traversal": "brute_force"})")),
       "perms.json: /sets/1: technique minmax_pcf needs key 'kernel'; minmax_pcf uses "
-      "kernel, traversal (optional)");
+      "kernel, traversal (optional), map_encoding (optional)");
 }
 
 TEST(ManifestErrors, Whitepaper16HasOnly16Points) {
@@ -259,15 +260,15 @@ TEST(ManifestErrors, DiskDeclarations) {
                    "lowercase letters, digits and '_', starting with a letter");
 }
 
-// map_encoding names an encoding, for the techniques whose maps need no
-// min-max mip; linear is the key left out.
+// map_encoding names an encoding, for the techniques that take one (all but
+// screen_blur); linear is the key left out.
 TEST(ManifestErrors, MapEncodingIsAnEncodingOfATechniqueThatTakesOne) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "hard",
                                               "map_encoding": ["perspective", "reversed"]})")),
                    "perms.json: /sets/1/map_encoding/1: unknown map_encoding 'reversed'; allowed "
                    "map encodings: linear, perspective, perspective_reversed, orthographic "
                    "(docs/techniques.md, \"Map encodings\")");
-  expect_bad_input(manifest_error(with_set(R"({"technique": "backprojection",
+  expect_bad_input(manifest_error(with_set(R"({"technique": "screen_blur", "blur_radius": 4,
                                               "map_encoding": "perspective"})")),
                    "perms.json: /sets/1/map_encoding: key 'map_encoding' is used by none of this "
                    "set's techniques");

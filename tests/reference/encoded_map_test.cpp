@@ -139,15 +139,22 @@ bool shader_lit_everywhere_as(bool lit, MapEncoding e, const DepthRange& range, 
   return true;
 }
 
-// On every built-in scene: hard, pcf_grid and pcss on an encoded map match
-// the same depths stored linearly wherever no depth_tie is marked, and a
-// float32 emulation of the shader's comparison agrees with hard's result
-// at every receiver the reference leaves decided.
+// On every built-in scene: every technique that takes an encoding, the
+// min-max ones (their mip built from the decoded map) included, matches on
+// an encoded map the same depths stored linearly wherever no depth_tie is
+// marked, and a float32 emulation of the shader's comparison agrees with
+// hard's result at every receiver the reference leaves decided.
 TEST(EncodedMap, MatchesTheLinearMapAndTheShadersComparisonOnEveryScene) {
+  const std::vector<Point2> disk = {
+      {0.25f, 0.25f}, {-0.25f, 0.25f}, {0.25f, -0.25f}, {-0.25f, -0.25f}};
   const Variant variants[] = {
-      testing::hard_variant(), testing::grid_variant(3),
-      testing::pcss_variant({{0.5f, 0.0f}, {-0.5f, 0.0f}, {0.0f, 0.5f}, {0.0f, -0.5f}},
-                            {{0.25f, 0.25f}, {-0.25f, 0.25f}, {0.25f, -0.25f}, {-0.25f, -0.25f}})};
+      testing::hard_variant(),
+      testing::grid_variant(3),
+      testing::pcss_variant({{0.5f, 0.0f}, {-0.5f, 0.0f}, {0.0f, 0.5f}, {0.0f, -0.5f}}, disk),
+      testing::minmax_pcf_variant(8),
+      testing::backprojection_variant(),
+      testing::bitmask_backprojection_variant(64),
+      testing::pcss_minmax_variant(disk)};
   for (const Scene& builtin : builtin_scenes()) {
     for (const MapEncoding e : kEncodings) {
       // An orthographic map's scene is lit by a directional light.

@@ -26,6 +26,7 @@ nlohmann::json minmax_json(const MinmaxCheck& c) {
                         {"texels_checked", c.texels},
                         {"mismatched", c.mismatched},
                         {"pass", c.pass}};
+  if (c.map_encoding != MapEncoding::linear) out["map_encoding"] = to_string(c.map_encoding);
   if (!c.error.empty()) out["error"] = c.error;
   return out;
 }

@@ -142,6 +142,7 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
       MinmaxCheck failed;
       failed.scene = fixture.scene.name;
       failed.target = target;
+      failed.map_encoding = map_encoding(entry.variant.keys);
       failed.error = levels.error().to_string();
       failed.seconds = seconds_since(start);
       report.minmax_checks.push_back(std::move(failed));
@@ -171,13 +172,13 @@ bool in_shard(const Shard& shard, std::size_t variant_index, Target target) {
          static_cast<std::size_t>(shard.index - 1);
 }
 
-// For each target, the position of the variant the whole run prepares it
-// with: the first wanted one that has the target and, for the min-max mip,
-// uses it. Every shard prepares with the same variant, so it runs what the
-// whole run runs.
+// For each target and map encoding, the position of the variant the whole
+// run prepares it with: the first wanted one that has the target and the
+// encoding and, for the min-max mip, uses it. Every shard prepares with the same variant, so it
+// runs what the whole run runs.
 struct Preparers {
   std::map<MapKey, std::size_t> depth;
-  std::map<Target, std::size_t> minmax;
+  std::map<MapKey, std::size_t> minmax;
 };
 
 Preparers preparers(const Library& library, const VerifyOptions& options) {
@@ -188,7 +189,7 @@ Preparers preparers(const Library& library, const VerifyOptions& options) {
     for (Target target : variant.targets) {
       if (!wanted(options.targets, target)) continue;
       first.depth.emplace(map_key(variant, target), i);
-      if (uses_minmax_mip(variant.technique)) first.minmax.emplace(target, i);
+      if (uses_minmax_mip(variant.technique)) first.minmax.emplace(map_key(variant, target), i);
     }
   }
   return first;
@@ -313,7 +314,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
         }
         TargetScenes& scenes = ctx.scenes.at(key);
         if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
-          const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(target)];
+          const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(key)];
           scenes.minmax = prepare_minmax(ctx, preparer, target, report);
         }
         for (const std::unique_ptr<Backend>& backend : ctx.backends) {
@@ -368,7 +369,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
     return !in_shard(options.shard, prepare_with.depth.at({c.target, c.map_encoding}), c.target);
   });
   std::erase_if(report.minmax_checks, [&](const MinmaxCheck& c) {
-    return !in_shard(options.shard, prepare_with.minmax.at(c.target), c.target);
+    return !in_shard(options.shard, prepare_with.minmax.at({c.target, c.map_encoding}), c.target);
   });
   report.seconds = seconds_since(start);
   return report;

@@ -33,8 +33,11 @@ std::string output_path(const PassStageSource& source, Target target, const Vari
 }
 
 MapEncoding job_encoding(const PassStageSource& source, const Variant& variant) {
-  return source.per_variant || source.pass == PassKind::depth ? map_encoding(variant.keys)
-                                                              : MapEncoding::linear;
+  // Of the shared shaders, the depth pass writes the map and minmax_init's
+  // fragment shader decodes it; the others never see it.
+  const bool sees_map = source.pass == PassKind::depth || (source.pass == PassKind::minmax_init &&
+                                                           source.stage == ShaderStage::fragment);
+  return source.per_variant || sees_map ? map_encoding(variant.keys) : MapEncoding::linear;
 }
 
 ShaderJob make_job(const PassStageSource& source, Target target, const Variant& variant) {

@@ -31,8 +31,9 @@ std::string output_path(const PassStageSource& source, Target target, const Vari
                         MapEncoding encoding);
 
 // The map encoding `source` is compiled for when `variant` runs it: the
-// variant's own for its own shaders and for the depth pass, which writes the
-// map; linear for every other shared pass, which does not depend on it.
+// variant's own for its own shaders, for the depth pass, which writes the
+// map, and for minmax_init's fragment shader, which decodes it; linear for
+// every other shared shader, which does not depend on it.
 MapEncoding job_encoding(const PassStageSource& source, const Variant& variant);
 
 // A job for `source`, ready to run through the pipeline: `variant`'s own,

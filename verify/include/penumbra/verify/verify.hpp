@@ -124,9 +124,10 @@ struct DepthCheck {
 struct MinmaxCheck {
   std::string scene;
   Target target = Target::spirv;
-  int levels = 0;           // levels the device built
-  int expected_levels = 0;  // N of the CPU mip
-  std::size_t texels = 0;   // nodes compared, every level
+  MapEncoding map_encoding = MapEncoding::linear;  // of the map minmax_init decoded
+  int levels = 0;                                  // levels the device built
+  int expected_levels = 0;                         // N of the CPU mip
+  std::size_t texels = 0;                          // nodes compared, every level
   // Of those, min or max not the same float (or a level's size differs).
   std::size_t mismatched = 0;
   std::string error;  // why the mip could not be built or read

@@ -78,8 +78,8 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
 {
     vec3 param = query;
     limit = backprojection_limit(param);
-    vec2 _836 = minmax_top_node();
-    float map_min = _836.x;
+    vec2 _828 = minmax_top_node();
+    float map_min = _828.x;
     vec3 param_1 = query;
     float param_2 = map_min * params.sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -88,9 +88,9 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
     return (map_min < limit) && (!empty);
 }
 
-vec2 backprojection_slope(vec2 uv)
+vec4 backprojection_slope(vec4 uv)
 {
-    return (uv - vec2(0.5)) * (params.light.y / params.light.z);
+    return (uv - vec4(0.5)) * (params.light.y / params.light.z);
 }
 
 float minmax_level_spanning(vec4 window, float nodes)
@@ -172,29 +172,29 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slope)
+vec4 backprojection_project(vec4 texels, float z, vec3 query, vec4 receiver_slope)
 {
     float param = z;
     float param_1 = query.z;
     float gain = backprojection_gain(param, param_1);
-    vec2 param_2 = texels.xy * params.shadow_map_size.zw;
-    vec2 param_3 = (texels.zw + vec2(1.0)) * params.shadow_map_size.zw;
-    return vec4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+    vec4 corners = vec4(texels.xy, texels.zw + vec2(1.0)) * params.shadow_map_size.zwzw;
+    vec4 param_2 = corners;
+    return (backprojection_slope(param_2) - receiver_slope) * gain;
 }
 
 bool backprojection_touches(vec4 rect)
 {
-    bool _594 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _605;
-    if (_594)
+    bool _586 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _597;
+    if (_586)
     {
-        _605 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _597 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _605 = _594;
+        _597 = _586;
     }
-    return _605;
+    return _597;
 }
 
 float backprojection_inside(vec4 rect)
@@ -270,8 +270,8 @@ bool backprojection_covered(float area)
 
 float backprojection_walk(vec3 query, vec4 window, float limit, inout float state)
 {
-    vec2 param = query.xy;
-    vec2 receiver_slope = backprojection_slope(param);
+    vec4 param = query.xyxy;
+    vec4 receiver_slope = backprojection_slope(param);
     float visits = 0.0;
     vec4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -286,46 +286,46 @@ float backprojection_walk(vec3 query, vec4 window, float limit, inout float stat
                 {
                     visits += 1.0;
                 }
-                bool _715 = !cursor.climbed;
-                bool _726;
-                if (_715)
+                bool _707 = !cursor.climbed;
+                bool _718;
+                if (_707)
                 {
                     MinmaxCursor param_2 = cursor;
                     vec4 param_3 = window;
                     vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _726 = !minmax_window_empty(param_4);
+                    _718 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _726 = _715;
+                    _718 = _707;
                 }
-                if (_726)
+                if (_718)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _732 = minmax_cursor_read(param_5);
-                    vec2 range = _732;
+                    vec2 _724 = minmax_cursor_read(param_5);
+                    vec2 range = _724;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     vec4 param_7 = texels;
                     float param_8 = range.x * params.sampling.w;
                     vec3 param_9 = query;
-                    vec2 param_10 = receiver_slope;
+                    vec4 param_10 = receiver_slope;
                     vec4 rect = backprojection_project(param_7, param_8, param_9, param_10);
                     vec4 param_11 = rect;
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _767 = range.y < limit;
-                        bool _775;
-                        if (_767)
+                        bool _759 = range.y < limit;
+                        bool _767;
+                        if (_759)
                         {
-                            _775 = range.x == range.y;
+                            _767 = range.x == range.y;
                         }
                         else
                         {
-                            _775 = _767;
+                            _767 = _759;
                         }
-                        bool one_patch = _775;
+                        bool one_patch = _767;
                         descend = !one_patch;
                         if (one_patch)
                         {
@@ -362,16 +362,16 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _870 = shadow_compare_point(param, param_1);
-        return _870;
+        float _862 = shadow_compare_point(param, param_1);
+        return _862;
     }
     vec3 param_2 = query;
     float param_3;
     vec4 param_4;
-    bool _878 = backprojection_start(param_2, param_3, param_4);
+    bool _870 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     vec4 window = param_4;
-    if (!_878)
+    if (!_870)
     {
         return 1.0;
     }
@@ -379,8 +379,8 @@ float shadow_visibility(vec3 query)
     vec4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0;
-    float _893 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _893;
+    float _885 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _885;
     return max(0.0, 1.0 - (area / backprojection_whole_light_area()));
 }
 
@@ -391,8 +391,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _918 = shadow_visibility(param);
-    return _918;
+    float _910 = shadow_visibility(param);
+    return _910;
 }
 
 void main()
@@ -401,8 +401,8 @@ void main()
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
     vec2 param_1 = floor(screen_uv * params.screen_size.xy);
-    float _939 = receiver_visibility(param, param_1);
-    float visible = _939;
+    float _931 = receiver_visibility(param, param_1);
+    float visible = _931;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -88,8 +88,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _836 = minmax_top_node();
-    float map_min = _836.x;
+    float2 _828 = minmax_top_node();
+    float map_min = _828.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -98,9 +98,9 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
     return (map_min < limit) && (!empty);
 }
 
-float2 backprojection_slope(float2 uv)
+float4 backprojection_slope(float4 uv)
 {
-    return (uv - 0.5f.xx) * (params_light.y / params_light.z);
+    return (uv - 0.5f.xxxx) * (params_light.y / params_light.z);
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -183,31 +183,31 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-float4 backprojection_project(float4 texels, float z, float3 query, float2 receiver_slope)
+float4 backprojection_project(float4 texels, float z, float3 query, float4 receiver_slope)
 {
     float param = z;
     float param_1 = query.z;
     float gain = backprojection_gain(param, param_1);
-    float2 param_2 = texels.xy * params_shadow_map_size.zw;
-    float2 param_3 = (texels.zw + 1.0f.xx) * params_shadow_map_size.zw;
-    return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+    float4 corners = float4(texels.xy, texels.zw + 1.0f.xx) * params_shadow_map_size.zwzw;
+    float4 param_2 = corners;
+    return (backprojection_slope(param_2) - receiver_slope) * gain;
 }
 
 bool backprojection_touches(float4 rect)
 {
-    float2 _592 = params_light.x.xx;
-    bool _594 = all(bool2(rect.xy.x <= _592.x, rect.xy.y <= _592.y));
-    bool _605;
-    if (_594)
+    float2 _584 = params_light.x.xx;
+    bool _586 = all(bool2(rect.xy.x <= _584.x, rect.xy.y <= _584.y));
+    bool _597;
+    if (_586)
     {
-        float2 _602 = (-params_light.x).xx;
-        _605 = all(bool2(rect.zw.x >= _602.x, rect.zw.y >= _602.y));
+        float2 _594 = (-params_light.x).xx;
+        _597 = all(bool2(rect.zw.x >= _594.x, rect.zw.y >= _594.y));
     }
     else
     {
-        _605 = _594;
+        _597 = _586;
     }
-    return _605;
+    return _597;
 }
 
 float backprojection_inside(float4 rect)
@@ -283,8 +283,8 @@ bool backprojection_covered(float area)
 
 float backprojection_walk(float3 query, float4 window, float limit, inout float state)
 {
-    float2 param = query.xy;
-    float2 receiver_slope = backprojection_slope(param);
+    float4 param = query.xyxy;
+    float4 receiver_slope = backprojection_slope(param);
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -302,46 +302,46 @@ float backprojection_walk(float3 query, float4 window, float limit, inout float 
                 {
                     visits += 1.0f;
                 }
-                bool _715 = !cursor.climbed;
-                bool _726;
-                if (_715)
+                bool _707 = !cursor.climbed;
+                bool _718;
+                if (_707)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _726 = !minmax_window_empty(param_4);
+                    _718 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _726 = _715;
+                    _718 = _707;
                 }
-                if (_726)
+                if (_718)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _732 = minmax_cursor_read(param_5);
-                    float2 range = _732;
+                    float2 _724 = minmax_cursor_read(param_5);
+                    float2 range = _724;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float4 param_7 = texels;
                     float param_8 = range.x * params_sampling.w;
                     float3 param_9 = query;
-                    float2 param_10 = receiver_slope;
+                    float4 param_10 = receiver_slope;
                     float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
                     float4 param_11 = rect;
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _767 = range.y < limit;
-                        bool _775;
-                        if (_767)
+                        bool _759 = range.y < limit;
+                        bool _767;
+                        if (_759)
                         {
-                            _775 = range.x == range.y;
+                            _767 = range.x == range.y;
                         }
                         else
                         {
-                            _775 = _767;
+                            _767 = _759;
                         }
-                        bool one_patch = _775;
+                        bool one_patch = _767;
                         descend = !one_patch;
                         if (one_patch)
                         {
@@ -378,16 +378,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _870 = shadow_compare_point(param, param_1);
-        return _870;
+        float _862 = shadow_compare_point(param, param_1);
+        return _862;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _878 = backprojection_start(param_2, param_3, param_4);
+    bool _870 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_878)
+    if (!_870)
     {
         return 1.0f;
     }
@@ -395,8 +395,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0f;
-    float _893 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _893;
+    float _885 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _885;
     return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
@@ -407,8 +407,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _918 = shadow_visibility(param);
-    return _918;
+    float _910 = shadow_visibility(param);
+    return _910;
 }
 
 void frag_main()
@@ -417,8 +417,8 @@ void frag_main()
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _939 = receiver_visibility(param, param_1);
-    float visible = _939;
+    float _931 = receiver_visibility(param, param_1);
+    float visible = _931;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

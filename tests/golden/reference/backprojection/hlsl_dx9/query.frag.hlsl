@@ -84,8 +84,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _862 = minmax_top_node();
-    float map_min = _862.x;
+    float2 _854 = minmax_top_node();
+    float map_min = _854.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -94,9 +94,9 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
     return (map_min < limit) && (!empty);
 }
 
-float2 backprojection_slope(float2 uv)
+float4 backprojection_slope(float4 uv)
 {
-    return (uv - 0.5f.xx) * (params_light.y / params_light.z);
+    return (uv - 0.5f.xxxx) * (params_light.y / params_light.z);
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -179,31 +179,31 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-float4 backprojection_project(float4 texels, float z, float3 query, float2 receiver_slope)
+float4 backprojection_project(float4 texels, float z, float3 query, float4 receiver_slope)
 {
     float param = z;
     float param_1 = query.z;
     float gain = backprojection_gain(param, param_1);
-    float2 param_2 = texels.xy * params_shadow_map_size.zw;
-    float2 param_3 = (texels.zw + 1.0f.xx) * params_shadow_map_size.zw;
-    return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+    float4 corners = float4(texels.xy, texels.zw + 1.0f.xx) * params_shadow_map_size.zwzw;
+    float4 param_2 = corners;
+    return (backprojection_slope(param_2) - receiver_slope) * gain;
 }
 
 bool backprojection_touches(float4 rect)
 {
-    float2 _595 = params_light.x.xx;
-    bool _597 = all(bool2(rect.xy.x <= _595.x, rect.xy.y <= _595.y));
-    bool _608;
-    if (_597)
+    float2 _587 = params_light.x.xx;
+    bool _589 = all(bool2(rect.xy.x <= _587.x, rect.xy.y <= _587.y));
+    bool _600;
+    if (_589)
     {
-        float2 _605 = (-params_light.x).xx;
-        _608 = all(bool2(rect.zw.x >= _605.x, rect.zw.y >= _605.y));
+        float2 _597 = (-params_light.x).xx;
+        _600 = all(bool2(rect.zw.x >= _597.x, rect.zw.y >= _597.y));
     }
     else
     {
-        _608 = _597;
+        _600 = _589;
     }
-    return _608;
+    return _600;
 }
 
 float backprojection_inside(float4 rect)
@@ -279,8 +279,8 @@ bool backprojection_covered(float area)
 
 float backprojection_walk(float3 query, float4 window, float limit, inout float state)
 {
-    float2 param = query.xy;
-    float2 receiver_slope = backprojection_slope(param);
+    float4 param = query.xyxy;
+    float4 receiver_slope = backprojection_slope(param);
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -301,57 +301,57 @@ float backprojection_walk(float3 query, float4 window, float limit, inout float 
                     visits += 1.0f;
                 }
                 steps_left -= 1.0f;
-                bool _722 = !cursor.climbed;
-                bool _733;
-                if (_722)
+                bool _714 = !cursor.climbed;
+                bool _725;
+                if (_714)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _733 = !minmax_window_empty(param_4);
+                    _725 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _733 = _722;
+                    _725 = _714;
                 }
-                if (_733)
+                if (_725)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _739 = minmax_cursor_read(param_5);
-                    float2 range = _739;
+                    float2 _731 = minmax_cursor_read(param_5);
+                    float2 range = _731;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float4 param_7 = texels;
                     float param_8 = range.x * params_sampling.w;
                     float3 param_9 = query;
-                    float2 param_10 = receiver_slope;
+                    float4 param_10 = receiver_slope;
                     float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
                     float4 param_11 = rect;
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _774 = range.y < limit;
-                        bool _782;
-                        if (_774)
+                        bool _766 = range.y < limit;
+                        bool _774;
+                        if (_766)
                         {
-                            _782 = range.x == range.y;
+                            _774 = range.x == range.y;
                         }
                         else
                         {
-                            _782 = _774;
+                            _774 = _766;
                         }
-                        bool one_patch = _782;
-                        bool _784 = !one_patch;
-                        bool _791;
-                        if (_784)
+                        bool one_patch = _774;
+                        bool _776 = !one_patch;
+                        bool _783;
+                        if (_776)
                         {
-                            _791 = steps_left >= (steps_to_end + 4.0f);
+                            _783 = steps_left >= (steps_to_end + 4.0f);
                         }
                         else
                         {
-                            _791 = _784;
+                            _783 = _776;
                         }
-                        descend = _791;
+                        descend = _783;
                         if (!descend)
                         {
                             float param_12 = state;
@@ -389,16 +389,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _896 = shadow_compare_point(param, param_1);
-        return _896;
+        float _888 = shadow_compare_point(param, param_1);
+        return _888;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _904 = backprojection_start(param_2, param_3, param_4);
+    bool _896 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_904)
+    if (!_896)
     {
         return 1.0f;
     }
@@ -406,8 +406,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0f;
-    float _919 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _919;
+    float _911 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _911;
     return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
@@ -418,8 +418,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _944 = shadow_visibility(param);
-    return _944;
+    float _936 = shadow_visibility(param);
+    return _936;
 }
 
 void frag_main()
@@ -428,8 +428,8 @@ void frag_main()
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _965 = receiver_visibility(param, param_1);
-    float visible = _965;
+    float _957 = receiver_visibility(param, param_1);
+    float visible = _957;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

@@ -84,8 +84,8 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
 {
     vec3 param = query;
     limit = backprojection_limit(param);
-    vec2 _962 = minmax_top_node();
-    float map_min = _962.x;
+    vec2 _954 = minmax_top_node();
+    float map_min = _954.x;
     vec3 param_1 = query;
     float param_2 = map_min * params.sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -94,9 +94,9 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
     return (map_min < limit) && (!empty);
 }
 
-vec2 backprojection_slope(vec2 uv)
+vec4 backprojection_slope(vec4 uv)
 {
-    return (uv - vec2(0.5)) * (params.light.y / params.light.z);
+    return (uv - vec4(0.5)) * (params.light.y / params.light.z);
 }
 
 float minmax_level_spanning(vec4 window, float nodes)
@@ -178,29 +178,29 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-vec4 backprojection_project(vec4 texels, float z, vec3 query, vec2 receiver_slope)
+vec4 backprojection_project(vec4 texels, float z, vec3 query, vec4 receiver_slope)
 {
     float param = z;
     float param_1 = query.z;
     float gain = backprojection_gain(param, param_1);
-    vec2 param_2 = texels.xy * params.shadow_map_size.zw;
-    vec2 param_3 = (texels.zw + vec2(1.0)) * params.shadow_map_size.zw;
-    return vec4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+    vec4 corners = vec4(texels.xy, texels.zw + vec2(1.0)) * params.shadow_map_size.zwzw;
+    vec4 param_2 = corners;
+    return (backprojection_slope(param_2) - receiver_slope) * gain;
 }
 
 bool backprojection_touches(vec4 rect)
 {
-    bool _721 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _732;
-    if (_721)
+    bool _713 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
+    bool _724;
+    if (_713)
     {
-        _732 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
+        _724 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
     }
     else
     {
-        _732 = _721;
+        _724 = _713;
     }
-    return _732;
+    return _724;
 }
 
 int bitmask_popcount(inout uint x)
@@ -294,8 +294,8 @@ bool backprojection_covered(BackprojectionState state)
 
 BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit, inout BackprojectionState state)
 {
-    vec2 param = query.xy;
-    vec2 receiver_slope = backprojection_slope(param);
+    vec4 param = query.xyxy;
+    vec4 receiver_slope = backprojection_slope(param);
     float visits = 0.0;
     vec4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -310,53 +310,53 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit, in
                 {
                     visits += 1.0;
                 }
-                bool _841 = !cursor.climbed;
-                bool _852;
-                if (_841)
+                bool _833 = !cursor.climbed;
+                bool _844;
+                if (_833)
                 {
                     MinmaxCursor param_2 = cursor;
                     vec4 param_3 = window;
                     vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _852 = !minmax_window_empty(param_4);
+                    _844 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _852 = _841;
+                    _844 = _833;
                 }
-                if (_852)
+                if (_844)
                 {
                     MinmaxCursor param_5 = cursor;
-                    vec2 _858 = minmax_cursor_read(param_5);
-                    vec2 range = _858;
+                    vec2 _850 = minmax_cursor_read(param_5);
+                    vec2 range = _850;
                     MinmaxCursor param_6 = cursor;
                     vec4 texels = minmax_node_texels(param_6);
                     vec4 param_7 = texels;
                     float param_8 = range.x * params.sampling.w;
                     vec3 param_9 = query;
-                    vec2 param_10 = receiver_slope;
+                    vec4 param_10 = receiver_slope;
                     vec4 rect = backprojection_project(param_7, param_8, param_9, param_10);
                     vec4 param_11 = rect;
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _893 = range.y < limit;
-                        bool _901;
-                        if (_893)
+                        bool _885 = range.y < limit;
+                        bool _893;
+                        if (_885)
                         {
-                            _901 = range.x == range.y;
+                            _893 = range.x == range.y;
                         }
                         else
                         {
-                            _901 = _893;
+                            _893 = _885;
                         }
-                        bool one_patch = _901;
+                        bool one_patch = _893;
                         descend = !one_patch;
                         if (one_patch)
                         {
                             BackprojectionState param_12 = state;
                             vec4 param_13 = rect;
-                            BackprojectionState _911 = backprojection_add(param_12, param_13);
-                            state = _911;
+                            BackprojectionState _903 = backprojection_add(param_12, param_13);
+                            state = _903;
                         }
                     }
                 }
@@ -387,16 +387,16 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _996 = shadow_compare_point(param, param_1);
-        return _996;
+        float _988 = shadow_compare_point(param, param_1);
+        return _988;
     }
     vec3 param_2 = query;
     float param_3;
     vec4 param_4;
-    bool _1004 = backprojection_start(param_2, param_3, param_4);
+    bool _996 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     vec4 window = param_4;
-    if (!_1004)
+    if (!_996)
     {
         return 1.0;
     }
@@ -410,8 +410,8 @@ float shadow_visibility(vec3 query)
     vec4 param_6 = window;
     float param_7 = limit;
     BackprojectionState param_8 = state;
-    BackprojectionState _1034 = backprojection_walk(param_5, param_6, param_7, param_8);
-    state = _1034;
+    BackprojectionState _1026 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1026;
     return 1.0 - (float(state.set) / 64.0);
 }
 
@@ -422,8 +422,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _1060 = shadow_visibility(param);
-    return _1060;
+    float _1052 = shadow_visibility(param);
+    return _1052;
 }
 
 void main()
@@ -432,8 +432,8 @@ void main()
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
     vec2 param_1 = floor(screen_uv * params.screen_size.xy);
-    float _1081 = receiver_visibility(param, param_1);
-    float visible = _1081;
+    float _1073 = receiver_visibility(param, param_1);
+    float visible = _1073;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

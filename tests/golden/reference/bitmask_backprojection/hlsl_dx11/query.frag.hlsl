@@ -94,8 +94,8 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _962 = minmax_top_node();
-    float map_min = _962.x;
+    float2 _954 = minmax_top_node();
+    float map_min = _954.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
@@ -104,9 +104,9 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
     return (map_min < limit) && (!empty);
 }
 
-float2 backprojection_slope(float2 uv)
+float4 backprojection_slope(float4 uv)
 {
-    return (uv - 0.5f.xx) * (params_light.y / params_light.z);
+    return (uv - 0.5f.xxxx) * (params_light.y / params_light.z);
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -189,31 +189,31 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-float4 backprojection_project(float4 texels, float z, float3 query, float2 receiver_slope)
+float4 backprojection_project(float4 texels, float z, float3 query, float4 receiver_slope)
 {
     float param = z;
     float param_1 = query.z;
     float gain = backprojection_gain(param, param_1);
-    float2 param_2 = texels.xy * params_shadow_map_size.zw;
-    float2 param_3 = (texels.zw + 1.0f.xx) * params_shadow_map_size.zw;
-    return float4((backprojection_slope(param_2) - receiver_slope) * gain, (backprojection_slope(param_3) - receiver_slope) * gain);
+    float4 corners = float4(texels.xy, texels.zw + 1.0f.xx) * params_shadow_map_size.zwzw;
+    float4 param_2 = corners;
+    return (backprojection_slope(param_2) - receiver_slope) * gain;
 }
 
 bool backprojection_touches(float4 rect)
 {
-    float2 _719 = params_light.x.xx;
-    bool _721 = all(bool2(rect.xy.x <= _719.x, rect.xy.y <= _719.y));
-    bool _732;
-    if (_721)
+    float2 _711 = params_light.x.xx;
+    bool _713 = all(bool2(rect.xy.x <= _711.x, rect.xy.y <= _711.y));
+    bool _724;
+    if (_713)
     {
-        float2 _729 = (-params_light.x).xx;
-        _732 = all(bool2(rect.zw.x >= _729.x, rect.zw.y >= _729.y));
+        float2 _721 = (-params_light.x).xx;
+        _724 = all(bool2(rect.zw.x >= _721.x, rect.zw.y >= _721.y));
     }
     else
     {
-        _732 = _721;
+        _724 = _713;
     }
-    return _732;
+    return _724;
 }
 
 int bitmask_popcount(inout uint x)
@@ -308,8 +308,8 @@ bool backprojection_covered(BackprojectionState state)
 
 BackprojectionState backprojection_walk(float3 query, float4 window, float limit, inout BackprojectionState state)
 {
-    float2 param = query.xy;
-    float2 receiver_slope = backprojection_slope(param);
+    float4 param = query.xyxy;
+    float4 receiver_slope = backprojection_slope(param);
     float visits = 0.0f;
     float4 param_1 = window;
     MinmaxCursor cursor = minmax_begin(param_1);
@@ -327,53 +327,53 @@ BackprojectionState backprojection_walk(float3 query, float4 window, float limit
                 {
                     visits += 1.0f;
                 }
-                bool _841 = !cursor.climbed;
-                bool _852;
-                if (_841)
+                bool _833 = !cursor.climbed;
+                bool _844;
+                if (_833)
                 {
                     MinmaxCursor param_2 = cursor;
                     float4 param_3 = window;
                     float4 param_4 = minmax_node_part(param_2, param_3);
-                    _852 = !minmax_window_empty(param_4);
+                    _844 = !minmax_window_empty(param_4);
                 }
                 else
                 {
-                    _852 = _841;
+                    _844 = _833;
                 }
-                if (_852)
+                if (_844)
                 {
                     MinmaxCursor param_5 = cursor;
-                    float2 _858 = minmax_cursor_read(param_5);
-                    float2 range = _858;
+                    float2 _850 = minmax_cursor_read(param_5);
+                    float2 range = _850;
                     MinmaxCursor param_6 = cursor;
                     float4 texels = minmax_node_texels(param_6);
                     float4 param_7 = texels;
                     float param_8 = range.x * params_sampling.w;
                     float3 param_9 = query;
-                    float2 param_10 = receiver_slope;
+                    float4 param_10 = receiver_slope;
                     float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
                     float4 param_11 = rect;
                     bool touches = backprojection_touches(param_11);
                     if ((range.x < limit) && touches)
                     {
-                        bool _893 = range.y < limit;
-                        bool _901;
-                        if (_893)
+                        bool _885 = range.y < limit;
+                        bool _893;
+                        if (_885)
                         {
-                            _901 = range.x == range.y;
+                            _893 = range.x == range.y;
                         }
                         else
                         {
-                            _901 = _893;
+                            _893 = _885;
                         }
-                        bool one_patch = _901;
+                        bool one_patch = _893;
                         descend = !one_patch;
                         if (one_patch)
                         {
                             BackprojectionState param_12 = state;
                             float4 param_13 = rect;
-                            BackprojectionState _911 = backprojection_add(param_12, param_13);
-                            state = _911;
+                            BackprojectionState _903 = backprojection_add(param_12, param_13);
+                            state = _903;
                         }
                     }
                 }
@@ -404,16 +404,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _996 = shadow_compare_point(param, param_1);
-        return _996;
+        float _988 = shadow_compare_point(param, param_1);
+        return _988;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _1004 = backprojection_start(param_2, param_3, param_4);
+    bool _996 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_1004)
+    if (!_996)
     {
         return 1.0f;
     }
@@ -428,8 +428,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     BackprojectionState param_8 = state;
-    BackprojectionState _1034 = backprojection_walk(param_5, param_6, param_7, param_8);
-    state = _1034;
+    BackprojectionState _1026 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1026;
     return 1.0f - (float(state.set) / 64.0f);
 }
 
@@ -440,8 +440,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _1060 = shadow_visibility(param);
-    return _1060;
+    float _1052 = shadow_visibility(param);
+    return _1052;
 }
 
 void frag_main()
@@ -450,8 +450,8 @@ void frag_main()
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _1081 = receiver_visibility(param, param_1);
-    float visible = _1081;
+    float _1073 = receiver_visibility(param, param_1);
+    float visible = _1073;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 
