@@ -38,10 +38,10 @@ Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVarian
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
                      std::span<const FloatImage> rounded) {
   const SceneFixture& fixture = camera.fixture;
+  // A path's own map (Wine's runtimes draw theirs) is in the fixture's depth
+  // format, as the Vulkan one is.
   EngineMap map{own_map ? *own_map : fixture.normalized_depth, fixture.encoded,
                 depth_scale_for(fixture.scene.far_z)};
-  // A path's own map (Wine's runtimes draw theirs) is a float one.
-  if (own_map && map.encoded) map.encoded->format = DepthFormat::d32_float;
   check.map_format = map.encoded ? map.encoded->format : DepthFormat::d32_float;
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};

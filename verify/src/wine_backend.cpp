@@ -133,8 +133,12 @@ class WineBackend final : public Backend {
           output.own_stored_depth = drawn->stored;
           output.own_linear_depth = drawn->linear;
           if (!drawn->checked) {
-            output.own_depth_check = check_depth(fixture.scene, target, *drawn->linear, name());
+            const DepthFormat format = fixture.map_format();
+            output.own_depth_check =
+                check_depth(fixture.scene, target, *drawn->linear, name(),
+                            format != DepthFormat::d32_float ? fixture.encoded : std::nullopt);
             output.own_depth_check->map_encoding = fixture.depth_check.map_encoding;
+            output.own_depth_check->map_format = format;
             drawn->checked = true;
           }
           return output;
@@ -202,15 +206,19 @@ class WineBackend final : public Backend {
   // The fixture's scene drawn by the target's depth pass on this runtime,
   // once per scene and map encoding.
   Result<RuntimeMap*> map_of(const D3dPass& depth, const SceneFixture& fixture) {
+    // The fixture's depth format: an engine's D24 or D16 map where the
+    // target reads a depth texture (hlsl_dx9's map is its R32F target).
+    const DepthFormat format = fixture.map_format();
     const std::string key =
         fixture.scene.name + "@" + std::to_string(fixture.scene.map_width) + "x" +
         std::to_string(fixture.scene.map_height) + " " +
-        std::string(to_string(depth.reflection.map_encoding.value_or(MapEncoding::linear)));
+        std::string(to_string(depth.reflection.map_encoding.value_or(MapEncoding::linear))) + " " +
+        std::string(to_string(format));
     if (auto known = maps_.find(key); known != maps_.end()) return &known->second;
     PENUMBRA_TRY_ASSIGN(
         D3dMap map,
         engine_->render_depth(depth, reference::triangles(fixture.scene), fixture.scene.map_width,
-                              fixture.scene.map_height, fixture.params));
+                              fixture.scene.map_height, fixture.params, format));
     auto stored = std::make_shared<const FloatImage>(map.normalized);
     auto linear = std::make_shared<const FloatImage>(
         linear_depth_of(*stored, fixture.encoded, depth_scale_for(fixture.scene.far_z)));

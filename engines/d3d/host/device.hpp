@@ -24,7 +24,8 @@ enum class Usage {
            // min-max levels and the mipmapped min-max chain, the D3D9 map)
   depth,   // D3D9: a depth-stencil surface only (FORMAT D3DFMT_D24X8);
            // D3D10/11: the shadow map, a typeless texture (FORMAT
-           // DXGI_FORMAT_R32_TYPELESS) with a D32_FLOAT depth-stencil view and
+           // DXGI_FORMAT_R32_TYPELESS, R24G8_TYPELESS or R16_TYPELESS) with a
+           // D32_FLOAT, D24_UNORM_S8_UINT or D16_UNORM depth-stencil view and
            // shader-resource views of the format each binding names
   input,   // shader-read only, filled by upload (receivers, disks, a map given)
 };

@@ -21,7 +21,11 @@
 
 #include <wrl/client.h>
 
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -97,6 +101,12 @@ class DxgiDevice final : public Device {
   std::string make_texture(Texture& t, const typename Api::SubresourceData* data, int id);
   std::string make_staging(const Texture& t, int level, UINT cpu_access, ComPtr<Texture2D>& staging,
                            int id);
+  // Copies level `level` of `t` to a staging texture, maps it and calls
+  // use(data, row pitch) while mapped.
+  template <typename Use>
+  std::string with_staged(const Texture& t, int level, int id, Use use);
+  // How far a staged D24 texel's depth lies from bit 0 (read_unorm_rows()).
+  std::string d24_depth_shift(unsigned& shift);
   std::string find_level(int id, int level, Texture*& t);
   std::string find_shader(int id, Stage stage, Shader*& s);
   std::string render_target(Texture& t, int id, int level, RenderTargetView*& view);
@@ -121,6 +131,7 @@ class DxgiDevice final : public Device {
   std::map<int, Shader> shaders_;
   std::map<SamplerSettings, ComPtr<SamplerState>> samplers_;
   std::map<std::tuple<Stage, UINT, std::size_t>, ComPtr<typename Api::Buffer>> constants_;
+  std::optional<unsigned> d24_shift_;  // found by the first D24 read
 };
 
 template <typename Api>
@@ -239,6 +250,9 @@ template <typename Api>
 std::string DxgiDevice<Api>::upload(int id, int level, const std::vector<float>& texels) {
   Texture* t = nullptr;
   if (std::string error = find_level(id, level, t); !error.empty()) return error;
+  if (t->format.unorm_bits) {
+    return texture_name(id) + " holds unorm depth: it is drawn, not uploaded as floats";
+  }
   const UINT row = level_size(t->desc.width, level) * t->format.bytes;
   const UINT rows = level_size(t->desc.height, level);
   if (texels.size() * sizeof(float) != std::size_t{row} * rows) {
@@ -334,7 +348,7 @@ template <typename Api>
 std::string DxgiDevice<Api>::depth_stencil(Texture& t, int id, DepthStencilView*& view) {
   if (!t.depth) {
     typename Api::DepthStencilViewDesc desc{};
-    desc.Format = DXGI_FORMAT_D32_FLOAT;
+    desc.Format = t.format.depth_view;
     desc.ViewDimension = Api::dsv_dimension_texture2d;
     const HRESULT hr = device_->CreateDepthStencilView(t.texture.Get(), &desc, &t.depth);
     if (FAILED(hr)) return failed("CreateDepthStencilView", hr, texture_name(id));
@@ -604,23 +618,72 @@ std::string DxgiDevice<Api>::copy(int src, int src_level, int dst, int dst_level
 }
 
 template <typename Api>
+template <typename Use>
+std::string DxgiDevice<Api>::with_staged(const Texture& t, int level, int id, Use use) {
+  ComPtr<Texture2D> staging;
+  if (std::string error = make_staging(t, level, Api::cpu_access_read, staging, id);
+      !error.empty()) {
+    return error;
+  }
+  context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, t.texture.Get(), level, nullptr);
+  typename Api::Mapped mapped{};
+  const HRESULT hr = Api::map(context_.Get(), staging.Get(), Api::map_read, mapped);
+  if (FAILED(hr)) return failed("Map (staging)", hr, texture_name(id));
+  use(mapped.pData, mapped.RowPitch);
+  Api::unmap(context_.Get(), staging.Get());
+  return {};
+}
+
+// Direct3D stages an R24G8 texel with its depth in the low 24 bits; Wine's
+// d3d10 and d3d11 stage it as OpenGL packs D24S8, depth in the high 24. So
+// the first D24 read clears a 1x1 probe to depth 0.5 and looks.
+template <typename Api>
+std::string DxgiDevice<Api>::d24_depth_shift(unsigned& shift) {
+  if (!d24_shift_) {
+    constexpr int kProbe = -1;  // an id no job uses
+    Texture probe;
+    probe.desc = {"DXGI_FORMAT_R24G8_TYPELESS", 1, 1, 1, Usage::depth};
+    DepthStencilView* view = nullptr;
+    std::string error = check_texture(probe.desc, probe.format);
+    if (error.empty()) error = make_texture(probe, nullptr, kProbe);
+    if (error.empty()) error = depth_stencil(probe, kProbe, view);
+    std::uint32_t texel = 0;
+    if (error.empty()) {
+      context_->ClearDepthStencilView(view, Api::clear_depth, 0.5f, 0);
+      error = with_staged(probe, 0, kProbe,
+                          [&](const void* data, UINT) { std::memcpy(&texel, data, sizeof texel); });
+    }
+    if (!error.empty()) return error + " (the D24 layout probe)";
+    // 0.5 is code 0x7FFFFF or 0x800000, whichever the device rounds to.
+    const auto half = [](std::uint32_t code) { return code == 0x7FFFFF || code == 0x800000; };
+    if (half(texel & 0xFFFFFF)) {
+      d24_shift_ = 0;
+    } else if (half(texel >> 8)) {
+      d24_shift_ = 8;
+    } else {
+      char hex[16];
+      std::snprintf(hex, sizeof hex, "0x%08X", static_cast<unsigned>(texel));
+      return std::string("a D24 texel cleared to depth 0.5 staged as ") + hex +
+             ", with the depth in neither the low nor the high 24 bits";
+    }
+  }
+  shift = *d24_shift_;
+  return {};
+}
+
+template <typename Api>
 std::vector<float> DxgiDevice<Api>::read(int id, int level, std::string& error) {
   Texture* t = nullptr;
   if (error = find_level(id, level, t); !error.empty()) return {};
-  ComPtr<Texture2D> staging;
-  error = make_staging(*t, level, Api::cpu_access_read, staging, id);
-  if (!error.empty()) return {};
-  context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, t->texture.Get(), level, nullptr);
-  typename Api::Mapped mapped{};
-  const HRESULT hr = Api::map(context_.Get(), staging.Get(), Api::map_read, mapped);
-  if (FAILED(hr)) {
-    error = failed("Map (staging)", hr, texture_name(id));
-    return {};
-  }
-  std::vector<float> texels =
-      read_rows(mapped.pData, mapped.RowPitch, level_size(t->desc.width, level) * t->format.bytes,
-                level_size(t->desc.height, level));
-  Api::unmap(context_.Get(), staging.Get());
+  unsigned shift = 0;
+  if (t->format.unorm_bits == 24 && !(error = d24_depth_shift(shift)).empty()) return {};
+  const UINT width = level_size(t->desc.width, level);
+  const UINT rows = level_size(t->desc.height, level);
+  std::vector<float> texels;
+  error = with_staged(*t, level, id, [&](const void* data, UINT pitch) {
+    texels = t->format.unorm_bits ? read_unorm_rows(data, pitch, width, rows, t->format, shift)
+                                  : read_rows(data, pitch, width * t->format.bytes, rows);
+  });
   return texels;
 }
 

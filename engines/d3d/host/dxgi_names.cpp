@@ -4,6 +4,7 @@
 #include <wrl/client.h>
 
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 
@@ -17,14 +18,36 @@ struct FormatName {
 };
 
 // The reflection's formats (docs/shader-interface.md, "Formats"): R32G32B32
-// is a vertex format only (no render target needs it), R32_TYPELESS is the
-// shadow map's resource format only (views name a typed format).
+// is a vertex format only (no render target needs it). The typeless ones
+// are a shadow map's resource formats only (views name a typed format):
+// R32_TYPELESS the library's D32 map, R24G8 and R16 an engine's D24 and D16
+// maps, read through their unorm views.
 constexpr FormatName kFormats[] = {
     {"DXGI_FORMAT_R32_FLOAT", {DXGI_FORMAT_R32_FLOAT, 4}, true, true, true},
     {"DXGI_FORMAT_R32G32_FLOAT", {DXGI_FORMAT_R32G32_FLOAT, 8}, true, true, true},
     {"DXGI_FORMAT_R32G32B32_FLOAT", {DXGI_FORMAT_R32G32B32_FLOAT, 12}, false, false, true},
     {"DXGI_FORMAT_R32G32B32A32_FLOAT", {DXGI_FORMAT_R32G32B32A32_FLOAT, 16}, true, true, true},
-    {"DXGI_FORMAT_R32_TYPELESS", {DXGI_FORMAT_R32_TYPELESS, 4}, true, false, false},
+    {"DXGI_FORMAT_R32_TYPELESS",
+     {DXGI_FORMAT_R32_TYPELESS, 4, DXGI_FORMAT_D32_FLOAT},
+     true,
+     false,
+     false},
+    {"DXGI_FORMAT_R24G8_TYPELESS",
+     {DXGI_FORMAT_R24G8_TYPELESS, 4, DXGI_FORMAT_D24_UNORM_S8_UINT, 24},
+     true,
+     false,
+     false},
+    {"DXGI_FORMAT_R16_TYPELESS",
+     {DXGI_FORMAT_R16_TYPELESS, 2, DXGI_FORMAT_D16_UNORM, 16},
+     true,
+     false,
+     false},
+    {"DXGI_FORMAT_R24_UNORM_X8_TYPELESS",
+     {DXGI_FORMAT_R24_UNORM_X8_TYPELESS, 4},
+     false,
+     true,
+     false},
+    {"DXGI_FORMAT_R16_UNORM", {DXGI_FORMAT_R16_UNORM, 2}, false, true, false},
 };
 
 bool accepts(const FormatName& entry, FormatUse use) {
@@ -82,9 +105,10 @@ std::string check_texture(const TextureDesc& desc, DxgiFormat& format) {
   if (std::string error = parse_format(desc.format, FormatUse::texture, format); !error.empty()) {
     return error;
   }
-  const bool typeless = format.format == DXGI_FORMAT_R32_TYPELESS;
+  const bool typeless = format.depth_view != DXGI_FORMAT_UNKNOWN;
   if ((desc.usage == Usage::depth) != typeless) {
-    return "a depth texture is DXGI_FORMAT_R32_TYPELESS, and only a depth texture is; not " +
+    return "a depth texture is DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_R24G8_TYPELESS or "
+           "DXGI_FORMAT_R16_TYPELESS, and only a depth texture is; not " +
            desc.format;
   }
   // The depth-stencil view writes level 0 only.
@@ -199,6 +223,22 @@ std::vector<float> read_rows(const void* data, UINT pitch, UINT row_bytes, UINT 
   const auto* bytes = static_cast<const unsigned char*>(data);
   for (UINT row = 0; row < rows; ++row) {
     std::memcpy(texels.data() + row * (row_bytes / sizeof(float)), bytes + row * pitch, row_bytes);
+  }
+  return texels;
+}
+
+std::vector<float> read_unorm_rows(const void* data, UINT pitch, UINT width, UINT rows,
+                                   const DxgiFormat& format, unsigned shift) {
+  std::vector<float> texels(std::size_t{width} * rows);
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  const std::uint32_t mask = (std::uint32_t{1} << format.unorm_bits) - 1;
+  for (UINT row = 0; row < rows; ++row) {
+    for (UINT i = 0; i < width; ++i) {
+      std::uint32_t texel = 0;  // little-endian, as every Direct3D device
+      std::memcpy(&texel, bytes + row * pitch + i * format.bytes, format.bytes);
+      // The code over 2^bits - 1, in double: exact to float's rounding.
+      texels[std::size_t{row} * width + i] = float(double((texel >> shift) & mask) / double(mask));
+    }
   }
   return texels;
 }

@@ -16,10 +16,15 @@
 
 namespace penumbra::d3dhost {
 
-// Every format here has 32-bit float channels (or one typeless 32-bit channel).
+// 32-bit float channels, or a depth map's typeless texture or its unorm view.
 struct DxgiFormat {
   DXGI_FORMAT format = DXGI_FORMAT_UNKNOWN;
   unsigned bytes = 0;  // per texel or vertex element
+  // A typeless depth texture's depth-stencil view format; UNKNOWN for the rest.
+  DXGI_FORMAT depth_view = DXGI_FORMAT_UNKNOWN;
+  // A unorm depth texture's depth bits (24, 16), read back as code / (2^bits - 1);
+  // 0 for float texels.
+  unsigned unorm_bits = 0;
 };
 
 // What a format name is read for; each accepts its own names.
@@ -28,8 +33,8 @@ enum class FormatUse { texture, view, vertex };
 // `name` as a format for `use`; an error lists the names allowed.
 std::string parse_format(const std::string& name, FormatUse use, DxgiFormat& format);
 
-// Checks `desc` (sizes, and R32_TYPELESS exactly for Usage::depth, with one
-// level) and reads its format.
+// Checks `desc` (sizes, and a typeless depth format exactly for Usage::depth,
+// with one level) and reads its format.
 std::string check_texture(const TextureDesc& desc, DxgiFormat& format);
 
 // Why level `src_level` of `from` may not go to texel (0, 0) of level
@@ -73,6 +78,12 @@ std::string pack_blocks(const std::vector<BlockMember>& members, UINT slots,
 
 // `rows` mapped rows `pitch` bytes apart, `row_bytes` of texels each, as floats.
 std::vector<float> read_rows(const void* data, UINT pitch, UINT row_bytes, UINT rows);
+
+// The depth of `rows` rows of `width` texels of a unorm depth format (its
+// depth in `format.unorm_bits` bits of each texel, `shift` bits from bit 0),
+// as floats in [0, 1].
+std::vector<float> read_unorm_rows(const void* data, UINT pitch, UINT width, UINT rows,
+                                   const DxgiFormat& format, unsigned shift);
 // The other way: `texels`' rows of `row_bytes` into mapped rows `pitch` bytes apart.
 void write_rows(const std::vector<float>& texels, UINT row_bytes, void* data, UINT pitch);
 

@@ -82,6 +82,13 @@ ScreenInputs screen_inputs(Job& job, const FloatImage& receivers) {
   return {id, full_screen_triangle(job)};
 }
 
+// The map as a pass reads it: shadow_depth and shadow_cmp, through its own
+// view format where it has one.
+PassTextures map_textures(const D3dMap& map) {
+  return {{TextureId::shadow_depth, {map.id, map.view_format}},
+          {TextureId::shadow_cmp, {map.id, map.view_format}}};
+}
+
 // `pass` (the query or the deferred pass) drawn over a whole width x height
 // target with `textures`, screen_size set to that size; the job run and its
 // (visibility, texel reads) read back.
@@ -121,8 +128,8 @@ Result<int> draw_minmax_chain(Job& job, const D3dMinmaxPasses& passes, const D3d
     ParamBlock level_params = params;
     level_params["source_size"] = size_vec4(source.width, source.height);
     level_params["screen_size"] = size_vec4(size.width, size.height);
-    PassTextures textures{{TextureId::shadow_depth, map.id}, {TextureId::shadow_cmp, map.id}};
-    if (l > 0) textures[TextureId::minmax_source] = source_level;
+    PassTextures textures = map_textures(map);
+    if (l > 0) textures[TextureId::minmax_source] = {source_level, {}};
     const D3dPass& pass = l == 0 ? passes.init : passes.reduce;
     const std::string where =
         std::string(l == 0 ? "the minmax_init pass" : "the minmax_reduce pass") +
@@ -216,7 +223,8 @@ Status D3dEngine::run(d3d::Job& job) {
 
 Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
                                        const std::vector<std::array<float, 3>>& triangles,
-                                       int width, int height, const ParamBlock& params) {
+                                       int width, int height, const ParamBlock& params,
+                                       DepthFormat map_format) {
   Job job(*this);
   D3dMap map;
   map.width = width;
@@ -228,17 +236,30 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
   if (runtime_ == D3dRuntime::d3d9) {
     // The whitepaper's map: an R32F colour target, and a depth buffer that
     // only depth-tests (docs/engines/d3d9.md).
-    auto format = pass_target(runtime_, depth, "the depth pass");
-    if (!format) return format.error();
-    map.format = format->format;
+    auto colour = pass_target(runtime_, depth, "the depth pass");
+    if (!colour) return colour.error();
+    map.format = colour->format;
     map.id = job.texture(map.format, width, height, 1, "target");
     target.colour = map.id;
     target.clear_colour = std::array<float, 4>{far, far, far, far};
     target.depth = job.texture(depth.reflection.depth_target, width, height, 1, "depth");
   } else {
-    // One typeless texture: written through its D32_FLOAT depth view, read
-    // through R32_FLOAT views (docs/engines/d3d10.md).
-    map.format = api_format(api_target(runtime_), TextureFormat::d32_float);
+    // One typeless texture: written through its depth view, read through
+    // R32_FLOAT views (docs/engines/d3d10.md), or an engine's D24 or D16
+    // map's unorm views ("Using your own shadow map").
+    switch (map_format) {
+      case DepthFormat::d32_float:
+        map.format = api_format(api_target(runtime_), TextureFormat::d32_float);
+        break;
+      case DepthFormat::d24_unorm:
+        map.format = "DXGI_FORMAT_R24G8_TYPELESS";
+        map.view_format = "DXGI_FORMAT_R24_UNORM_X8_TYPELESS";
+        break;
+      case DepthFormat::d16_unorm:
+        map.format = "DXGI_FORMAT_R16_TYPELESS";
+        map.view_format = "DXGI_FORMAT_R16_UNORM";
+        break;
+    }
     map.id = job.texture(map.format, width, height, 1, "depth");
     target.depth = map.id;
   }
@@ -271,9 +292,8 @@ Result<FloatImage> D3dEngine::run_surface(const D3dPass& surface,
   const DrawGeometry geometry = triangle_list(job, triangles);
   const DrawTarget target{
       output, 0, depth, width, height, std::array<float, 4>{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, false};
-  PENUMBRA_TRY(d3d::draw_pass(job, surface, "the surface pass",
-                              {{TextureId::shadow_depth, map.id}, {TextureId::shadow_cmp, map.id}},
-                              params, target, geometry));
+  PENUMBRA_TRY(d3d::draw_pass(job, surface, "the surface pass", map_textures(map), params, target,
+                              geometry));
   const std::size_t read = job.read(output, 0, width, height, format->channels);
   PENUMBRA_TRY(job.run());
   return job.take(read);
@@ -304,14 +324,13 @@ Result<D3dQueryOutput> D3dEngine::run_query(const D3dQueryPasses& passes, const 
                                             const FloatImage& receivers, const ParamBlock& params) {
   Job job(*this);
   const ScreenInputs screen = screen_inputs(job, receivers);
-  PassTextures textures{{TextureId::shadow_depth, map.id},
-                        {TextureId::shadow_cmp, map.id},
-                        {TextureId::receivers, screen.receivers}};
+  PassTextures textures = map_textures(map);
+  textures[TextureId::receivers] = {screen.receivers, {}};
   if (passes.minmax) {
     std::vector<LevelSize> sizes;
     auto chain = draw_minmax_chain(job, *passes.minmax, map, params, sizes);
     if (!chain) return chain.error();
-    textures[TextureId::shadow_minmax] = *chain;
+    textures[TextureId::shadow_minmax] = {*chain, {}};
   }
   return draw_visibility(job, passes.query, "the query pass", textures, params, receivers.width,
                          receivers.height, screen.triangle);
@@ -325,9 +344,8 @@ Result<D3dQueryOutput> D3dEngine::run_deferred(const D3dPass& deferred, const D3
   const int camera = job.texture(api_format(api_target(runtime_), TextureFormat::r32_float),
                                  camera_depth.width, camera_depth.height, 1, "input");
   job.upload(camera, 0, camera_depth.data);
-  const PassTextures textures{{TextureId::shadow_depth, map.id},
-                              {TextureId::shadow_cmp, map.id},
-                              {TextureId::camera_depth, camera}};
+  PassTextures textures = map_textures(map);
+  textures[TextureId::camera_depth] = {camera, {}};
   return draw_visibility(job, deferred, "the deferred pass", textures, params, camera_depth.width,
                          camera_depth.height, full_screen_triangle(job));
 }
@@ -344,10 +362,9 @@ Result<D3dScreenBlurOutput> D3dEngine::run_screen_blur(const D3dScreenBlurPasses
   const int colour = job.texture(api_format(api_target(runtime_), TextureFormat::rgba32_float),
                                  width, height, 1, "input");
   job.upload(colour, 0, receivers_to_rgba(scene_colour));
-  PassTextures textures{{TextureId::shadow_depth, map.id},
-                        {TextureId::shadow_cmp, map.id},
-                        {TextureId::receivers, screen.receivers},
-                        {TextureId::scene_colour, colour}};
+  PassTextures textures = map_textures(map);
+  textures[TextureId::receivers] = {screen.receivers, {}};
+  textures[TextureId::scene_colour] = {colour, {}};
   ParamBlock screen_params = params;
   screen_params["screen_size"] = size_vec4(width, height);
   // Each pass after the query reads the one before as screen_factor.
@@ -366,7 +383,7 @@ Result<D3dScreenBlurOutput> D3dEngine::run_screen_blur(const D3dScreenBlurPasses
     const int output = job.texture(format->format, width, height, 1, "target");
     PENUMBRA_TRY(d3d::draw_pass(job, *step.pass, step.where, textures, screen_params,
                                 whole(output, width, height), screen.triangle));
-    textures[TextureId::screen_factor] = output;
+    textures[TextureId::screen_factor] = {output, {}};
     if (step.pass != &passes.blur_h) {
       reads.push_back(job.read(output, 0, width, height, format->channels));
     }

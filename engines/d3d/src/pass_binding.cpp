@@ -80,6 +80,7 @@ Status write_textures(Job& job, std::string& block, const StageBindings& frag,
   const bool d3d9 = job.runtime() == D3dRuntime::d3d9;
   for (const TextureBinding& texture : frag.textures) {
     int id = 0;
+    std::string view_format = texture.view_format;
     if (texture.contents) {
       id = job.constant_texture(texture.format, *texture.contents);
     } else {
@@ -89,10 +90,11 @@ Status write_textures(Job& job, std::string& block, const StageBindings& frag,
         return unbindable(
             where, "it reads texture '" + texture.name + "', which this run does not provide");
       }
-      id = given->second;
+      id = given->second.id;
+      if (!given->second.view_format.empty()) view_format = given->second.view_format;
     }
-    block += "texture " + texture.reg + " " + std::to_string(id) +
-             (d3d9 ? "" : " " + texture.view_format) + "\n";
+    block += "texture " + texture.reg + " " + std::to_string(id) + (d3d9 ? "" : " " + view_format) +
+             "\n";
     // Direct3D 9 keeps a texture's sampler state at its own s#.
     block += sampler_line(d3d9 ? texture.reg : texture.sampler.reg, texture.sampler.state);
   }

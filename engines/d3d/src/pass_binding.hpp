@@ -32,8 +32,15 @@ struct DrawGeometry {
   unsigned count = 0;  // vertices
 };
 
+// A host texture a run provides, and the view format it is read through
+// where that is not the reflection's (an engine's D24 or D16 map).
+struct BoundTexture {
+  int id = 0;
+  std::string view_format;
+};
+
 // The host textures a run provides, by what the shaders call them.
-using PassTextures = std::map<TextureId, int>;
+using PassTextures = std::map<TextureId, BoundTexture>;
 
 // Appends `pass`'s draw to `job`. Errors (bad_input, naming `where`): a
 // texture the run does not provide, a parameter missing from `params`, a

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "penumbra/d3d/wine_session.hpp"
+#include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "penumbra/support/image.hpp"
@@ -89,7 +90,11 @@ struct D3dMap {
   int id = 0;
   int width = 0;
   int height = 0;
-  std::string format;     // as created: the depth pass's map format
+  std::string format;  // as created: the depth pass's map format
+  // The shader-resource view format it is read through where that is not
+  // the reflection's: an engine's D24 or D16 map (R24_UNORM_X8_TYPELESS,
+  // R16_UNORM); empty for D32.
+  std::string view_format;
   FloatImage normalized;  // its texels, read back: z * depth_scale
 };
 
@@ -121,10 +126,13 @@ class D3dEngine {
 
   // Draws `triangles` (light-view x, y, z per vertex, three per triangle)
   // with the depth pass into a new width x height map, as
-  // docs/engines/<runtime>.md creates it, and reads it back.
+  // docs/engines/<runtime>.md creates it, and reads it back. On Direct3D
+  // 10/11 `map_format` is the map's depth texture (D24 and D16 as an engine's,
+  // through their unorm views); Direct3D 9's map is its R32F target.
   Result<D3dMap> render_depth(const D3dPass& depth,
                               const std::vector<std::array<float, 3>>& triangles, int width,
-                              int height, const ParamBlock& params);
+                              int height, const ParamBlock& params,
+                              DepthFormat map_format = DepthFormat::d32_float);
   void release(const D3dMap& map);
 
   // The min-max chain of `map` built by `passes` (each level drawn into a
