@@ -71,12 +71,8 @@ double filtered(const ShadowMapView& map, const LightParams& light, const Query&
                 const Disk& pcf_disk, std::optional<float> z_b) {
   if (!z_b) return 1.0;
   const double blocker = std::max(double(*z_b), light.near_plane);
-  // A directional light's penumbra spreads its slopes over z_r - z_b.
-  const double filter_radius_uv =
-      light.orthographic()
-          ? light.light_size_uv() * (q.z - blocker)
-          : (q.z - blocker) / blocker * light.light_size_uv() * light.near_plane / q.z;
-  return poisson_pcf(map, q, q.z - light.bias, pcf_disk.points, filter_radius_uv);
+  return poisson_pcf(map, q, q.z - light.bias, pcf_disk.points,
+                     pcss_filter_radius(light, q.z, blocker));
 }
 
 }  // namespace
@@ -86,10 +82,8 @@ Sample pcss_minmax(const ShadowMapView& map, const MinMaxMip& mip, const LightPa
   // Up to the near plane, lit, as pcss.
   if (!(q.z > light.near_plane)) return {1.0};
   // Step 1, blocker search over the window of uv half-width w around (u, v),
-  // pcss's region.
-  const float light_size_uv = float(light.light_size_uv());
-  const float depth = float(q.z) - float(light.near_plane);
-  const float w = light.orthographic() ? light_size_uv * depth : light_size_uv * depth / float(q.z);
+  // pcss's region, in float as the shader floors its edges.
+  const float w = pcss_search_width(light, float(q.z));
   const float u = float(q.u), v = float(q.v);
   const float width = float(map.width()), height = float(map.height());
   const double window = precision.point_window();

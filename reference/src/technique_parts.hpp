@@ -25,6 +25,25 @@ Sample point_compare(const ShadowMapView& map, double u, double v, double z_ref,
 // The mean of bilinear comparisons at texel offsets over a K x K grid.
 double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kernel);
 
+// PCSS's blocker search half-width in uv at receiver depth z (pcss and
+// pcss_minmax): the light's footprint on the near plane seen from the
+// receiver (similar triangles), L_uv (z - n) / z; a directional light's
+// widens with the distance to the near plane alone, L_uv (z - n). In `Real`,
+// the precision the caller's window is formed in (pcss_minmax: float, as
+// its shader floors the window's edges).
+template <typename Real>
+Real pcss_search_width(const LightParams& light, Real z) {
+  const Real depth = z - Real(light.near_plane);
+  const Real light_size_uv = Real(light.light_size_uv());
+  return light.orthographic() ? light_size_uv * depth : light_size_uv * depth / z;
+}
+
+// PCSS's filter radius in uv for a receiver at z_r and blockers at z_b (no
+// nearer than the near plane): the parallel-plane penumbra
+// (z_r - z_b) / z_b scaled to the near plane, or a directional light's
+// slopes spread over z_r - z_b.
+double pcss_filter_radius(const LightParams& light, double z_receiver, double z_blocker);
+
 // The NVIDIA PCSS whitepaper's three steps.
 Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, double z_ref,
             const Disk& blocker_disk, const Disk& pcf_disk, const SamplingPrecision& precision);

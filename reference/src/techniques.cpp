@@ -37,17 +37,20 @@ double pcf_grid(const ShadowMapView& map, const Query& q, double z_ref, int kern
   return sum / (double(kernel) * kernel);
 }
 
+double pcss_filter_radius(const LightParams& light, double z_receiver, double z_blocker) {
+  if (light.orthographic()) return light.light_size_uv() * (z_receiver - z_blocker);
+  const double penumbra = (z_receiver - z_blocker) / z_blocker;
+  return penumbra * light.light_size_uv() * light.near_plane / z_receiver;
+}
+
 Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, double z_ref,
             const Disk& blocker_disk, const Disk& pcf_disk, const SamplingPrecision& precision) {
   // Up to the near plane the search width is 0 or negative: a rendered map
   // holds nothing there to occlude the receiver.
   if (!(q.z > light.near_plane)) return {1.0};
   // Step 1, blocker search: point samples over the light's footprint on the
-  // near plane, seen from the receiver (similar triangles). A directional
-  // light's footprint widens with the distance to the near plane alone.
-  const double light_size_uv = light.light_size_uv();
-  const double search_width = light.orthographic() ? light_size_uv * (q.z - light.near_plane)
-                                                   : light_size_uv * (q.z - light.near_plane) / q.z;
+  // near plane, seen from the receiver.
+  const double search_width = pcss_search_width(light, q.z);
   // What one blocker sample contributes against reference `z`: its depth
   // when it occludes.
   auto blocker_against = [&](double z) {
@@ -79,12 +82,7 @@ Sample pcss(const ShadowMapView& map, const LightParams& light, const Query& q, 
   // nearer than the near plane as in pcss_minmax (a rendered map holds
   // nothing nearer; a blocker at z = 0 would make the penumbra infinite).
   const double avg_blocker_depth = std::max(blocker_sum / blockers, light.near_plane);
-  const double penumbra = (q.z - avg_blocker_depth) / avg_blocker_depth;
-  // A directional light's penumbra is the slope's spread over the distance
-  // from blocker to receiver.
-  const double filter_radius_uv = light.orthographic()
-                                      ? light_size_uv * (q.z - avg_blocker_depth)
-                                      : penumbra * light_size_uv * light.near_plane / q.z;
+  const double filter_radius_uv = pcss_filter_radius(light, q.z, avg_blocker_depth);
 
   // Step 3, filtering.
   return {poisson_pcf(map, q, z_ref, pcf_disk.points, filter_radius_uv), ambiguous};

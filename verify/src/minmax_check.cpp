@@ -28,7 +28,7 @@ MinmaxCheck check_minmax(const SceneFixture& fixture, Target target,
   const bool decoded = fixture.encoded.has_value();
   const reference::MinMaxMip expected{
       reference::ShadowMapView(decoded ? fixture.linear_depth : fixture.normalized_depth)};
-  const double scale = fixture.params.at("sampling")[2];  // depth_scale
+  const double scale = depth_scale_for(fixture.scene.far_z);
   const auto agrees = [&](float gpu, float node) {
     if (!decoded) return same_bits(gpu, node);
     const double want = double(node) * scale;
