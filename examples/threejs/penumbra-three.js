@@ -32,12 +32,17 @@ function functionForm(index, name) {
   const form = variant.function && variant.function[TARGET];
   if (!form) {
     throw new Error(`index.json: /variants/${name}/function has no ${TARGET} form ` +
-                    '(hard, pcf_grid, pcf_poisson and pcss variants built for essl300 have one)');
+                    '(every technique but screen_blur and the back-projections, built for ' +
+                    'essl300, has one)');
   }
   const reflection = index.reflections[form.reflection];
   if (reflection.extensions && reflection.extensions.length) {
     throw new Error(`${form.file}: needs GLSL extensions (${reflection.extensions.join(', ')}), ` +
                     'which three.js materials cannot enable');
+  }
+  if (reflection.frag.textures.some((t) => t.name === 'penumbra_shadow_minmax')) {
+    throw new Error(`${form.file}: reads the min-max mip of the map, which this module does ` +
+                    'not build; it binds three\'s shadow map alone (hard, pcf_grid, pcf_poisson, pcss)');
   }
   const encoding = variant.keys.map_encoding || 'linear';
   return {variant, file: form.file, reflection, encoding};

@@ -70,8 +70,8 @@ constexpr TextureId kQueryReads[] = {TextureId::receivers,  TextureId::shadow_de
 constexpr TextureId kBlurReads[] = {TextureId::screen_factor, TextureId::receivers};
 constexpr TextureId kCompositeReads[] = {TextureId::screen_factor, TextureId::scene_colour};
 constexpr TextureId kDeferredReads[] = {TextureId::camera_depth, TextureId::shadow_depth,
-                                        TextureId::shadow_cmp, TextureId::pcf_disk,
-                                        TextureId::blocker_disk};
+                                        TextureId::shadow_cmp,   TextureId::shadow_minmax,
+                                        TextureId::pcf_disk,     TextureId::blocker_disk};
 
 constexpr VertexInput kLightSpacePosition{"position", 3, "light-view space position"};
 constexpr VertexInput kClipPosition{
@@ -154,11 +154,15 @@ constexpr PassDescription kPasses[] = {
      kDeferredReads},
 };
 
-// The query's techniques that read the map alone; the deferred pass is the
-// query's alternative for an engine's own camera, run instead of it.
+// The query's techniques that read the map alone, and those that read the
+// min-max mip its build passes make of it; the deferred pass is the query's
+// alternative for an engine's own camera, run instead of it. The two
+// back-projections have none yet (has_function_form()).
 constexpr PassKind kSinglePass[] = {PassKind::depth, PassKind::query, PassKind::deferred};
 constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
-                                      PassKind::minmax_reduce, PassKind::query};
+                                      PassKind::minmax_reduce, PassKind::query, PassKind::deferred};
+constexpr PassKind kMinmaxQueryPasses[] = {PassKind::depth, PassKind::minmax_init,
+                                           PassKind::minmax_reduce, PassKind::query};
 constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
                                           PassKind::blur_v, PassKind::composite};
 
@@ -190,12 +194,12 @@ constexpr TechniqueDescription kTechniques[] = {
     {Technique::pcss, "pcss", kPcssKeys, kRotationPlaneEncoding, kSinglePass, false},
     {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversalEncoding, kMinmaxPasses, true},
     {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
-     kMinmaxPasses, true},
+     kMinmaxQueryPasses, true},
     {Technique::pcss_minmax, "pcss_minmax", kMinmaxPoissonKeys, kRotationEncoding, kMinmaxPasses,
      true},
     {Technique::screen_blur, "screen_blur", kScreenBlurKeys, kDepthAware, kScreenBlurPasses, false},
     {Technique::bitmask_backprojection, "bitmask_backprojection", kBitmaskKeys, kBackprojectionKeys,
-     kMinmaxPasses, true, true},
+     kMinmaxQueryPasses, true, true},
 };
 
 // The tables are indexed by their enums: each row's enum must be its index.
@@ -301,7 +305,7 @@ bool runs_pass(PassKind pass, const Variant& variant) {
 
 bool has_function_form(Technique technique) {
   const std::span<const PassKind> passes = describe(technique).passes;
-  return std::ranges::equal(passes, kSinglePass);
+  return std::ranges::find(passes, PassKind::deferred) != passes.end();
 }
 
 }  // namespace penumbra

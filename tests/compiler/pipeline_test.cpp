@@ -688,15 +688,16 @@ TEST(LoadLibrary, DiskPointsAndBlurWeightsOutOfRangeAreErrorsNamingTheJsonPath) 
 // Schema 2 repeated every variant's pass files, reflection records and
 // disks, each nested member on a line of its own: 2,620,995 bytes for the
 // default library's 33 variants (with bytecode), against about 0.21 MB for
-// them in schema 3, 0.55 MB for 60 variants with their deferred passes, and
-// 0.61 MB for today's 76.
+// them in schema 3, 0.55 MB for 60 variants with their deferred passes,
+// 0.61 MB for 76, and 0.71 MB for the same 76 once minmax_pcf and
+// pcss_minmax have deferred passes and function forms.
 TEST(BuildLibrary, DefaultLibraryIndexStaysSmall) {
   TempDir dir("default");
   auto variants =
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
   ASSERT_TRUE(build_library(*variants, dir.path / "out", {.jobs = 2}, ignore_diagnostics()).ok());
-  EXPECT_LT(std::filesystem::file_size(dir.path / "out" / "index.json"), 680'000u);
+  EXPECT_LT(std::filesystem::file_size(dir.path / "out" / "index.json"), 760'000u);
   ASSERT_TRUE(load_library(dir.path / "out").ok());
 }
 

@@ -14,13 +14,16 @@ namespace {
 
 // One variant per technique and encoding, and the keys that change what
 // the function takes or derives: rotation (the pixel) and receiver_plane
-// (screen derivatives).
+// (screen derivatives). The min-max techniques read the mip the target's
+// build passes made of the map.
 const std::vector<std::string> kVariants = {"hard",
                                             "pcf_grid_k3",
                                             "pcf_grid_k3_perspective",
                                             "pcf_poisson_p16_poisson_receiver_plane",
                                             "pcss_b16_p16_poisson_perspective_reversed",
-                                            "pcss_b16_p16_poisson_ign"};
+                                            "pcss_b16_p16_poisson_ign",
+                                            "minmax_pcf_k8_orthographic",
+                                            "pcss_minmax_p32_poisson_ign"};
 
 class FunctionFormExecution : public ::testing::TestWithParam<std::string> {};
 

@@ -112,12 +112,14 @@ FloatImage camera_depth(const reference::StageView& view, const Matrix4& camera,
 
 // (u, v, z_r) per pixel as the deferred pass rebuilds it from `depth`
 // (shaderlib/passes/deferred.frag), in `Real`: double for the receivers
-// themselves, float for a float32 shader's rounding of them.
+// themselves, float for a float32 shader's rounding of them; `nudge` moves
+// each pixel's screen_uv, as its interpolation may.
 template <typename Real>
 FloatImage rebuilt_receivers(const FloatImage& depth, const Matrix4& camera_inverse,
                              const Matrix4& light, const LightClipDepth& light_depth,
                              const DepthConvention& convention, double v_sign,
-                             Rounding rounding = Rounding::separate) {
+                             Rounding rounding = Rounding::separate,
+                             std::array<double, 2> nudge = {0.0, 0.0}) {
   FloatImage out(depth.width, depth.height, 3);
   const Real half(0.5), one(1.0), two(2.0), sign = static_cast<Real>(v_sign);
   for (int j = 0; j < depth.height; ++j) {
@@ -128,8 +130,8 @@ FloatImage rebuilt_receivers(const FloatImage& depth, const Matrix4& camera_inve
         out.at(i, j, 2) = 0.0f;
         continue;
       }
-      const Real s = (Real(i) + half) / Real(depth.width);
-      const Real t = (Real(j) + half) / Real(depth.height);
+      const Real s = (Real(i) + half) / Real(depth.width) + Real(nudge[0]);
+      const Real t = (Real(j) + half) / Real(depth.height) + Real(nudge[1]);
       const std::array<Real, 4> clip{two * s - one, (t - half) / sign,
                                      d * Real(convention.a) + Real(convention.b), one};
       std::array<Real, 4> world = times_in(camera_inverse, clip, rounding);
@@ -146,32 +148,42 @@ FloatImage rebuilt_receivers(const FloatImage& depth, const Matrix4& camera_inve
 
 // A GPU rounds in its own order, and each pixel on its own: its receivers
 // may lie further from `exact` than `rounded`'s do, up to kRoundingReach
-// times the largest of their errors (on lavapipe and llvmpipe, up to twice).
-// receiver_plane's slope is a difference of neighbours, so its bounds are
-// `exact` moved that far with each mix of signs over a 2x2 quad, which
-// tilts the screen derivatives every way; a technique without it reads no
-// neighbour, and `rounded` bounds it.
+// times the largest of their errors and of `nudged`'s, the receivers of a
+// screen_uv interpolated a few ulps off the pixel's centre (on lavapipe,
+// up to twice), or of one float32 ulp where all of them round to `exact`.
+// The bounds are `exact` moved that far. A technique without receiver_plane
+// reads each pixel's receiver alone, which lies in the box whose eight
+// corners (each channel moved up or down) bound it. receiver_plane's slope
+// is a difference of neighbours, so its bounds take each mix of signs over
+// a 2x2 quad, which tilts the screen derivatives every way.
 std::vector<FloatImage> rounding_bounds(const Variant& variant, const FloatImage& exact,
-                                        std::span<const FloatImage> rounded) {
-  if (!variant.keys.receiver_plane.value_or(false)) return {};
+                                        std::span<const FloatImage> rounded,
+                                        std::span<const FloatImage> nudged) {
   constexpr float kRoundingReach = 4.0f;
   FloatImage reach(exact.width, exact.height, exact.channels);
   for (std::size_t k = 0; k < exact.data.size(); ++k) {
-    for (const FloatImage& r : rounded) {
-      reach.data[k] = std::max(reach.data[k], std::abs(r.data[k] - exact.data[k]));
+    reach.data[k] = std::abs(exact.data[k]) * 0x1p-23f;
+    for (std::span<const FloatImage> images : {rounded, nudged}) {
+      for (const FloatImage& r : images) {
+        reach.data[k] = std::max(reach.data[k], std::abs(r.data[k] - exact.data[k]));
+      }
     }
     reach.data[k] *= kRoundingReach;
   }
-  // Bit q of `signs`: the sign of quad position q = (i % 2) + 2 (j % 2);
-  // all alike moves no derivative.
+  // receiver_plane: bit q of `signs` is the sign of quad position
+  // q = (i % 2) + 2 (j % 2), and all alike (0 and 15) move no derivative;
+  // otherwise bit c is the sign of channel c.
+  const bool plane = variant.keys.receiver_plane.value_or(false);
+  const int first = plane ? 1 : 0;
+  const int last = plane ? 14 : (1 << exact.channels) - 1;
   std::vector<FloatImage> out;
-  for (int signs = 1; signs < 15; ++signs) {
+  for (int signs = first; signs <= last; ++signs) {
     FloatImage& bound = out.emplace_back(exact);
     for (int j = 0; j < exact.height; ++j) {
       for (int i = 0; i < exact.width; ++i) {
-        const bool up = (signs >> ((i % 2) + 2 * (j % 2))) & 1;
         for (int c = 0; c < exact.channels; ++c) {
-          bound.at(i, j, c) += up ? reach.at(i, j, c) : -reach.at(i, j, c);
+          const int bit = plane ? (i % 2) + 2 * (j % 2) : c;
+          bound.at(i, j, c) += (signs >> bit) & 1 ? reach.at(i, j, c) : -reach.at(i, j, c);
         }
       }
     }
@@ -223,7 +235,15 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
     rounded.push_back(rebuilt_receivers<float>(draw.camera_depth, camera_inverse, light,
                                                light_depth, convention, v_sign, rounding));
   }
-  for (FloatImage& bound : rounding_bounds(entry.variant, receivers, rounded)) {
+  // screen_uv within 2 ulps of the pixel's centre, along each axis.
+  constexpr double kNudge = 0x1p-22;
+  std::vector<FloatImage> nudged;
+  for (const std::array<double, 2> nudge : {std::array{kNudge, 0.0}, std::array{0.0, kNudge}}) {
+    nudged.push_back(rebuilt_receivers<double>(draw.camera_depth, camera_inverse, light,
+                                               light_depth, convention, v_sign, Rounding::separate,
+                                               nudge));
+  }
+  for (FloatImage& bound : rounding_bounds(entry.variant, receivers, rounded, nudged)) {
     rounded.push_back(std::move(bound));
   }
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,

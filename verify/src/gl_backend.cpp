@@ -85,6 +85,17 @@ Result<GlPassTexts> read_pass(const Library& library, const LibraryVariant& entr
   return GlPassTexts{std::move(*vert), std::move(*frag), by_pass->second.at(target)};
 }
 
+// The min-max build passes of `entry` for `target` when its technique
+// reads the mip; none otherwise. Errors as read_pass's.
+Result<std::optional<GlMinmaxTexts>> read_gl_minmax(const Library& library,
+                                                    const LibraryVariant& entry, Target target) {
+  if (!uses_minmax_mip(entry.variant.technique)) return std::optional<GlMinmaxTexts>{};
+  PENUMBRA_TRY_ASSIGN(GlPassTexts init, read_pass(library, entry, PassKind::minmax_init, target));
+  PENUMBRA_TRY_ASSIGN(GlPassTexts reduce,
+                      read_pass(library, entry, PassKind::minmax_reduce, target));
+  return std::optional<GlMinmaxTexts>(GlMinmaxTexts{std::move(init), std::move(reduce)});
+}
+
 // `entry`'s query pass for `target` and, for a technique that reads the
 // min-max mip, the passes that build it. Errors: a file that cannot be read,
 // a pass without a reflection for `target`.
@@ -92,15 +103,8 @@ Result<GlQueryTexts> read_gl_query(const Library& library, const LibraryVariant&
                                    Target target) {
   auto query = read_pass(library, entry, PassKind::query, target);
   if (!query) return query.error();
-  GlQueryTexts texts{std::move(*query), std::nullopt};
-  if (uses_minmax_mip(entry.variant.technique)) {
-    auto init = read_pass(library, entry, PassKind::minmax_init, target);
-    if (!init) return init.error();
-    auto reduce = read_pass(library, entry, PassKind::minmax_reduce, target);
-    if (!reduce) return reduce.error();
-    texts.minmax = GlMinmaxTexts{std::move(*init), std::move(*reduce)};
-  }
-  return texts;
+  PENUMBRA_TRY_ASSIGN(std::optional<GlMinmaxTexts> minmax, read_gl_minmax(library, entry, target));
+  return GlQueryTexts{std::move(*query), std::move(minmax)};
 }
 
 Result<GlScreenBlurTexts> read_gl_screen_blur(const Library& library, const LibraryVariant& entry,
@@ -121,6 +125,11 @@ Result<GlScreenBlurTexts> read_gl_screen_blur(const Library& library, const Libr
 // caller's outlive the call.
 GlPass pass(const GlPassTexts& texts) {
   return {texts.vert, texts.frag, texts.reflection};
+}
+
+std::optional<GlMinmaxPasses> passes(const std::optional<GlMinmaxTexts>& texts) {
+  if (!texts) return std::nullopt;
+  return GlMinmaxPasses{pass(texts->init), pass(texts->reduce)};
 }
 
 class GlBackend final : public Backend {
@@ -157,10 +166,12 @@ class GlBackend final : public Backend {
         engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex);
     const std::string fragment =
         engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth);
+    PENUMBRA_TRY_ASSIGN(const std::optional<GlMinmaxTexts> minmax,
+                        read_gl_minmax(*draw.library, *draw.entry, draw.target));
     PENUMBRA_TRY_ASSIGN(FloatImage clip,
                         engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
                                              fixture.normalized_depth, draw.width, draw.height,
-                                             fixture.params, fixture.map_format()));
+                                             fixture.params, fixture.map_format(), passes(minmax)));
     return SurfacePicture{std::move(clip), nullptr};
   }
 
@@ -169,9 +180,11 @@ class GlBackend final : public Backend {
     out = execution();
     PENUMBRA_TRY_ASSIGN(const GlPassTexts texts,
                         read_pass(*draw.library, *draw.entry, PassKind::deferred, draw.target));
+    PENUMBRA_TRY_ASSIGN(const std::optional<GlMinmaxTexts> minmax,
+                        read_gl_minmax(*draw.library, *draw.entry, draw.target));
     PENUMBRA_TRY_ASSIGN(
         auto output, engine_->run_deferred(pass(texts), fixture.normalized_depth, draw.camera_depth,
-                                           draw.params, fixture.map_format()));
+                                           draw.params, fixture.map_format(), passes(minmax)));
     return scene_output(std::move(output.visibility), std::move(output.texel_reads));
   }
 
@@ -180,10 +193,9 @@ class GlBackend final : public Backend {
 
   // Builds the min-max mip when the query reads it, then runs the query.
   Result<SceneOutput> run_query(const GlQueryTexts& texts, const SceneFixture& fixture) {
-    std::optional<GlMinmaxPasses> minmax;
-    if (texts.minmax) minmax.emplace(pass(texts.minmax->init), pass(texts.minmax->reduce));
-    auto output = engine_->run_query({pass(texts.query), minmax}, fixture.normalized_depth,
-                                     fixture.receivers, fixture.params, fixture.map_format());
+    auto output =
+        engine_->run_query({pass(texts.query), passes(texts.minmax)}, fixture.normalized_depth,
+                           fixture.receivers, fixture.params, fixture.map_format());
     if (!output) return output.error();
     return scene_output(std::move(output->visibility), std::move(output->texel_reads));
   }

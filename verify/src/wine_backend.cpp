@@ -59,6 +59,17 @@ Result<D3dPass> bytecode_pass(const Library& library, const LibraryVariant& entr
                  library.root / stage_files.frag_bytecode->path, reflection->second.at(target)};
 }
 
+// `entry`'s min-max build passes for `target` when its technique reads the
+// mip; none otherwise. Errors as bytecode_pass's.
+Result<std::optional<D3dMinmaxPasses>> minmax_passes(const Library& library,
+                                                     const LibraryVariant& entry, Target target) {
+  if (!uses_minmax_mip(entry.variant.technique)) return std::optional<D3dMinmaxPasses>{};
+  PENUMBRA_TRY_ASSIGN(D3dPass init, bytecode_pass(library, entry, PassKind::minmax_init, target));
+  PENUMBRA_TRY_ASSIGN(D3dPass reduce,
+                      bytecode_pass(library, entry, PassKind::minmax_reduce, target));
+  return std::optional<D3dMinmaxPasses>(D3dMinmaxPasses{init, reduce});
+}
+
 // The passes a run needs, with the records they point into.
 struct RuntimePasses {
   D3dPass depth;
@@ -79,12 +90,8 @@ Result<RuntimePasses> runtime_passes(const Library& library, const LibraryVarian
     passes.screen_blur.emplace(D3dScreenBlurPasses{query, blur_h, blur_v, composite});
     return passes;
   }
-  passes.query.emplace(D3dQueryPasses{query, std::nullopt});
-  if (uses_minmax_mip(entry.variant.technique)) {
-    PENUMBRA_TRY_ASSIGN(D3dPass init, pass(PassKind::minmax_init));
-    PENUMBRA_TRY_ASSIGN(D3dPass reduce, pass(PassKind::minmax_reduce));
-    passes.query->minmax.emplace(D3dMinmaxPasses{init, reduce});
-  }
+  PENUMBRA_TRY_ASSIGN(auto minmax, minmax_passes(library, entry, target));
+  passes.query.emplace(D3dQueryPasses{query, std::move(minmax)});
   return passes;
 }
 
@@ -168,10 +175,11 @@ class WineBackend final : public Backend {
         engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth),
         draw.where + " (engine fragment stage)", ps.path()));
     execution = {"vkd3d-compiler's bytecode loaded by the " + name() + " runtime (Wine)", {}};
+    PENUMBRA_TRY_ASSIGN(const auto minmax, minmax_passes(*draw.library, *draw.entry, draw.target));
     PENUMBRA_TRY_ASSIGN(
         FloatImage clip,
         engine_->run_surface({vs.path(), ps.path(), draw.reflection}, draw.triangles, drawn->map,
-                             draw.width, draw.height, fixture.params));
+                             draw.width, draw.height, fixture.params, minmax));
     return SurfacePicture{std::move(clip), drawn->stored};
   }
 
@@ -183,10 +191,11 @@ class WineBackend final : public Backend {
     };
     PENUMBRA_TRY_ASSIGN(const D3dPass depth, pass(PassKind::depth));
     PENUMBRA_TRY_ASSIGN(const D3dPass deferred, pass(PassKind::deferred));
+    PENUMBRA_TRY_ASSIGN(const auto minmax, minmax_passes(*draw.library, *draw.entry, draw.target));
     PENUMBRA_TRY_ASSIGN(RuntimeMap * drawn, map_of(depth, fixture));
     execution = {"the " + name() + " runtime (Wine) loading the bytecode", {}};
-    PENUMBRA_TRY_ASSIGN(
-        auto output, engine_->run_deferred(deferred, drawn->map, draw.camera_depth, draw.params));
+    PENUMBRA_TRY_ASSIGN(auto output, engine_->run_deferred(deferred, drawn->map, draw.camera_depth,
+                                                           draw.params, minmax));
     SceneOutput out = scene_output(std::move(output.visibility), std::move(output.texel_reads));
     out.own_stored_depth = drawn->stored;
     out.own_linear_depth = drawn->linear;

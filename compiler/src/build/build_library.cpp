@@ -211,8 +211,8 @@ Result<CompiledFunction> compile_function(const Variant& variant, Target target,
     return make_error(Error::Kind::bad_input, "variant " + variant.name,
                       "has no function form (technique " +
                           std::string(to_string(variant.technique)) +
-                          " reads more than the shadow map); allowed: hard, pcf_grid, "
-                          "pcf_poisson, pcss");
+                          " has none: docs/function-form.md); allowed: every technique but "
+                          "screen_blur, backprojection and bitmask_backprojection");
   }
   if (!traits(target).is_text) {
     return make_error(Error::Kind::bad_input, "target " + std::string(to_string(target)),

@@ -21,6 +21,20 @@ bool entry_point_line(const std::string& line, bool hlsl) {
   return hlsl ? line == "void frag_main()" : line == "void main()";
 }
 
+// SPIRV-Cross guards its loop attributes by whether the compiler knows
+// GL_EXT_control_flow_attributes, not whether the shader enabled it, and an
+// included file cannot enable it (an #extension precedes all code). The
+// GLSL function form drops the guard and its SPIRV_CROSS_* markers, which
+// would also be unprefixed names: every driver without the extension
+// compiles the passes so too.
+constexpr std::string_view kAttributesGuard = "#if defined(GL_EXT_control_flow_attributes)";
+
+// `line` without SPIRV-Cross's control-flow markers.
+std::string without_markers(const std::string& line) {
+  static const std::regex kMarker(R"(\bSPIRV_CROSS_(FLATTEN|BRANCH|UNROLL|LOOP)\b ?)");
+  return std::regex_replace(line, kMarker, "");
+}
+
 }  // namespace
 
 Status ExtractFunctionStage::process(ShaderJob& job) const {
@@ -31,7 +45,18 @@ Status ExtractFunctionStage::process(ShaderJob& job) const {
   std::string line, out;
   std::vector<std::string> extensions;
   bool in_stage_struct = false, found_entry = false;
+  bool in_guard = false;
   while (std::getline(lines, line)) {
+    if (!hlsl && line == kAttributesGuard) in_guard = true;
+    if (in_guard) {
+      in_guard = line != "#endif";
+      continue;
+    }
+    if (!hlsl) {
+      const std::string bare = without_markers(line);
+      if (bare != line && bare.find_first_not_of(' ') == std::string::npos) continue;
+      line = bare;
+    }
     std::smatch match;
     if (std::regex_match(line, match, kExtension)) {
       extensions.push_back(match[1]);

@@ -143,6 +143,19 @@ Result<int> draw_minmax_chain(Job& job, const D3dMinmaxPasses& passes, const D3d
   return chain;
 }
 
+// `map`'s textures, with its min-max chain drawn by `minmax` when given.
+Result<PassTextures> map_and_minmax(Job& job, const D3dMap& map,
+                                    const std::optional<D3dMinmaxPasses>& minmax,
+                                    const ParamBlock& params) {
+  PassTextures textures = map_textures(map);
+  if (minmax) {
+    std::vector<LevelSize> sizes;
+    PENUMBRA_TRY_ASSIGN(const int chain, draw_minmax_chain(job, *minmax, map, params, sizes));
+    textures[TextureId::shadow_minmax] = {chain, {}};
+  }
+  return textures;
+}
+
 }  // namespace
 
 std::string_view to_string(D3dRuntime runtime) {
@@ -278,8 +291,10 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
 Result<FloatImage> D3dEngine::run_surface(const D3dPass& surface,
                                           const std::vector<std::array<float, 3>>& triangles,
                                           const D3dMap& map, int width, int height,
-                                          const ParamBlock& params) {
+                                          const ParamBlock& params,
+                                          const std::optional<D3dMinmaxPasses>& minmax) {
   Job job(*this);
+  PENUMBRA_TRY_ASSIGN(const PassTextures textures, map_and_minmax(job, map, minmax, params));
   auto format = pass_target(runtime_, surface, "the surface pass");
   if (!format) return format.error();
   const int output = job.texture(format->format, width, height, 1, "target");
@@ -292,8 +307,8 @@ Result<FloatImage> D3dEngine::run_surface(const D3dPass& surface,
   const DrawGeometry geometry = triangle_list(job, triangles);
   const DrawTarget target{
       output, 0, depth, width, height, std::array<float, 4>{1.0f, 1.0f, 1.0f, 1.0f}, 1.0f, false};
-  PENUMBRA_TRY(d3d::draw_pass(job, surface, "the surface pass", map_textures(map), params, target,
-                              geometry));
+  PENUMBRA_TRY(
+      d3d::draw_pass(job, surface, "the surface pass", textures, params, target, geometry));
   const std::size_t read = job.read(output, 0, width, height, format->channels);
   PENUMBRA_TRY(job.run());
   return job.take(read);
@@ -324,27 +339,22 @@ Result<D3dQueryOutput> D3dEngine::run_query(const D3dQueryPasses& passes, const 
                                             const FloatImage& receivers, const ParamBlock& params) {
   Job job(*this);
   const ScreenInputs screen = screen_inputs(job, receivers);
-  PassTextures textures = map_textures(map);
+  PENUMBRA_TRY_ASSIGN(PassTextures textures, map_and_minmax(job, map, passes.minmax, params));
   textures[TextureId::receivers] = {screen.receivers, {}};
-  if (passes.minmax) {
-    std::vector<LevelSize> sizes;
-    auto chain = draw_minmax_chain(job, *passes.minmax, map, params, sizes);
-    if (!chain) return chain.error();
-    textures[TextureId::shadow_minmax] = {*chain, {}};
-  }
   return draw_visibility(job, passes.query, "the query pass", textures, params, receivers.width,
                          receivers.height, screen.triangle);
 }
 
 Result<D3dQueryOutput> D3dEngine::run_deferred(const D3dPass& deferred, const D3dMap& map,
                                                const FloatImage& camera_depth,
-                                               const ParamBlock& params) {
+                                               const ParamBlock& params,
+                                               const std::optional<D3dMinmaxPasses>& minmax) {
   PENUMBRA_TRY(check_normalized_depth(camera_depth));
   Job job(*this);
+  PENUMBRA_TRY_ASSIGN(PassTextures textures, map_and_minmax(job, map, minmax, params));
   const int camera = job.texture(api_format(api_target(runtime_), TextureFormat::r32_float),
                                  camera_depth.width, camera_depth.height, 1, "input");
   job.upload(camera, 0, camera_depth.data);
-  PassTextures textures = map_textures(map);
   textures[TextureId::camera_depth] = {camera, {}};
   return draw_visibility(job, deferred, "the deferred pass", textures, params, camera_depth.width,
                          camera_depth.height, full_screen_triangle(job));

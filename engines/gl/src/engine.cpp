@@ -62,20 +62,23 @@ Result<GlQueryOutput> GlEngine::run_query(const GlQueryPasses& passes,
 Result<GlQueryOutput> GlEngine::run_deferred(const GlPass& deferred,
                                              const FloatImage& normalized_depth,
                                              const FloatImage& camera_depth,
-                                             const ParamBlock& params, DepthFormat map_format) {
+                                             const ParamBlock& params, DepthFormat map_format,
+                                             const std::optional<GlMinmaxPasses>& minmax) {
   auto current = context_->egl.make_current();
   if (!current) return current.error();
-  return gl::run_deferred_pass(deferred, normalized_depth, camera_depth, params, map_format);
+  return gl::run_deferred_pass(deferred, normalized_depth, camera_depth, params, map_format,
+                               minmax);
 }
 
 Result<FloatImage> GlEngine::run_surface(const GlPass& surface,
                                          std::span<const std::array<float, 3>> triangles,
                                          const FloatImage& normalized_depth, int width, int height,
-                                         const ParamBlock& params, DepthFormat map_format) {
+                                         const ParamBlock& params, DepthFormat map_format,
+                                         const std::optional<GlMinmaxPasses>& minmax) {
   auto current = context_->egl.make_current();
   if (!current) return current.error();
   return gl::run_surface_pass(surface, triangles, normalized_depth, width, height, params,
-                              map_format);
+                              map_format, minmax);
 }
 
 Result<std::vector<FloatImage>> GlEngine::build_minmax(const GlMinmaxPasses& passes,

@@ -73,4 +73,21 @@ Result<std::vector<FloatImage>> read_minmax_mip(const MinmaxMip& mip) {
   return levels;
 }
 
+Result<std::optional<MinmaxMip>> give_minmax_mip(const PassProgram& pass,
+                                                 const std::optional<GlMinmaxPasses>& minmax,
+                                                 PassInputs& inputs, LevelSize map_size,
+                                                 const ParamBlock& params) {
+  // Only what the driver reports active decides, so passes given to a
+  // program that does not read the mip are neither required nor compiled.
+  if (!pass.reads(TextureId::shadow_minmax)) return std::optional<MinmaxMip>{};
+  if (!minmax) {
+    return make_error(Error::Kind::bad_input, pass.where,
+                      "it reads shadow_minmax, the shadow map's min-max mip, but no "
+                      "minmax_init and minmax_reduce passes were given to build it");
+  }
+  PENUMBRA_TRY_ASSIGN(MinmaxMip mip, build_minmax_mip(*minmax, inputs, map_size, params));
+  inputs.set(TextureId::shadow_minmax, mip.chain.get(), *mip.format, "the min-max mip");
+  return std::optional<MinmaxMip>(std::move(mip));
+}
+
 }  // namespace penumbra::gl

@@ -2,10 +2,12 @@
 // current context by a variant's minmax_init and minmax_reduce passes.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "gl_names.hpp"
 #include "pass_inputs.hpp"
+#include "pass_program.hpp"
 #include "penumbra/gl/engine.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/minmax_levels.hpp"
@@ -34,6 +36,16 @@ struct MinmaxMip {
 // passes' render targets differ in format.
 Result<MinmaxMip> build_minmax_mip(const GlMinmaxPasses& passes, PassInputs& inputs,
                                    LevelSize map_size, const ParamBlock& params);
+
+// When the prepared `pass` reads shadow_minmax: builds the mip with
+// `minmax` from what `inputs` gives (the map, `map_size`) and gives it to
+// `inputs` as shadow_minmax. Returns the mip, which must outlive the draw, or
+// none. Errors: bad_input when `pass` reads the mip and `minmax` is empty;
+// build_minmax_mip's.
+Result<std::optional<MinmaxMip>> give_minmax_mip(const PassProgram& pass,
+                                                 const std::optional<GlMinmaxPasses>& minmax,
+                                                 PassInputs& inputs, LevelSize map_size,
+                                                 const ParamBlock& params);
 
 // Levels 1..N (index 0 is level 1) at their sizes, every channel of the
 // chain's format ((min, max)).

@@ -22,22 +22,11 @@ Result<Texture> draw_query(const PassProgram& query, const std::optional<GlMinma
                       "its render target is " + std::string(query.target_format->name()) +
                           "; the query writes (visibility, texel reads), two channels");
   }
-  // Only what the driver reports active decides, so passes given to a query
-  // that does not read the mip are neither required nor compiled.
-  std::optional<MinmaxMip> mip;
-  if (query.reads(TextureId::shadow_minmax)) {
-    if (!minmax) {
-      return make_error(Error::Kind::bad_input, query.where,
-                        "the query reads shadow_minmax, the shadow map's min-max mip, but no "
-                        "minmax_init and minmax_reduce passes were given to build it");
-    }
-    auto built = build_minmax_mip(*minmax, inputs,
-                                  {images.normalized_depth.width, images.normalized_depth.height},
-                                  images.params);
-    if (!built) return built.error();
-    mip = std::move(*built);
-    inputs.set(TextureId::shadow_minmax, mip->chain.get(), *mip->format, "the min-max mip");
-  }
+  PENUMBRA_TRY_ASSIGN(
+      const std::optional<MinmaxMip> mip,
+      give_minmax_mip(query, minmax, inputs,
+                      {images.normalized_depth.width, images.normalized_depth.height},
+                      images.params));
   const int width = images.receivers.width;
   const int height = images.receivers.height;
   const std::string what = "the " + query.where;
@@ -63,7 +52,8 @@ Result<GlQueryOutput> run_query_pass(const GlQueryPasses& passes, const QueryInp
 
 Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& normalized_depth,
                                         const FloatImage& camera_depth, const ParamBlock& params,
-                                        DepthFormat map_format) {
+                                        DepthFormat map_format,
+                                        const std::optional<GlMinmaxPasses>& minmax) {
   PENUMBRA_TRY(check_shadow_map(normalized_depth));
   PENUMBRA_TRY(check_shadow_map(camera_depth));
   auto deferred = prepare_pass(pass, PassKind::deferred);
@@ -74,6 +64,9 @@ Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& no
   // Uploaded in the binding's format: a depth texture, as the engine's
   // camera drew it.
   inputs.give(TextureId::camera_depth, camera_depth);
+  PENUMBRA_TRY_ASSIGN(const std::optional<MinmaxMip> mip,
+                      give_minmax_mip(*deferred, minmax, inputs,
+                                      {normalized_depth.width, normalized_depth.height}, params));
   const int width = camera_depth.width;
   const int height = camera_depth.height;
   const std::string what = "the " + deferred->where;

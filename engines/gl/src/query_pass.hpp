@@ -42,6 +42,7 @@ Result<GlQueryOutput> run_query_pass(const GlQueryPasses& passes, const QueryInp
 // returns.
 Result<GlQueryOutput> run_deferred_pass(const GlPass& pass, const FloatImage& normalized_depth,
                                         const FloatImage& camera_depth, const ParamBlock& params,
-                                        DepthFormat map_format);
+                                        DepthFormat map_format,
+                                        const std::optional<GlMinmaxPasses>& minmax);
 
 }  // namespace penumbra::gl

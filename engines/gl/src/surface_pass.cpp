@@ -4,6 +4,7 @@
 
 #include "full_screen_draw.hpp"
 #include "gl_check.hpp"
+#include "minmax_mip.hpp"
 #include "param_binding.hpp"
 #include "pass_program.hpp"
 #include "textures.hpp"
@@ -18,7 +19,8 @@ constexpr const char* kWhere = "surface pass";
 Result<FloatImage> run_surface_pass(const GlPass& surface,
                                     std::span<const std::array<float, 3>> triangles,
                                     const FloatImage& normalized_depth, int width, int height,
-                                    const ParamBlock& params, DepthFormat map_format) {
+                                    const ParamBlock& params, DepthFormat map_format,
+                                    const std::optional<GlMinmaxPasses>& minmax) {
   if (triangles.size() % 3 != 0) {
     return make_error(Error::Kind::bad_input, kWhere,
                       std::to_string(triangles.size()) +
@@ -36,6 +38,9 @@ Result<FloatImage> run_surface_pass(const GlPass& surface,
   PassInputs inputs;
   inputs.give(TextureId::shadow_depth, normalized_depth, map_format);
   inputs.give(TextureId::shadow_cmp, normalized_depth, map_format);
+  PENUMBRA_TRY_ASSIGN(const std::optional<MinmaxMip> mip,
+                      give_minmax_mip(*pass, minmax, inputs,
+                                      {normalized_depth.width, normalized_depth.height}, params));
 
   auto colour = create_pass_target(*pass, width, height, "the surface pass's target");
   if (!colour) return colour.error();

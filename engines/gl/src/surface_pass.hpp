@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <span>
 
 #include "penumbra/gl/engine.hpp"
@@ -13,6 +14,7 @@ namespace penumbra::gl {
 Result<FloatImage> run_surface_pass(const GlPass& surface,
                                     std::span<const std::array<float, 3>> triangles,
                                     const FloatImage& normalized_depth, int width, int height,
-                                    const ParamBlock& params, DepthFormat map_format);
+                                    const ParamBlock& params, DepthFormat map_format,
+                                    const std::optional<GlMinmaxPasses>& minmax);
 
 }  // namespace penumbra::gl

@@ -191,8 +191,9 @@ bool can_emit(const Variant& variant, Target target);
 bool runs_pass(PassKind pass, const Variant& variant);
 
 // Whether `technique` has a function form (docs/function-form.md) and a
-// deferred pass (docs/deferred-mask.md): its query reads nothing an engine's
-// own shadow map does not give it (no min-max mip, no blur passes).
+// deferred pass (docs/deferred-mask.md): every technique but screen_blur,
+// whose blur passes follow the query, and the two back-projections, which
+// verify cannot yet judge on a camera's receivers (docs/function-form.md).
 bool has_function_form(Technique technique);
 
 }  // namespace penumbra

@@ -151,9 +151,11 @@ class D3dEngine {
   // depth as stored, row 0 first, uploaded as an R32 float texture (what a
   // Direct3D 10/11 engine's typeless depth buffer's shader view reads, and
   // what a Direct3D 9 engine draws its depth into). `params` holds the
-  // pass's matrices besides ShadowParams' members.
+  // pass's matrices besides ShadowParams' members. `minmax` builds the
+  // min-max chain first, for a pass that reads it.
   Result<D3dQueryOutput> run_deferred(const D3dPass& deferred, const D3dMap& map,
-                                      const FloatImage& camera_depth, const ParamBlock& params);
+                                      const FloatImage& camera_depth, const ParamBlock& params,
+                                      const std::optional<D3dMinmaxPasses>& minmax = std::nullopt);
 
   // screen_blur's chain on `map`: the query, blur_h, blur_v and the
   // composite over `scene_colour` (RGBA, the receivers' size).
@@ -168,11 +170,12 @@ class D3dEngine {
   // form (docs/function-form.md), into a width x height target in the
   // reflection's render-target format with a depth buffer of its own (both
   // cleared to 1, depth test LESS), `map` bound as the function form's
-  // textures, and reads the target back.
+  // textures (with the min-max chain `minmax` builds, for a function that
+  // reads it), and reads the target back.
   Result<FloatImage> run_surface(const D3dPass& surface,
                                  const std::vector<std::array<float, 3>>& triangles,
-                                 const D3dMap& map, int width, int height,
-                                 const ParamBlock& params);
+                                 const D3dMap& map, int width, int height, const ParamBlock& params,
+                                 const std::optional<D3dMinmaxPasses>& minmax = std::nullopt);
 
  private:
   friend class d3d::Job;  // creates ids, shares the shader caches, runs itself

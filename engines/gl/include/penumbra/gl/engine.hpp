@@ -133,11 +133,13 @@ class GlEngine {
   // of the camera's depth buffer as stored, row 0 first, uploaded as a
   // GL_DEPTH_COMPONENT32F texture. `params` holds the pass's matrices
   // besides ShadowParams' members. The map is a `map_format` depth texture
-  // (an engine's D24 or D16 map holds values those formats represent).
-  // Errors as run_query's, `where` "deferred pass".
+  // (an engine's D24 or D16 map holds values those formats represent). When
+  // the pass reads shadow_minmax, `minmax` builds the mip first, as for a
+  // query. Errors as run_query's, `where` "deferred pass".
   Result<GlQueryOutput> run_deferred(const GlPass& deferred, const FloatImage& normalized_depth,
                                      const FloatImage& camera_depth, const ParamBlock& params,
-                                     DepthFormat map_format = DepthFormat::d32_float);
+                                     DepthFormat map_format = DepthFormat::d32_float,
+                                     const std::optional<GlMinmaxPasses>& minmax = std::nullopt);
 
   // Builds the min-max mip of `normalized_depth` with `passes` and reads it
   // back: levels 1..N (index 0 is level 1, ceil(W/2) x ceil(H/2); level N is
@@ -166,14 +168,16 @@ class GlEngine {
   // target in the reflection's render-target format with a
   // GL_DEPTH_COMPONENT32F depth buffer of its own (both cleared to 1.0,
   // depth test LESS, no culling), `normalized_depth` bound as the function
-  // form's textures, a `map_format` depth texture as run_deferred's. Returns
-  // the target's channels, row 0 first. Errors as run_query's, `where`
-  // "surface pass".
+  // form's textures, a `map_format` depth texture as run_deferred's, and the
+  // min-max mip `minmax` builds of it when the function reads shadow_minmax.
+  // Returns the target's channels, row 0 first. Errors as run_query's,
+  // `where` "surface pass".
   Result<FloatImage> run_surface(const GlPass& surface,
                                  std::span<const std::array<float, 3>> triangles,
                                  const FloatImage& normalized_depth, int width, int height,
                                  const ParamBlock& params,
-                                 DepthFormat map_format = DepthFormat::d32_float);
+                                 DepthFormat map_format = DepthFormat::d32_float,
+                                 const std::optional<GlMinmaxPasses>& minmax = std::nullopt);
 
  private:
   explicit GlEngine(std::unique_ptr<gl::Context> context);

@@ -1,0 +1,330 @@
+struct MinmaxCursor
+{
+    float2 node;
+    float level;
+    float span;
+    float2 first_root;
+    float start;
+    bool climbed;
+    bool done;
+};
+
+// ShadowParams as Direct3D 9 constant registers
+uniform float4 params_shadow_map_size : register(c0);
+uniform float4 params_light : register(c1);
+uniform float4 params_sampling : register(c2);
+uniform float4 params_screen_size : register(c3);
+uniform float4 params_source_size : register(c4);
+uniform float4 params_minmax_info : register(c5);
+uniform float4 params_camera_inverse_0 : register(c6);
+uniform float4 params_camera_inverse_1 : register(c7);
+uniform float4 params_camera_inverse_2 : register(c8);
+uniform float4 params_camera_inverse_3 : register(c9);
+uniform float4 params_light_view_proj_0 : register(c10);
+uniform float4 params_light_view_proj_1 : register(c11);
+uniform float4 params_light_view_proj_2 : register(c12);
+uniform float4 params_light_view_proj_3 : register(c13);
+uniform float4 params_camera_depth_range : register(c14);
+
+
+uniform sampler2D shadow_depth : register(s1);
+uniform sampler2D shadow_minmax : register(s4);
+uniform sampler2D camera_depth : register(s10);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : COLOR0;
+};
+
+static float penumbra_texel_reads;
+
+float3 clip_to_query(float4 light_clip_position)
+{
+    float2 ndc = light_clip_position.xy / light_clip_position.w.xx;
+    return float3(0.5f + (0.5f * ndc.x), 0.5f + ((-0.5f) * ndc.y), light_clip_position.w);
+}
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float4 minmax_clip_window(float2 first, float2 last)
+{
+    return float4(max(first, 0.0f.xx), min(last, params_shadow_map_size.xy - 1.0f.xx));
+}
+
+bool minmax_window_empty(float4 window)
+{
+    return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
+}
+
+float minmax_level_spanning(float4 window, float nodes)
+{
+    float level = 0.0f;
+    float inv_span = 1.0f;
+    [loop]
+    for (int k = 0; k < 16; k++)
+    {
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
+        {
+            break;
+        }
+        level += 1.0f;
+        inv_span *= 0.5f;
+    }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy / cursor.span.xx);
+    cursor.node = cursor.first_root;
+    cursor.climbed = false;
+    cursor.done = false;
+    return cursor;
+}
+
+float4 minmax_node_part(MinmaxCursor cursor, float4 window)
+{
+    float2 first = cursor.node * cursor.span;
+    return float4(max(first, window.xy), min((first + cursor.span.xx) - 1.0f.xx, window.zw));
+}
+
+float shadow_texel(float2 texel)
+{
+    penumbra_texel_reads += 1.0f;
+    return tex2Dlod(shadow_depth, float4((texel + 0.5f.xx) * params_shadow_map_size.zw, 0.0, 0.0f)).x;
+}
+
+float2 minmax_node(float level, float2 node)
+{
+    if (level < 0.5f)
+    {
+        float2 param = node;
+        float _137 = shadow_texel(param);
+        float depth = _137;
+        return float2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0f;
+    float2 uv = (node + 0.5f.xx) * exp2(level - params_minmax_info.x);
+    return tex2Dlod(shadow_minmax, float4(uv, 0.0, level - 1.0f)).xy;
+}
+
+float2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    float2 param_1 = cursor.node;
+    float2 _318 = minmax_node(param, param_1);
+    return _318;
+}
+
+float minmax_texel_count(float4 part)
+{
+    return ((part.z - part.x) + 1.0f) * ((part.w - part.y) + 1.0f);
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0f;
+    cursor.level -= 1.0f;
+    cursor.span *= 0.5f;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    bool root = cursor.level >= cursor.start;
+    float2 _341;
+    if (root)
+    {
+        _341 = cursor.first_root;
+    }
+    else
+    {
+        _341 = floor(cursor.node * 0.5f) * 2.0f;
+    }
+    float2 first_sibling = _341;
+    float2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5f)
+    {
+        cursor.node.x += 1.0f;
+    }
+    else
+    {
+        if (offset.y < 0.5f)
+        {
+            cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
+        }
+        else
+        {
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5f);
+                cursor.level += 1.0f;
+                cursor.span *= 2.0f;
+                cursor.climbed = true;
+            }
+        }
+    }
+}
+
+float minmax_pcf_count(float2 first, float reference)
+{
+    float count = 0.0f;
+    float2 param = first;
+    float2 param_1 = first + 5.0f.xx;
+    float4 window = minmax_clip_window(param, param_1);
+    float4 param_2 = window;
+    if (minmax_window_empty(param_2))
+    {
+        return 0.0f;
+    }
+    float4 param_3 = window;
+    MinmaxCursor cursor = minmax_begin(param_3);
+    [loop]
+    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    {
+        [loop]
+        for (int loop_middle = 0; all(bool2(loop_middle < 1, !cursor.done)); loop_middle++)
+        {
+            [loop]
+            for (int loop_inner = 0; all(bool2(loop_inner < 149, !cursor.done)); loop_inner++)
+            {
+                MinmaxCursor param_4 = cursor;
+                float4 param_5 = window;
+                float4 part = minmax_node_part(param_4, param_5);
+                bool descend = false;
+                bool _471 = !cursor.climbed;
+                bool _478;
+                if (_471)
+                {
+                    float4 param_6 = part;
+                    _478 = !minmax_window_empty(param_6);
+                }
+                else
+                {
+                    _478 = _471;
+                }
+                if (_478)
+                {
+                    MinmaxCursor param_7 = cursor;
+                    float2 _484 = minmax_cursor_read(param_7);
+                    float2 range = _484;
+                    if (range.y < reference)
+                    {
+                        float4 param_8 = part;
+                        count += minmax_texel_count(param_8);
+                    }
+                    else
+                    {
+                        bool _500 = reference > range.x;
+                        bool _506;
+                        if (_500)
+                        {
+                            _506 = cursor.level > 0.5f;
+                        }
+                        else
+                        {
+                            _506 = _500;
+                        }
+                        descend = _506;
+                    }
+                }
+                if (descend)
+                {
+                    MinmaxCursor param_9 = cursor;
+                    minmax_descend(param_9);
+                    cursor = param_9;
+                }
+                else
+                {
+                    MinmaxCursor param_10 = cursor;
+                    minmax_next(param_10);
+                    cursor = param_10;
+                }
+            }
+        }
+    }
+    return count;
+}
+
+float shadow_visibility(float3 query)
+{
+    float2 first = floor(query.xy * params_shadow_map_size.xy) - 3.0f.xx;
+    float param = query.z;
+    float2 param_1 = first;
+    float param_2 = shadow_reference(param);
+    float _547 = minmax_pcf_count(param_1, param_2);
+    float count = _547;
+    float _550;
+    if (count > 0.0f)
+    {
+        _550 = (36.0f - count) * 0.02777777798473834991455078125f;
+    }
+    else
+    {
+        _550 = 1.0f;
+    }
+    return _550;
+}
+
+float receiver_visibility(float3 query, float2 pixel)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _579 = shadow_visibility(param);
+    return _579;
+}
+
+void frag_main()
+{
+    penumbra_texel_reads = 0.0f;
+    float depth = tex2Dlod(camera_depth, float4(screen_uv, 0.0, 0.0f)).x;
+    float4 clip = float4((2.0f * screen_uv.x) - 1.0f, (screen_uv.y - 0.5f) / (-0.5f), (depth * params_camera_depth_range.x) + params_camera_depth_range.y, 1.0f);
+    float4x4 camera_inverse = float4x4(float4(params_camera_inverse_0), float4(params_camera_inverse_1), float4(params_camera_inverse_2), float4(params_camera_inverse_3));
+    float4x4 light_view_proj = float4x4(float4(params_light_view_proj_0), float4(params_light_view_proj_1), float4(params_light_view_proj_2), float4(params_light_view_proj_3));
+    float4 world = mul(clip, camera_inverse);
+    float4 param = mul(world / world.w.xxxx, light_view_proj);
+    float3 query = clip_to_query(param);
+    if (depth == params_camera_depth_range.z)
+    {
+        query = float3(0.5f, 0.5f, 0.0f);
+    }
+    float3 param_1 = query;
+    float2 param_2 = floor(screen_uv * params_screen_size.xy);
+    float _730 = receiver_visibility(param_1, param_2);
+    float visible = _730;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = float4(visibility);
+    return stage_output;
+}
