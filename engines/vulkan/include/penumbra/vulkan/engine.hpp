@@ -149,7 +149,8 @@ class Engine {
   // a query, over a target of `camera_depth`'s size: `camera_depth`, one
   // channel of the camera's depth buffer as stored, row 0 first, uploaded
   // as a D32_SFLOAT image and read as camera_depth. `params` holds the
-  // pass's matrices besides ShadowParams' members.
+  // pass's matrices besides ShadowParams' members. A pass reading
+  // shadow_minmax needs a map whose min-max mip is built.
   Result<QueryOutput> run_deferred(const PassProgram& deferred, const ShadowMap& map,
                                    const FloatImage& camera_depth, const ParamBlock& params);
 
@@ -173,7 +174,9 @@ class Engine {
   // form (docs/function-form.md), into a width x height
   // R32G32B32A32_SFLOAT target with a depth buffer of its own (both cleared
   // to 1.0, depth test LESS), the map bound as the function form's
-  // textures. Returns the four channels of output 0, row 0 first.
+  // textures (and its min-max mip, which must be built for a function that
+  // reads shadow_minmax). Returns the four channels of output 0, row 0
+  // first.
   Result<FloatImage> run_surface(const PassProgram& surface,
                                  std::span<const std::array<float, 3>> triangles,
                                  const ShadowMap& map, int width, int height,
