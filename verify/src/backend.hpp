@@ -164,7 +164,9 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
                                             Target target, DepthFormat map_format);
 
 // `draw` on `engine` over `fixture`'s map with `program`, the deferred pass
-// loaded for the Vulkan engine (the paths that run on it).
+// loaded for the Vulkan engine (the paths that run on it). A technique that
+// reads the min-max mip gets it built on the map first by the target's own
+// build passes, as an engine would.
 Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
                                        const SceneFixture& fixture, const PassProgram& program);
 
@@ -174,9 +176,10 @@ Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
 using SurfaceStageCompiler = std::function<Result<StageCode>(
     ShaderStage stage, const std::string& text, const std::string& name)>;
 
-// `draw` on `engine` over `fixture`'s map: `program`'s viewport and depth
-// conventions, its stages from `compile` (the paths that draw on the Vulkan
-// engine, vulkan_backend.cpp).
+// `draw` on `engine` over `fixture`'s map (and its min-max mip, built as
+// for deferred_on_engine): `program`'s viewport and depth conventions, its
+// stages from `compile` (the paths that draw on the Vulkan engine,
+// vulkan_backend.cpp).
 Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw,
                                          const SceneFixture& fixture, PassProgram program,
                                          const SurfaceStageCompiler& compile);

@@ -22,16 +22,6 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
   PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, depth.program, target, out.stage.scene,
                                                  out.view.receivers, map_format));
   out.depth = std::move(depth.program.reflection);
-  // The mip an engine builds of its map before it draws: the Vulkan-hosted
-  // paths read it with the map; the others build their own.
-  if (uses_minmax_mip(entry.variant.technique)) {
-    PENUMBRA_TRY_ASSIGN(const ExecutableProgram init,
-                        load_executable(library, entry, PassKind::minmax_init, target));
-    PENUMBRA_TRY_ASSIGN(const ExecutableProgram reduce,
-                        load_executable(library, entry, PassKind::minmax_reduce, target));
-    PENUMBRA_TRY(
-        engine.build_minmax(*out.fixture.map, init.program, reduce.program, out.fixture.params));
-  }
   return out;
 }
 

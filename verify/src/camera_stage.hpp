@@ -16,17 +16,15 @@ namespace penumbra {
 struct CameraStage {
   reference::Stage stage;
   reference::StageView view;  // the camera's pixels, row 0 at the top
-  // The stage's scene, its map drawn by the target's depth pass (and its
-  // min-max mip built by the target's passes, for a technique that reads it).
-  SceneFixture fixture;
-  PassReflection depth;  // that depth pass's reflection
+  SceneFixture fixture;       // the stage's scene, its map drawn by the target's depth pass
+  PassReflection depth;       // that depth pass's reflection
   int width = 0;
   int height = 0;
 };
 
 // The report's stage for `entry`'s checks on `target`, its map drawn on
 // `engine` into a `map_format` depth image where prepare_scene() allows.
-// Errors: loading or running the depth pass or the min-max build passes.
+// Errors: loading or running the depth pass.
 Result<CameraStage> camera_stage(Engine& engine, const Library& library,
                                  const LibraryVariant& entry, Target target,
                                  DepthFormat map_format);

@@ -136,12 +136,7 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
   auto program = load_executable(library, variant, PassKind::query, target);
   if (!program) return program.error();
   if (uses_minmax_mip(variant.variant.technique)) {
-    auto init = load_executable(library, variant, PassKind::minmax_init, target);
-    if (!init) return init.error();
-    auto reduce = load_executable(library, variant, PassKind::minmax_reduce, target);
-    if (!reduce) return reduce.error();
-    auto built = engine.build_minmax(**map, init->program, reduce->program, params);
-    if (!built) return built.error();
+    PENUMBRA_TRY(build_library_minmax(engine, library, variant, target, **map, params));
   }
   return engine.run_query_output(program->program, **map, inputs.receivers, params);
 }

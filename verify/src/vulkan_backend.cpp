@@ -64,6 +64,16 @@ LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded)
       }};
 }
 
+// The mip an engine builds of its map before it draws, for a technique that
+// reads it: on the fixture's map, with the target's own build passes (the
+// OpenGL and Wine paths build theirs on their own maps).
+Status build_stage_minmax(Engine& engine, const Library& library, const LibraryVariant& entry,
+                          Target target, const SceneFixture& fixture) {
+  if (!uses_minmax_mip(entry.variant.technique)) return {};
+  PENUMBRA_TRY(build_library_minmax(engine, library, entry, target, *fixture.map, fixture.params));
+  return {};
+}
+
 }  // namespace
 
 Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw,
@@ -80,6 +90,7 @@ Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw
                             engine_fragment_shader(draw.target, draw.reflection, draw.function_text,
                                                    draw.light_depth),
                             draw.where + " (engine fragment stage)"));
+  PENUMBRA_TRY(build_stage_minmax(engine, *draw.library, *draw.entry, draw.target, fixture));
   PENUMBRA_TRY_ASSIGN(FloatImage clip, engine.run_surface(program, draw.triangles, *fixture.map,
                                                           draw.width, draw.height, fixture.params));
   return SurfacePicture{std::move(clip), nullptr};
@@ -87,6 +98,7 @@ Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw
 
 Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
                                        const SceneFixture& fixture, const PassProgram& program) {
+  PENUMBRA_TRY(build_stage_minmax(engine, *draw.library, *draw.entry, draw.target, fixture));
   PENUMBRA_TRY_ASSIGN(QueryOutput gpu,
                       engine.run_deferred(program, *fixture.map, draw.camera_depth, draw.params));
   return scene_output(std::move(gpu.visibility), std::move(gpu.texel_reads));

@@ -159,6 +159,16 @@ Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
       [&](PassKind pass) { return load_executable(library, variant, pass, target); });
 }
 
+Result<MinmaxBuild> build_library_minmax(Engine& engine, const Library& library,
+                                         const LibraryVariant& variant, Target target,
+                                         ShadowMap& map, const ParamBlock& params) {
+  PENUMBRA_TRY_ASSIGN(const ExecutableProgram init,
+                      load_executable(library, variant, PassKind::minmax_init, target));
+  PENUMBRA_TRY_ASSIGN(const ExecutableProgram reduce,
+                      load_executable(library, variant, PassKind::minmax_reduce, target));
+  return engine.build_minmax(map, init.program, reduce.program, params);
+}
+
 Result<ScreenBlurExecutables> load_screen_blur(const PassLoader& load) {
   auto query = load(PassKind::query);
   if (!query) return query.error();

@@ -71,6 +71,12 @@ Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
 using PassLoader = std::function<Result<ExecutableProgram>(PassKind pass)>;
 Result<ScreenBlurExecutables> load_screen_blur(const PassLoader& load);
 
+// The min-max mip of `map` built by `variant`'s minmax_init and
+// minmax_reduce passes for `target` (load_executable, Engine::build_minmax).
+Result<MinmaxBuild> build_library_minmax(Engine& engine, const Library& library,
+                                         const LibraryVariant& variant, Target target,
+                                         ShadowMap& map, const ParamBlock& params);
+
 // The emitted text (or .spv bytes) of one stage of a pass.
 Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
                                    PassKind pass, Target target, ShaderStage stage);
