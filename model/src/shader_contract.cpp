@@ -156,13 +156,10 @@ constexpr PassDescription kPasses[] = {
 
 // The query's techniques that read the map alone, and those that read the
 // min-max mip its build passes make of it; the deferred pass is the query's
-// alternative for an engine's own camera, run instead of it. The two
-// back-projections have none yet (has_function_form()).
+// alternative for an engine's own camera, run instead of it.
 constexpr PassKind kSinglePass[] = {PassKind::depth, PassKind::query, PassKind::deferred};
 constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
                                       PassKind::minmax_reduce, PassKind::query, PassKind::deferred};
-constexpr PassKind kMinmaxQueryPasses[] = {PassKind::depth, PassKind::minmax_init,
-                                           PassKind::minmax_reduce, PassKind::query};
 constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
                                           PassKind::blur_v, PassKind::composite};
 
@@ -194,12 +191,12 @@ constexpr TechniqueDescription kTechniques[] = {
     {Technique::pcss, "pcss", kPcssKeys, kRotationPlaneEncoding, kSinglePass, false},
     {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversalEncoding, kMinmaxPasses, true},
     {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
-     kMinmaxQueryPasses, true},
+     kMinmaxPasses, true},
     {Technique::pcss_minmax, "pcss_minmax", kMinmaxPoissonKeys, kRotationEncoding, kMinmaxPasses,
      true},
     {Technique::screen_blur, "screen_blur", kScreenBlurKeys, kDepthAware, kScreenBlurPasses, false},
     {Technique::bitmask_backprojection, "bitmask_backprojection", kBitmaskKeys, kBackprojectionKeys,
-     kMinmaxQueryPasses, true, true},
+     kMinmaxPasses, true, true},
 };
 
 // The tables are indexed by their enums: each row's enum must be its index.

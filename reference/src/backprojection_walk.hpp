@@ -43,24 +43,27 @@ class Projector {
     return {slope(texels.x0, map_.width(), q_.u), slope(texels.y0, map_.height(), q_.v),
             slope(texels.x1 + 1, map_.width(), q_.u), slope(texels.y1 + 1, map_.height(), q_.v)};
   }
-  // How far float32 may put an edge of a patch at depth z along `axis` (0:
-  // X from u, 1: Y from v) under any evaluation GLSL allows where nothing is
-  // `precise` (GLSL 3.30 and ESSL 3.00 have no `precise`): a * b + c fused or
-  // not, products and the quotient of g(z) regrouped, each division within
-  // 2.5 ulp, Fw / n evaluated apart for the receiver and the texels, and
-  // each site (the x0/y0 and x1/y1 lanes) choosing for itself. With
-  // u = 2^-24, m the texel's u - 0.5 and m_r the receiver's, to first
-  // order: the slope difference a - a_r errs by at most
-  // u Fw/n (2 |u_tex| + 7 |m| + 7 |m_r|) + u |a - a_r| (t TS rounded twice,
-  // each slope's subtraction, product and 2.5-ulp Fw / n), which is below
-  // u (Fw/n (1 + 16 |m_r|) + 10 |a - a_r|); g(z) errs relatively by 7u and
-  // the last product by u: 18u |edge| in all, rounded up to 20u for the
-  // higher orders. An edge two patches share is computed by both lanes, so
-  // their values may differ by both errors.
+  // How far float32 may put an edge X = (c - c_r) s of a patch at depth z
+  // along `axis` (0: X from u, 1: Y from v; c the texel corner's map
+  // coordinate, c_r the receiver's, s = g(z) Fw / n), as the shader
+  // computes it (backprojection_project()), under any evaluation GLSL
+  // allows where nothing is `precise` (GLSL 3.30 and ESSL 3.00 have no
+  // `precise`): a * b + c fused or not, the products of s regrouped, each
+  // division within 2.5 ulp, and each site (the x0/y0 and x1/y1 lanes)
+  // choosing for itself; no compiler distributes the product over the
+  // difference (that adds an operation). With u = 2^-24, to first order: c
+  // = t TS errs by 2u |c| (TS = 1 / size rounded, then the product), and
+  // not at all where the size is a power of two; c - c_r by u |c - c_r|; s
+  // relatively by 13u (g(z) 7u, Fw / n 5u, their product u); the last
+  // product by u: u (2 s |c| + 15 |X|), the second term rounded up to 16u
+  // for the higher orders. An edge two patches share is computed by both
+  // lanes, so their values may differ by both errors.
   double edge_error(double edge, double z, int axis) const {
     constexpr double u = 0x1p-24;
-    const double m_r = std::abs((axis == 0 ? q_.u : q_.v) - 0.5);
-    return u * (gain(z) * to_slope_ * (1.0 + 16.0 * m_r) + 20.0 * std::abs(edge));
+    const int size = axis == 0 ? map_.width() : map_.height();
+    const bool exact_corners = (size & (size - 1)) == 0;
+    const double corner = exact_corners ? 0.0 : 2.0 * gain(z) * to_slope_;
+    return u * (corner + 16.0 * std::abs(edge));
   }
   // How far float32 may move the area of `r` (a patch at depth z) inside
   // the light: each edge within its error of the light, moved by that
@@ -79,13 +82,15 @@ class Projector {
     return (reach(r.x0, e[0]) + reach(r.x1, e[2])) * y +
            (reach(r.y0, e[1]) + reach(r.y1, e[3])) * x;
   }
-  // Whether it reaches the light, and whether float32 might say otherwise.
-  bool touches(const PlaneRect& r, bool& close) const {
-    auto near = [&](double edge, double bound) {
-      return std::abs(edge - bound) <= 1e-6 * (std::abs(edge) + half_);
+  // Whether `r`, a patch at depth z, reaches the light, and whether float32
+  // might say otherwise: an edge within its error, and the light's float
+  // size, of the light's.
+  bool touches(const PlaneRect& r, double z, bool& close) const {
+    auto near = [&](double edge, double bound, int axis) {
+      return std::abs(edge - bound) <= edge_error(edge, z, axis) + 1e-6 * (std::abs(edge) + half_);
     };
-    close =
-        close || near(r.x0, half_) || near(r.y0, half_) || near(r.x1, -half_) || near(r.y1, -half_);
+    close = close || near(r.x0, half_, 0) || near(r.y0, half_, 1) || near(r.x1, -half_, 0) ||
+            near(r.y1, -half_, 1);
     return r.x0 <= half_ && r.y0 <= half_ && r.x1 >= -half_ && r.y1 >= -half_;
   }
   double half() const { return half_; }
@@ -139,7 +144,8 @@ WalkEnd walk_backprojection(const ShadowMapView& map, const MinMaxMip& mip,
     if (!cursor.climbed() && !intersect(cursor.texels(), window).empty()) {
       const MinMax range = mip.node(cursor.level(), cursor.x(), cursor.y());
       const TexelRect texels = clip(cursor.texels(), map.width(), map.height());
-      if (range.min < limit && projector.touches(projector.project(texels, range.min), end.close)) {
+      if (range.min < limit &&
+          projector.touches(projector.project(texels, range.min), range.min, end.close)) {
         // Flat: its texels tile one patch (level 0 always is: min == max).
         const bool flat = range.max < limit && range.min == range.max;
         descend = !flat;

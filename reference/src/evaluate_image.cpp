@@ -69,7 +69,8 @@ ReferenceImage evaluate_view(const Variant& variant, const ShadowMapView& map,
   const bool plane = variant.keys.receiver_plane.value_or(false);
   const double tol = tolerance(variant.technique, precision);
   ReferenceImage result{FloatImage(receivers.width, receivers.height, 1),
-                        FloatImage(receivers.width, receivers.height, 1)};
+                        FloatImage(receivers.width, receivers.height, 1), FloatImage(),
+                        FloatImage()};
   tbb::parallel_for(0, receivers.height, [&](int j) {
     for (int i = 0; i < receivers.width; ++i) {
       const Query query{receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2), i, j};
@@ -84,6 +85,7 @@ ReferenceImage evaluate_view(const Variant& variant, const ShadowMapView& map,
       result.ambiguous.at(i, j) = float(std::uint16_t(sample.ambiguous));
     }
   });
+  result.low = result.high = result.visibility;
   return result;
 }
 
@@ -123,8 +125,22 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
     const auto reasons = Ambiguity(std::uint16_t(result.ambiguous.data[k])) |
                          ambiguous_if(tie, Ambiguity::depth_tie);
     result.ambiguous.data[k] = float(std::uint16_t(reasons));
+    result.low.data[k] = std::min({result.low.data[k], nearer.low.data[k], farther.low.data[k]});
+    result.high.data[k] =
+        std::max({result.high.data[k], nearer.high.data[k], farther.high.data[k]});
   }
   return result;
+}
+
+Result<FloatImage> evaluate_visibility(const Variant& variant, const FloatImage& stored,
+                                       const EncodedDepth& encoded, const LightParams& light,
+                                       const FloatImage& receivers,
+                                       const SamplingPrecision& precision,
+                                       const ShaderLimits& limits) {
+  PENUMBRA_TRY(check_variant(variant));
+  PENUMBRA_TRY(check_inputs(stored, receivers));
+  return evaluate_view(variant, ShadowMapView(stored, encoded), light, receivers, precision, limits)
+      .visibility;
 }
 
 }  // namespace penumbra::reference

@@ -27,14 +27,20 @@
 
 #include "common/minmax_traversal.glsl"
 
-// Slopes (u - 0.5) Fw / n of map coordinates `uv`, two points (u0, v0, u1,
-// v1) at once; under a directional light (an orthographic map) the
-// positions (u - 0.5) Fw across its box.
-vec4 backprojection_slope(vec4 uv) {
-#if PENUMBRA_ORTHOGRAPHIC
-  return (uv - 0.5) * LIGHT_FRUSTUM_WIDTH;
+// The walk's loop over its steps: one loop where they fit one.
+#if BACKPROJECTION_MAX_STEPS <= 255
+#define BACKPROJECTION_FOR_STEPS(done) MINMAX_FOR_ONE_LOOP(BACKPROJECTION_MAX_STEPS, done)
 #else
-  return (uv - 0.5) * (LIGHT_FRUSTUM_WIDTH / NEAR_PLANE);
+#define BACKPROJECTION_FOR_STEPS(done) MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, done)
+#endif
+
+// The factor from map coordinates to slopes (u - 0.5) Fw / n, Fw / n; under
+// a directional light (an orthographic map), to positions across its box, Fw.
+float backprojection_to_slope() {
+#if PENUMBRA_ORTHOGRAPHIC
+  return LIGHT_FRUSTUM_WIDTH;
+#else
+  return LIGHT_FRUSTUM_WIDTH / NEAR_PLANE;
 #endif
 }
 
@@ -50,20 +56,23 @@ float backprojection_gain(float z, float z_receiver) {
 }
 
 // Light-plane extent of texels `texels` (x0, y0, x1, y1) at linear depth z
-// seen from the receiver with slopes `receiver_slope` (twice: x, y, x, y):
-// (X0, Y0, X1, Y1). Both corners in one vec4, lane for lane the same
-// arithmetic: Shader Model 3 counts a vec4 operation as one slot.
-vec4 backprojection_project(vec4 texels, float z, vec3 query, vec4 receiver_slope) {
-  float gain = backprojection_gain(z, query.z);
+// seen from the receiver `query`: (X0, Y0, X1, Y1). The map coordinates
+// are subtracted before they are scaled: near the receiver, slopes
+// subtracted would cancel their rounding into an error g(z) times theirs,
+// which a receiver just below an occluder's edge (g large) would see.
+// Both corners in one vec4, lane for lane the same arithmetic: Shader Model
+// 3 counts a vec4 operation as one slot.
+vec4 backprojection_project(vec4 texels, float z, vec3 query) {
+  float scale = backprojection_gain(z, query.z) * backprojection_to_slope();
   vec4 corners = vec4(texels.xy, texels.zw + 1.0) * TEXEL_SIZE.xyxy;
-  return (backprojection_slope(corners) - receiver_slope) * gain;
+  return (corners - query.xyxy) * scale;
 }
 
 // Whether a light-plane rectangle meets the light. For texels projected at
 // their min depth: whether they can touch it at all (g grows with z).
+// One all() of four lanes: && would be a branch (Shader Model 3 slots).
 bool backprojection_touches(vec4 rect) {
-  return all(lessThanEqual(rect.xy, vec2(LIGHT_WORLD_SIZE))) &&
-         all(greaterThanEqual(rect.zw, vec2(-LIGHT_WORLD_SIZE)));
+  return all(lessThanEqual(rect * vec4(1.0, 1.0, -1.0, -1.0), vec4(LIGHT_WORLD_SIZE)));
 }
 
 // The texels whose patches can reach the light from the receiver when no
@@ -86,22 +95,21 @@ vec4 backprojection_window(vec3 query, float z_min) {
 // or after BACKPROJECTION_MAX_STEPS steps.
 BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
                                         BackprojectionState state) {
-  vec4 receiver_slope = backprojection_slope(query.xyxy);
   float visits = 0.0;
 #if defined(PENUMBRA_TRAVERSAL_BRUTE_FORCE)
   vec2 texel = window.xy;
   bool done = false;
-  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, done) {
+  BACKPROJECTION_FOR_STEPS(done) {
     visits += 1.0;
     float depth = shadow_texel(texel);
     if (depth < limit) {
       state = backprojection_add(
           state,
-          backprojection_project(texel.xyxy, depth * INV_DEPTH_SCALE, query, receiver_slope));
+          backprojection_project(texel.xyxy, depth * INV_DEPTH_SCALE, query));
     }
     texel.x += 1.0;
     if (texel.x > window.z) texel = vec2(window.x, texel.y + 1.0);
-    // MINMAX_FOR_BOUNDED rounds its bound up: stop at exactly the bound.
+    // Three loops round the bound up: stop at exactly the bound.
     done = texel.y > window.w || visits >= float(BACKPROJECTION_MAX_NODES);
   }
 #else
@@ -115,7 +123,7 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
   float steps_to_end = 4.0;
   float steps_left = float(BACKPROJECTION_MAX_STEPS);
 #endif
-  MINMAX_FOR_BOUNDED(BACKPROJECTION_MAX_STEPS, cursor.done) {
+  BACKPROJECTION_FOR_STEPS(cursor.done) {
     bool descend = false;
     if (!cursor.climbed) visits += 1.0;
 #if defined(BACKPROJECTION_FINISH_COARSE)
@@ -124,7 +132,7 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit,
     if (!cursor.climbed && !minmax_window_empty(minmax_node_part(cursor, window))) {
       vec2 range = minmax_cursor_read(cursor);
       vec4 texels = minmax_node_texels(cursor);
-      vec4 rect = backprojection_project(texels, range.x * INV_DEPTH_SCALE, query, receiver_slope);
+      vec4 rect = backprojection_project(texels, range.x * INV_DEPTH_SCALE, query);
       // (A call inside && would be a branch: Shader Model 3 slots are counted.)
       bool touches = backprojection_touches(rect);
       if (range.x < limit && touches) {

@@ -27,6 +27,11 @@
          ++loop_middle)                                                                       \
       PENUMBRA_LOOP for (int loop_inner = 0; MINMAX_LOOP_WHILE(loop_inner, MINMAX_LOOP_INNER(bound), done);  \
            ++loop_inner)
+// One loop, where the bound fits one (a target's cap: hlsl_dx9): the outer
+// two would run once, and vkd3d-compiler's ps_3_0 code spends about 14
+// slots on each loop's counter and exit.
+#define MINMAX_FOR_ONE_LOOP(bound, done) \
+  PENUMBRA_LOOP for (int loop_inner = 0; MINMAX_LOOP_WHILE(loop_inner, bound, done); ++loop_inner)
 
 struct MinmaxCursor {
   vec2 node;        // the current node at `level`

@@ -7,6 +7,13 @@
 // caps it below what the window needs, C counts what the steps reached.
 #include "common/minmax_traversal.glsl"
 
+// The walk's loop over its steps: one loop where they fit one.
+#if MINMAX_MAX_STEPS <= 255
+#define MINMAX_PCF_FOR_STEPS(done) MINMAX_FOR_ONE_LOOP(MINMAX_MAX_STEPS, done)
+#else
+#define MINMAX_PCF_FOR_STEPS(done) MINMAX_FOR_BOUNDED(MINMAX_MAX_STEPS, done)
+#endif
+
 float minmax_pcf_count(vec2 first, float reference) {
   float count = 0.0;
   vec4 window = minmax_clip_window(first, first + float(KERNEL_SIZE - 1));
@@ -15,17 +22,17 @@ float minmax_pcf_count(vec2 first, float reference) {
   vec2 texel = window.xy;
   float steps = 0.0;
   bool done = false;
-  MINMAX_FOR_BOUNDED(MINMAX_MAX_STEPS, done) {
+  MINMAX_PCF_FOR_STEPS(done) {
     if (shadow_texel(texel) < reference) count += 1.0;
     texel.x += 1.0;
     if (texel.x > window.z) texel = vec2(window.x, texel.y + 1.0);
-    // MINMAX_FOR_BOUNDED rounds its bound up: stop at exactly the bound.
+    // Three loops round the bound up: stop at exactly the bound.
     steps += 1.0;
     done = texel.y > window.w || steps >= float(MINMAX_MAX_STEPS);
   }
 #else
   MinmaxCursor cursor = minmax_begin(window);
-  MINMAX_FOR_BOUNDED(MINMAX_MAX_STEPS, cursor.done) {
+  MINMAX_PCF_FOR_STEPS(cursor.done) {
     vec4 part = minmax_node_part(cursor, window);
     bool descend = false;
     if (!cursor.climbed && !minmax_window_empty(part)) {

@@ -54,11 +54,16 @@ TEST(Sm3MostExecuted, LoopsAndTripCountsMustAgree) {
 }
 
 // The loops of a walk's query shader in the order vkd3d writes them: the
-// mip walk's search for its start level (MINMAX_MAX_LEVEL), then the three
-// nested loops of MINMAX_FOR_BOUNDED for `steps`.
+// mip walk's search for its start level (MINMAX_MAX_LEVEL), then the loop
+// over `steps`: MINMAX_FOR_ONE_LOOP where the capped bound fits one loop,
+// else the three nested loops of MINMAX_FOR_BOUNDED.
 std::vector<long long> walk_trips(const Variant& variant, int steps) {
   std::vector<long long> trips;
   if (variant.keys.traversal != kBruteForceTraversal) trips.push_back(16);
+  if (*walk_step_bound(variant, traits(Target::hlsl_dx9).walk_step_limit) <= 255) {
+    trips.push_back(steps);
+    return trips;
+  }
   trips.push_back((steps + 65024) / 65025);
   trips.push_back(std::min((steps + 254) / 255, 255));
   trips.push_back(std::min(steps, 255));

@@ -689,8 +689,9 @@ TEST(LoadLibrary, DiskPointsAndBlurWeightsOutOfRangeAreErrorsNamingTheJsonPath) 
 // disks, each nested member on a line of its own: 2,620,995 bytes for the
 // default library's 33 variants (with bytecode), against about 0.21 MB for
 // them in schema 3, 0.55 MB for 60 variants with their deferred passes,
-// 0.61 MB for 76, and 0.71 MB for the same 76 once minmax_pcf and
-// pcss_minmax have deferred passes and function forms.
+// 0.61 MB for 76, 0.71 MB for the same 76 once minmax_pcf and pcss_minmax
+// have deferred passes and function forms, and 0.73 MB once the
+// back-projections have them too.
 TEST(BuildLibrary, DefaultLibraryIndexStaysSmall) {
   TempDir dir("default");
   auto variants =

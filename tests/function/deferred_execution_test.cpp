@@ -25,7 +25,9 @@ const std::vector<std::string> kVariants = {"hard",
                                             "pcss_b16_p16_poisson_perspective_reversed",
                                             "pcss_b16_p16_poisson_ign",
                                             "minmax_pcf_k8_perspective_reversed",
-                                            "pcss_minmax_p16_poisson_orthographic"};
+                                            "pcss_minmax_p16_poisson_orthographic",
+                                            "backprojection_perspective_reversed",
+                                            "bitmask_backprojection_bits64_perspective_reversed"};
 
 Result<std::unique_ptr<Engine>> validated_engine() {
   return Engine::create({.device = "", .validation = true}, fail_on_validation_messages());

@@ -1,6 +1,7 @@
 #include "camera_stage.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
@@ -31,6 +32,64 @@ EngineFormCheck started_check(const LibraryVariant& entry, Target target, const 
   check.target = target;
   check.backend = backend.name();
   return check;
+}
+
+std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage& exact,
+                                        std::span<const FloatImage> rounded,
+                                        std::span<const FloatImage> nudged,
+                                        const FloatImage& error_bound) {
+  constexpr float kRoundingReach = 4.0f;
+  FloatImage reach(exact.width, exact.height, exact.channels);
+  for (std::size_t k = 0; k < exact.data.size(); ++k) {
+    reach.data[k] = std::abs(exact.data[k]) * 0x1p-23f;
+    for (std::span<const FloatImage> images : {rounded, nudged}) {
+      for (const FloatImage& r : images) {
+        reach.data[k] = std::max(reach.data[k], std::abs(r.data[k] - exact.data[k]));
+      }
+    }
+    reach.data[k] = std::max(reach.data[k] * kRoundingReach, error_bound.data[k]);
+  }
+  // receiver_plane: bit q of `signs` is the sign of quad position
+  // q = (i % 2) + 2 (j % 2), and all alike (0 and 15) move no derivative;
+  // otherwise bit c is the sign of channel c.
+  const bool plane = variant.keys.receiver_plane.value_or(false);
+  std::vector<FloatImage> out;
+  if (plane) {
+    for (int signs = 1; signs <= 14; ++signs) {
+      FloatImage& bound = out.emplace_back(exact);
+      for (int j = 0; j < exact.height; ++j) {
+        for (int i = 0; i < exact.width; ++i) {
+          const int bit = (i % 2) + 2 * (j % 2);
+          for (int c = 0; c < exact.channels; ++c) {
+            bound.at(i, j, c) += (signs >> bit) & 1 ? reach.at(i, j, c) : -reach.at(i, j, c);
+          }
+        }
+      }
+    }
+    return out;
+  }
+  // Each channel at -1, 0 or +1 times its reach: the corners, and for an
+  // exact count the points between them too (a sample may enter on one
+  // side and another leave on the other, so that the corners agree while
+  // the count inside the box differs).
+  const bool exact_count = reference::tolerance(variant.technique, {}) == 0.0;
+  int moves = 1;
+  for (int c = 0; c < exact.channels; ++c) moves *= 3;
+  for (int move = 0; move < moves; ++move) {
+    int step[3] = {};
+    bool corner = true, centre = true;
+    for (int c = 0, rest = move; c < exact.channels; ++c, rest /= 3) {
+      step[c] = rest % 3 - 1;
+      corner = corner && step[c] != 0;
+      centre = centre && step[c] == 0;
+    }
+    if (centre || (!corner && !exact_count)) continue;
+    FloatImage& bound = out.emplace_back(exact);
+    for (std::size_t k = 0; k < bound.data.size(); ++k) {
+      bound.data[k] += float(step[k % std::size_t(exact.channels)]) * reach.data[k];
+    }
+  }
+  return out;
 }
 
 Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVariant& entry,

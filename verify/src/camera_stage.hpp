@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "backend.hpp"
 #include "penumbra/reference/stage.hpp"
@@ -31,6 +32,26 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
 
 // A check of `entry` on `target` by `backend`, its results to come.
 EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend);
+
+// The receivers a GPU may have used where it computed `exact` (3 channels: u,
+// v, z_r) in float32, in its own order and each pixel on its own: they may lie
+// further from `exact` than `rounded`'s (the shader's operations emulated in
+// float32) do, up to four times the largest of their errors and of `nudged`'s
+// (the receivers of a screen_uv interpolated a few ulps off the pixel's centre;
+// on lavapipe, up to twice), or of one float32 ulp where all of them round to
+// `exact`; or up to `error_bound` (a bound on any float32 evaluation, per
+// channel) where that is further: the orders emulated may happen to land near
+// `exact`. The bounds are `exact` moved that far. A technique without
+// receiver_plane reads each pixel's receiver alone, which lies in the box whose
+// eight corners (each channel moved up or down) bound it; for an exact count
+// (tolerance 0) the box's 3x3x3 lattice but its centre, since a count's corners
+// may agree while inside the box one term has entered and another not yet left.
+// receiver_plane's slope is a difference of neighbours, so its bounds take each
+// mix of signs over a 2x2 quad, which tilts the screen derivatives every way.
+std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage& exact,
+                                        std::span<const FloatImage> rounded,
+                                        std::span<const FloatImage> nudged,
+                                        const FloatImage& error_bound);
 
 // `check`'s results: `visibility` (channel `channel`) against the reference
 // at `receivers` on the map the picture read (`own_stored_depth`, or the

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "backend.hpp"
@@ -146,45 +148,61 @@ FloatImage rebuilt_receivers(const FloatImage& depth, const Matrix4& camera_inve
   return out;
 }
 
-// A GPU rounds in its own order, and each pixel on its own: its receivers
-// may lie further from `exact` than `rounded`'s do, up to kRoundingReach
-// times the largest of their errors and of `nudged`'s, the receivers of a
-// screen_uv interpolated a few ulps off the pixel's centre (on lavapipe,
-// up to twice), or of one float32 ulp where all of them round to `exact`.
-// The bounds are `exact` moved that far. A technique without receiver_plane
-// reads each pixel's receiver alone, which lies in the box whose eight
-// corners (each channel moved up or down) bound it. receiver_plane's slope
-// is a difference of neighbours, so its bounds take each mix of signs over
-// a 2x2 quad, which tilts the screen derivatives every way.
-std::vector<FloatImage> rounding_bounds(const Variant& variant, const FloatImage& exact,
-                                        std::span<const FloatImage> rounded,
-                                        std::span<const FloatImage> nudged) {
-  constexpr float kRoundingReach = 4.0f;
-  FloatImage reach(exact.width, exact.height, exact.channels);
-  for (std::size_t k = 0; k < exact.data.size(); ++k) {
-    reach.data[k] = std::abs(exact.data[k]) * 0x1p-23f;
-    for (std::span<const FloatImage> images : {rounded, nudged}) {
-      for (const FloatImage& r : images) {
-        reach.data[k] = std::max(reach.data[k], std::abs(r.data[k] - exact.data[k]));
+// A first-order bound on how far any float32 evaluation of the rebuilding
+// may put each receiver channel, whatever order or fusing a compiler
+// chooses: each four-term product of a matrix row (the matrix rounded to
+// float) within 5u of its terms' magnitudes, each quotient within 5u (2.5
+// ulp), u = 2^-24, and every input's error carried through.
+FloatImage rebuild_error_bound(const FloatImage& depth, const Matrix4& camera_inverse,
+                               const Matrix4& light, const LightClipDepth& light_depth,
+                               const DepthConvention& convention, double v_sign) {
+  constexpr double u = 0x1p-24;
+  using Vector = std::array<double, 4>;
+  // m v and its error, with `error` v's.
+  auto times = [&](const Matrix4& m, const Vector& v, const Vector& error) {
+    std::pair<Vector, Vector> out{};
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        out.first[r] += m[r][c] * v[c];
+        out.second[r] += 5.0 * u * std::abs(m[r][c] * v[c]) + std::abs(m[r][c]) * error[c];
       }
     }
-    reach.data[k] *= kRoundingReach;
-  }
-  // receiver_plane: bit q of `signs` is the sign of quad position
-  // q = (i % 2) + 2 (j % 2), and all alike (0 and 15) move no derivative;
-  // otherwise bit c is the sign of channel c.
-  const bool plane = variant.keys.receiver_plane.value_or(false);
-  const int first = plane ? 1 : 0;
-  const int last = plane ? 14 : (1 << exact.channels) - 1;
-  std::vector<FloatImage> out;
-  for (int signs = first; signs <= last; ++signs) {
-    FloatImage& bound = out.emplace_back(exact);
-    for (int j = 0; j < exact.height; ++j) {
-      for (int i = 0; i < exact.width; ++i) {
-        for (int c = 0; c < exact.channels; ++c) {
-          const int bit = plane ? (i % 2) + 2 * (j % 2) : c;
-          bound.at(i, j, c) += (signs >> bit) & 1 ? reach.at(i, j, c) : -reach.at(i, j, c);
-        }
+    return out;
+  };
+  // a / b and its error.
+  auto ratio = [&](double a, double ea, double b, double eb) {
+    const double q = a / b;
+    return std::pair{q, (ea + std::abs(q) * eb) / std::abs(b) + 5.0 * u * std::abs(q)};
+  };
+  FloatImage out(depth.width, depth.height, 3);
+  for (int j = 0; j < depth.height; ++j) {
+    for (int i = 0; i < depth.width; ++i) {
+      const double d = depth.at(i, j);
+      if (depth.at(i, j) == convention.clear) continue;
+      const double s = (i + 0.5) / depth.width, t = (j + 0.5) / depth.height;
+      const Vector clip{2.0 * s - 1.0, (t - 0.5) / v_sign, d * convention.a + convention.b, 1.0};
+      const Vector clip_error{u * std::abs(clip[0]), u * std::abs(clip[1]),
+                              2.0 * u * (std::abs(d * convention.a) + std::abs(convention.b)), 0.0};
+      const auto [world, world_error] = times(camera_inverse, clip, clip_error);
+      Vector point{}, point_error{};
+      for (int c = 0; c < 4; ++c) {
+        std::tie(point[c], point_error[c]) =
+            ratio(world[c], world_error[c], world[3], world_error[3]);
+      }
+      const auto [lit, lit_error] = times(light, point, point_error);
+      const auto [x, ex] = ratio(lit[0], lit_error[0], lit[3], lit_error[3]);
+      const auto [y, ey] = ratio(lit[1], lit_error[1], lit[3], lit_error[3]);
+      out.at(i, j, 0) = float(0.5 * ex + u * (0.5 + 0.5 * std::abs(x)));
+      out.at(i, j, 1) = float(std::abs(v_sign) * ey + u * (0.5 + std::abs(v_sign * y)));
+      if (!light_depth.orthographic) {
+        out.at(i, j, 2) = float(lit_error[3]);
+      } else {
+        const auto [z, ez] = ratio(lit[2], lit_error[2], lit[3], lit_error[3]);
+        const double spread = std::abs(light_depth.far_plane - light_depth.near_plane);
+        const double scale = light_depth.zero_to_one ? 1.0 : 0.5;
+        out.at(i, j, 2) =
+            float(scale * spread * ez +
+                  4.0 * u * (std::abs(light_depth.near_plane) + std::abs(light_depth.far_plane)));
       }
     }
   }
@@ -243,7 +261,10 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
                                                light_depth, convention, v_sign, Rounding::separate,
                                                nudge));
   }
-  for (FloatImage& bound : rounding_bounds(entry.variant, receivers, rounded, nudged)) {
+  const FloatImage error_bound = rebuild_error_bound(draw.camera_depth, camera_inverse, light,
+                                                     light_depth, convention, v_sign);
+  for (FloatImage& bound :
+       receiver_bounds(entry.variant, receivers, rounded, nudged, error_bound)) {
     rounded.push_back(std::move(bound));
   }
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,

@@ -1,5 +1,8 @@
 #include "penumbra/verify/function_form.hpp"
 
+#include <cmath>
+#include <vector>
+
 #include "backend.hpp"
 #include "camera_stage.hpp"
 #include "engine_shaders.hpp"
@@ -17,6 +20,32 @@ std::vector<std::array<float, 3>> stage_triangles(const reference::Stage& stage)
   const auto z = float(stage.scene.plane_z0);
   const std::array<float, 3> corners[] = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
   for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(corners[k]);
+  return out;
+}
+
+// How far the function's float32 clip_to_query() (common/light_clip.glsl)
+// may put each receiver channel from the one derived exactly from the
+// clip position it was called with (`clip`, as receivers_from_clip() takes
+// it): x / w within 2.5 ulp, then 0.5 + 0.5 ndc rounded, u = 2^-24; z_r is
+// w itself, or under an orthographic light the depth decoded from z / w,
+// within 16 u of n + f.
+FloatImage clip_error_bound(const FloatImage& clip, int w_channel, const LightClipDepth& depth) {
+  constexpr double u = 0x1p-24;
+  FloatImage out(clip.width, clip.height, 3);
+  for (int j = 0; j < clip.height; ++j) {
+    for (int i = 0; i < clip.width; ++i) {
+      const double w = depth.orthographic ? 1.0 : clip.at(i, j, w_channel);
+      if (!(clip.at(i, j, w_channel) > 0.0f)) continue;
+      for (int c = 0; c < 2; ++c) {
+        const double ndc = std::abs(clip.at(i, j, c) / w);
+        out.at(i, j, c) = float(2.5 * u * ndc + u * (0.5 + 0.5 * ndc));
+      }
+      out.at(i, j, 2) =
+          depth.orthographic
+              ? float(16.0 * u * (std::abs(depth.near_plane) + std::abs(depth.far_plane)))
+              : 0.0f;
+    }
+  }
   return out;
 }
 
@@ -59,8 +88,12 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
                       backend.draw_surface(draw, camera.fixture, check.execution));
   const FloatImage receivers = receivers_from_clip(
       drawn.clip, 3, traits(target).is_hlsl ? -0.5 : 0.5, draw.light_depth.orthographic);
+  // The function derived its receivers in float32: a back-projection's
+  // patches move with their last bits (g(z) grows near an occluder).
+  const std::vector<FloatImage> rounded = receiver_bounds(
+      entry.variant, receivers, {}, {}, clip_error_bound(drawn.clip, 3, draw.light_depth));
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,
-                             drawn.clip, 2));
+                             drawn.clip, 2, rounded));
   return check;
 }
 

@@ -90,7 +90,7 @@ Result<reference::ReferenceImage> reference_image(const Variant& variant, Target
   if (variant.technique != Technique::screen_blur) return expected;
   FloatImage blurred = reference::screen_blur(variant, expected.visibility, fixture.receivers);
   FloatImage none(blurred.width, blurred.height, 1);
-  return reference::ReferenceImage{std::move(blurred), std::move(none)};
+  return reference::ReferenceImage{blurred, std::move(none), blurred, blurred};
 }
 
 // `own_map`: the path's own map, when it draws one (SceneOutput).

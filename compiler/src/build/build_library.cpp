@@ -212,7 +212,7 @@ Result<CompiledFunction> compile_function(const Variant& variant, Target target,
                       "has no function form (technique " +
                           std::string(to_string(variant.technique)) +
                           " has none: docs/function-form.md); allowed: every technique but "
-                          "screen_blur, backprojection and bitmask_backprojection");
+                          "screen_blur");
   }
   if (!traits(target).is_text) {
     return make_error(Error::Kind::bad_input, "target " + std::string(to_string(target)),

@@ -153,6 +153,11 @@ Sample evaluate(const Variant& variant, const ShadowMapView& map, const LightPar
 struct ReferenceImage {
   FloatImage visibility;  // 1 channel, the receivers' size
   FloatImage ambiguous;   // 1 channel: the pixel's Ambiguity bits, 0 where decided
+  // 1 channel each: the visibility's range over the maps a GPU may in effect
+  // compare against (an encoded map's depths moved by their tie margin);
+  // the visibility itself for a linear map.
+  FloatImage low;
+  FloatImage high;
 };
 
 // Every pixel of `receivers` (3 or 4 channels: u, v, z_r) against
@@ -173,5 +178,13 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                       const FloatImage& receivers,
                                       const SamplingPrecision& precision = {},
                                       const ShaderLimits& limits = {});
+
+// The visibility alone of that evaluate_image() at the exactly decoded
+// depths: without the two evaluations its depth_tie marking takes.
+Result<FloatImage> evaluate_visibility(const Variant& variant, const FloatImage& stored,
+                                       const EncodedDepth& encoded, const LightParams& light,
+                                       const FloatImage& receivers,
+                                       const SamplingPrecision& precision = {},
+                                       const ShaderLimits& limits = {});
 
 }  // namespace penumbra::reference

@@ -78,19 +78,14 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
 {
     vec3 param = query;
     limit = backprojection_limit(param);
-    vec2 _828 = minmax_top_node();
-    float map_min = _828.x;
+    vec2 _807 = minmax_top_node();
+    float map_min = _807.x;
     vec3 param_1 = query;
     float param_2 = map_min * params.sampling.w;
     window = backprojection_window(param_1, param_2);
     vec4 param_3 = window;
     bool empty = minmax_window_empty(param_3);
     return (map_min < limit) && (!empty);
-}
-
-vec4 backprojection_slope(vec4 uv)
-{
-    return (uv - vec4(0.5)) * (params.light.y / params.light.z);
 }
 
 float minmax_level_spanning(vec4 window, float nodes)
@@ -142,8 +137,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _251 = shadow_texel(param);
-        float depth = _251;
+        float _248 = shadow_texel(param);
+        float depth = _248;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -155,8 +150,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _444 = minmax_node(param, param_1);
-    return _444;
+    vec2 _441 = minmax_node(param, param_1);
+    return _441;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -172,29 +167,23 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-vec4 backprojection_project(vec4 texels, float z, vec3 query, vec4 receiver_slope)
+float backprojection_to_slope()
+{
+    return params.light.y / params.light.z;
+}
+
+vec4 backprojection_project(vec4 texels, float z, vec3 query)
 {
     float param = z;
     float param_1 = query.z;
-    float gain = backprojection_gain(param, param_1);
+    float scale = backprojection_gain(param, param_1) * backprojection_to_slope();
     vec4 corners = vec4(texels.xy, texels.zw + vec2(1.0)) * params.shadow_map_size.zwzw;
-    vec4 param_2 = corners;
-    return (backprojection_slope(param_2) - receiver_slope) * gain;
+    return (corners - query.xyxy) * scale;
 }
 
 bool backprojection_touches(vec4 rect)
 {
-    bool _586 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _597;
-    if (_586)
-    {
-        _597 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
-    }
-    else
-    {
-        _597 = _586;
-    }
-    return _597;
+    return all(lessThanEqual(rect * vec4(1.0, 1.0, -1.0, -1.0), vec4(params.light.x)));
 }
 
 float backprojection_inside(vec4 rect)
@@ -219,16 +208,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _467;
+    vec2 _464;
     if (root)
     {
-        _467 = cursor.first_root;
+        _464 = cursor.first_root;
     }
     else
     {
-        _467 = floor(cursor.node * 0.5) * 2.0;
+        _464 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _467;
+    vec2 first_sibling = _464;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -270,11 +259,9 @@ bool backprojection_covered(float area)
 
 float backprojection_walk(vec3 query, vec4 window, float limit, inout float state)
 {
-    vec4 param = query.xyxy;
-    vec4 receiver_slope = backprojection_slope(param);
     float visits = 0.0;
-    vec4 param_1 = window;
-    MinmaxCursor cursor = minmax_begin(param_1);
+    vec4 param = window;
+    MinmaxCursor cursor = minmax_begin(param);
     for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
         for (int loop_middle = 0; all(bvec2(loop_middle < 129, !cursor.done)); loop_middle++)
@@ -286,69 +273,68 @@ float backprojection_walk(vec3 query, vec4 window, float limit, inout float stat
                 {
                     visits += 1.0;
                 }
-                bool _707 = !cursor.climbed;
-                bool _718;
-                if (_707)
+                bool _688 = !cursor.climbed;
+                bool _699;
+                if (_688)
                 {
-                    MinmaxCursor param_2 = cursor;
-                    vec4 param_3 = window;
-                    vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _718 = !minmax_window_empty(param_4);
+                    MinmaxCursor param_1 = cursor;
+                    vec4 param_2 = window;
+                    vec4 param_3 = minmax_node_part(param_1, param_2);
+                    _699 = !minmax_window_empty(param_3);
                 }
                 else
                 {
-                    _718 = _707;
+                    _699 = _688;
                 }
-                if (_718)
+                if (_699)
                 {
+                    MinmaxCursor param_4 = cursor;
+                    vec2 _705 = minmax_cursor_read(param_4);
+                    vec2 range = _705;
                     MinmaxCursor param_5 = cursor;
-                    vec2 _724 = minmax_cursor_read(param_5);
-                    vec2 range = _724;
-                    MinmaxCursor param_6 = cursor;
-                    vec4 texels = minmax_node_texels(param_6);
-                    vec4 param_7 = texels;
-                    float param_8 = range.x * params.sampling.w;
-                    vec3 param_9 = query;
-                    vec4 param_10 = receiver_slope;
-                    vec4 rect = backprojection_project(param_7, param_8, param_9, param_10);
-                    vec4 param_11 = rect;
-                    bool touches = backprojection_touches(param_11);
+                    vec4 texels = minmax_node_texels(param_5);
+                    vec4 param_6 = texels;
+                    float param_7 = range.x * params.sampling.w;
+                    vec3 param_8 = query;
+                    vec4 rect = backprojection_project(param_6, param_7, param_8);
+                    vec4 param_9 = rect;
+                    bool touches = backprojection_touches(param_9);
                     if ((range.x < limit) && touches)
                     {
-                        bool _759 = range.y < limit;
-                        bool _767;
-                        if (_759)
+                        bool _738 = range.y < limit;
+                        bool _746;
+                        if (_738)
                         {
-                            _767 = range.x == range.y;
+                            _746 = range.x == range.y;
                         }
                         else
                         {
-                            _767 = _759;
+                            _746 = _738;
                         }
-                        bool one_patch = _767;
+                        bool one_patch = _746;
                         descend = !one_patch;
                         if (one_patch)
                         {
-                            float param_12 = state;
-                            vec4 param_13 = rect;
-                            state = backprojection_add(param_12, param_13);
+                            float param_10 = state;
+                            vec4 param_11 = rect;
+                            state = backprojection_add(param_10, param_11);
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_14 = cursor;
-                    minmax_descend(param_14);
-                    cursor = param_14;
+                    MinmaxCursor param_12 = cursor;
+                    minmax_descend(param_12);
+                    cursor = param_12;
                 }
                 else
                 {
-                    MinmaxCursor param_15 = cursor;
-                    minmax_next(param_15);
-                    cursor = param_15;
+                    MinmaxCursor param_13 = cursor;
+                    minmax_next(param_13);
+                    cursor = param_13;
                 }
-                float param_16 = state;
-                bool covered = backprojection_covered(param_16);
+                float param_14 = state;
+                bool covered = backprojection_covered(param_14);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0);
             }
         }
@@ -362,16 +348,16 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _862 = shadow_compare_point(param, param_1);
-        return _862;
+        float _841 = shadow_compare_point(param, param_1);
+        return _841;
     }
     vec3 param_2 = query;
     float param_3;
     vec4 param_4;
-    bool _870 = backprojection_start(param_2, param_3, param_4);
+    bool _849 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     vec4 window = param_4;
-    if (!_870)
+    if (!_849)
     {
         return 1.0;
     }
@@ -379,8 +365,8 @@ float shadow_visibility(vec3 query)
     vec4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0;
-    float _885 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _885;
+    float _864 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _864;
     return max(0.0, 1.0 - (area / backprojection_whole_light_area()));
 }
 
@@ -391,8 +377,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _910 = shadow_visibility(param);
-    return _910;
+    float _889 = shadow_visibility(param);
+    return _889;
 }
 
 void main()
@@ -401,8 +387,8 @@ void main()
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
     vec2 param_1 = floor(screen_uv * params.screen_size.xy);
-    float _931 = receiver_visibility(param, param_1);
-    float visible = _931;
+    float _910 = receiver_visibility(param, param_1);
+    float visible = _910;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

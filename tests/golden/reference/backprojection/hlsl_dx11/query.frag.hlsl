@@ -88,19 +88,14 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _828 = minmax_top_node();
-    float map_min = _828.x;
+    float2 _807 = minmax_top_node();
+    float map_min = _807.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
     float4 param_3 = window;
     bool empty = minmax_window_empty(param_3);
     return (map_min < limit) && (!empty);
-}
-
-float4 backprojection_slope(float4 uv)
-{
-    return (uv - 0.5f.xxxx) * (params_light.y / params_light.z);
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -153,8 +148,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _251 = shadow_texel(param);
-        float depth = _251;
+        float _248 = shadow_texel(param);
+        float depth = _248;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -166,8 +161,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _444 = minmax_node(param, param_1);
-    return _444;
+    float2 _441 = minmax_node(param, param_1);
+    return _441;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -183,31 +178,25 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-float4 backprojection_project(float4 texels, float z, float3 query, float4 receiver_slope)
+float backprojection_to_slope()
+{
+    return params_light.y / params_light.z;
+}
+
+float4 backprojection_project(float4 texels, float z, float3 query)
 {
     float param = z;
     float param_1 = query.z;
-    float gain = backprojection_gain(param, param_1);
+    float scale = backprojection_gain(param, param_1) * backprojection_to_slope();
     float4 corners = float4(texels.xy, texels.zw + 1.0f.xx) * params_shadow_map_size.zwzw;
-    float4 param_2 = corners;
-    return (backprojection_slope(param_2) - receiver_slope) * gain;
+    return (corners - query.xyxy) * scale;
 }
 
 bool backprojection_touches(float4 rect)
 {
-    float2 _584 = params_light.x.xx;
-    bool _586 = all(bool2(rect.xy.x <= _584.x, rect.xy.y <= _584.y));
-    bool _597;
-    if (_586)
-    {
-        float2 _594 = (-params_light.x).xx;
-        _597 = all(bool2(rect.zw.x >= _594.x, rect.zw.y >= _594.y));
-    }
-    else
-    {
-        _597 = _586;
-    }
-    return _597;
+    float4 _577 = rect * float4(1.0f, 1.0f, -1.0f, -1.0f);
+    float4 _580 = params_light.x.xxxx;
+    return all(bool4(_577.x <= _580.x, _577.y <= _580.y, _577.z <= _580.z, _577.w <= _580.w));
 }
 
 float backprojection_inside(float4 rect)
@@ -232,16 +221,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _467;
+    float2 _464;
     if (root)
     {
-        _467 = cursor.first_root;
+        _464 = cursor.first_root;
     }
     else
     {
-        _467 = floor(cursor.node * 0.5f) * 2.0f;
+        _464 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _467;
+    float2 first_sibling = _464;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -283,11 +272,9 @@ bool backprojection_covered(float area)
 
 float backprojection_walk(float3 query, float4 window, float limit, inout float state)
 {
-    float4 param = query.xyxy;
-    float4 receiver_slope = backprojection_slope(param);
     float visits = 0.0f;
-    float4 param_1 = window;
-    MinmaxCursor cursor = minmax_begin(param_1);
+    float4 param = window;
+    MinmaxCursor cursor = minmax_begin(param);
     [loop]
     for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
@@ -302,69 +289,68 @@ float backprojection_walk(float3 query, float4 window, float limit, inout float 
                 {
                     visits += 1.0f;
                 }
-                bool _707 = !cursor.climbed;
-                bool _718;
-                if (_707)
+                bool _688 = !cursor.climbed;
+                bool _699;
+                if (_688)
                 {
-                    MinmaxCursor param_2 = cursor;
-                    float4 param_3 = window;
-                    float4 param_4 = minmax_node_part(param_2, param_3);
-                    _718 = !minmax_window_empty(param_4);
+                    MinmaxCursor param_1 = cursor;
+                    float4 param_2 = window;
+                    float4 param_3 = minmax_node_part(param_1, param_2);
+                    _699 = !minmax_window_empty(param_3);
                 }
                 else
                 {
-                    _718 = _707;
+                    _699 = _688;
                 }
-                if (_718)
+                if (_699)
                 {
+                    MinmaxCursor param_4 = cursor;
+                    float2 _705 = minmax_cursor_read(param_4);
+                    float2 range = _705;
                     MinmaxCursor param_5 = cursor;
-                    float2 _724 = minmax_cursor_read(param_5);
-                    float2 range = _724;
-                    MinmaxCursor param_6 = cursor;
-                    float4 texels = minmax_node_texels(param_6);
-                    float4 param_7 = texels;
-                    float param_8 = range.x * params_sampling.w;
-                    float3 param_9 = query;
-                    float4 param_10 = receiver_slope;
-                    float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
-                    float4 param_11 = rect;
-                    bool touches = backprojection_touches(param_11);
+                    float4 texels = minmax_node_texels(param_5);
+                    float4 param_6 = texels;
+                    float param_7 = range.x * params_sampling.w;
+                    float3 param_8 = query;
+                    float4 rect = backprojection_project(param_6, param_7, param_8);
+                    float4 param_9 = rect;
+                    bool touches = backprojection_touches(param_9);
                     if ((range.x < limit) && touches)
                     {
-                        bool _759 = range.y < limit;
-                        bool _767;
-                        if (_759)
+                        bool _738 = range.y < limit;
+                        bool _746;
+                        if (_738)
                         {
-                            _767 = range.x == range.y;
+                            _746 = range.x == range.y;
                         }
                         else
                         {
-                            _767 = _759;
+                            _746 = _738;
                         }
-                        bool one_patch = _767;
+                        bool one_patch = _746;
                         descend = !one_patch;
                         if (one_patch)
                         {
-                            float param_12 = state;
-                            float4 param_13 = rect;
-                            state = backprojection_add(param_12, param_13);
+                            float param_10 = state;
+                            float4 param_11 = rect;
+                            state = backprojection_add(param_10, param_11);
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_14 = cursor;
-                    minmax_descend(param_14);
-                    cursor = param_14;
+                    MinmaxCursor param_12 = cursor;
+                    minmax_descend(param_12);
+                    cursor = param_12;
                 }
                 else
                 {
-                    MinmaxCursor param_15 = cursor;
-                    minmax_next(param_15);
-                    cursor = param_15;
+                    MinmaxCursor param_13 = cursor;
+                    minmax_next(param_13);
+                    cursor = param_13;
                 }
-                float param_16 = state;
-                bool covered = backprojection_covered(param_16);
+                float param_14 = state;
+                bool covered = backprojection_covered(param_14);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
@@ -378,16 +364,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _862 = shadow_compare_point(param, param_1);
-        return _862;
+        float _841 = shadow_compare_point(param, param_1);
+        return _841;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _870 = backprojection_start(param_2, param_3, param_4);
+    bool _849 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_870)
+    if (!_849)
     {
         return 1.0f;
     }
@@ -395,8 +381,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0f;
-    float _885 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _885;
+    float _864 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _864;
     return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
@@ -407,8 +393,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _910 = shadow_visibility(param);
-    return _910;
+    float _889 = shadow_visibility(param);
+    return _889;
 }
 
 void frag_main()
@@ -417,8 +403,8 @@ void frag_main()
     float3 query = receivers.SampleLevel(_receivers_sampler, screen_uv, 0.0f).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _931 = receiver_visibility(param, param_1);
-    float visible = _931;
+    float _910 = receiver_visibility(param, param_1);
+    float visible = _910;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

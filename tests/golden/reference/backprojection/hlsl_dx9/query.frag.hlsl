@@ -84,19 +84,14 @@ bool backprojection_start(float3 query, inout float limit, inout float4 window)
 {
     float3 param = query;
     limit = backprojection_limit(param);
-    float2 _854 = minmax_top_node();
-    float map_min = _854.x;
+    float2 _802 = minmax_top_node();
+    float map_min = _802.x;
     float3 param_1 = query;
     float param_2 = map_min * params_sampling.w;
     window = backprojection_window(param_1, param_2);
     float4 param_3 = window;
     bool empty = minmax_window_empty(param_3);
     return (map_min < limit) && (!empty);
-}
-
-float4 backprojection_slope(float4 uv)
-{
-    return (uv - 0.5f.xxxx) * (params_light.y / params_light.z);
 }
 
 float minmax_level_spanning(float4 window, float nodes)
@@ -149,8 +144,8 @@ float2 minmax_node(float level, float2 node)
     if (level < 0.5f)
     {
         float2 param = node;
-        float _254 = shadow_texel(param);
-        float depth = _254;
+        float _251 = shadow_texel(param);
+        float depth = _251;
         return float2(depth, depth);
     }
     penumbra_texel_reads += 1.0f;
@@ -162,8 +157,8 @@ float2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     float2 param_1 = cursor.node;
-    float2 _447 = minmax_node(param, param_1);
-    return _447;
+    float2 _444 = minmax_node(param, param_1);
+    return _444;
 }
 
 float4 minmax_node_texels(MinmaxCursor cursor)
@@ -179,31 +174,25 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-float4 backprojection_project(float4 texels, float z, float3 query, float4 receiver_slope)
+float backprojection_to_slope()
+{
+    return params_light.y / params_light.z;
+}
+
+float4 backprojection_project(float4 texels, float z, float3 query)
 {
     float param = z;
     float param_1 = query.z;
-    float gain = backprojection_gain(param, param_1);
+    float scale = backprojection_gain(param, param_1) * backprojection_to_slope();
     float4 corners = float4(texels.xy, texels.zw + 1.0f.xx) * params_shadow_map_size.zwzw;
-    float4 param_2 = corners;
-    return (backprojection_slope(param_2) - receiver_slope) * gain;
+    return (corners - query.xyxy) * scale;
 }
 
 bool backprojection_touches(float4 rect)
 {
-    float2 _587 = params_light.x.xx;
-    bool _589 = all(bool2(rect.xy.x <= _587.x, rect.xy.y <= _587.y));
-    bool _600;
-    if (_589)
-    {
-        float2 _597 = (-params_light.x).xx;
-        _600 = all(bool2(rect.zw.x >= _597.x, rect.zw.y >= _597.y));
-    }
-    else
-    {
-        _600 = _589;
-    }
-    return _600;
+    float4 _580 = rect * float4(1.0f, 1.0f, -1.0f, -1.0f);
+    float4 _583 = params_light.x.xxxx;
+    return all(bool4(_580.x <= _583.x, _580.y <= _583.y, _580.z <= _583.z, _580.w <= _583.w));
 }
 
 float backprojection_inside(float4 rect)
@@ -228,16 +217,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    float2 _470;
+    float2 _467;
     if (root)
     {
-        _470 = cursor.first_root;
+        _467 = cursor.first_root;
     }
     else
     {
-        _470 = floor(cursor.node * 0.5f) * 2.0f;
+        _467 = floor(cursor.node * 0.5f) * 2.0f;
     }
-    float2 first_sibling = _470;
+    float2 first_sibling = _467;
     float2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5f)
@@ -279,106 +268,95 @@ bool backprojection_covered(float area)
 
 float backprojection_walk(float3 query, float4 window, float limit, inout float state)
 {
-    float4 param = query.xyxy;
-    float4 receiver_slope = backprojection_slope(param);
     float visits = 0.0f;
-    float4 param_1 = window;
-    MinmaxCursor cursor = minmax_begin(param_1);
+    float4 param = window;
+    MinmaxCursor cursor = minmax_begin(param);
     float steps_to_end = 4.0f;
     float steps_left = 224.0f;
     [loop]
-    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    for (int loop_inner = 0; all(bool2(loop_inner < 224, !cursor.done)); loop_inner++)
     {
-        [loop]
-        for (int loop_middle = 0; all(bool2(loop_middle < 1, !cursor.done)); loop_middle++)
+        bool descend = false;
+        if (!cursor.climbed)
         {
-            [loop]
-            for (int loop_inner = 0; all(bool2(loop_inner < 224, !cursor.done)); loop_inner++)
+            visits += 1.0f;
+        }
+        steps_left -= 1.0f;
+        bool _669 = !cursor.climbed;
+        bool _680;
+        if (_669)
+        {
+            MinmaxCursor param_1 = cursor;
+            float4 param_2 = window;
+            float4 param_3 = minmax_node_part(param_1, param_2);
+            _680 = !minmax_window_empty(param_3);
+        }
+        else
+        {
+            _680 = _669;
+        }
+        if (_680)
+        {
+            MinmaxCursor param_4 = cursor;
+            float2 _686 = minmax_cursor_read(param_4);
+            float2 range = _686;
+            MinmaxCursor param_5 = cursor;
+            float4 texels = minmax_node_texels(param_5);
+            float4 param_6 = texels;
+            float param_7 = range.x * params_sampling.w;
+            float3 param_8 = query;
+            float4 rect = backprojection_project(param_6, param_7, param_8);
+            float4 param_9 = rect;
+            bool touches = backprojection_touches(param_9);
+            if ((range.x < limit) && touches)
             {
-                bool descend = false;
-                if (!cursor.climbed)
+                bool _719 = range.y < limit;
+                bool _727;
+                if (_719)
                 {
-                    visits += 1.0f;
-                }
-                steps_left -= 1.0f;
-                bool _714 = !cursor.climbed;
-                bool _725;
-                if (_714)
-                {
-                    MinmaxCursor param_2 = cursor;
-                    float4 param_3 = window;
-                    float4 param_4 = minmax_node_part(param_2, param_3);
-                    _725 = !minmax_window_empty(param_4);
+                    _727 = range.x == range.y;
                 }
                 else
                 {
-                    _725 = _714;
+                    _727 = _719;
                 }
-                if (_725)
+                bool one_patch = _727;
+                bool _729 = !one_patch;
+                bool _736;
+                if (_729)
                 {
-                    MinmaxCursor param_5 = cursor;
-                    float2 _731 = minmax_cursor_read(param_5);
-                    float2 range = _731;
-                    MinmaxCursor param_6 = cursor;
-                    float4 texels = minmax_node_texels(param_6);
-                    float4 param_7 = texels;
-                    float param_8 = range.x * params_sampling.w;
-                    float3 param_9 = query;
-                    float4 param_10 = receiver_slope;
-                    float4 rect = backprojection_project(param_7, param_8, param_9, param_10);
+                    _736 = steps_left >= (steps_to_end + 4.0f);
+                }
+                else
+                {
+                    _736 = _729;
+                }
+                descend = _736;
+                if (!descend)
+                {
+                    float param_10 = state;
                     float4 param_11 = rect;
-                    bool touches = backprojection_touches(param_11);
-                    if ((range.x < limit) && touches)
-                    {
-                        bool _766 = range.y < limit;
-                        bool _774;
-                        if (_766)
-                        {
-                            _774 = range.x == range.y;
-                        }
-                        else
-                        {
-                            _774 = _766;
-                        }
-                        bool one_patch = _774;
-                        bool _776 = !one_patch;
-                        bool _783;
-                        if (_776)
-                        {
-                            _783 = steps_left >= (steps_to_end + 4.0f);
-                        }
-                        else
-                        {
-                            _783 = _776;
-                        }
-                        descend = _783;
-                        if (!descend)
-                        {
-                            float param_12 = state;
-                            float4 param_13 = rect;
-                            float param_14 = (range.y < limit) ? 1.0f : 0.5f;
-                            state = backprojection_add_share(param_12, param_13, param_14);
-                        }
-                    }
+                    float param_12 = (range.y < limit) ? 1.0f : 0.5f;
+                    state = backprojection_add_share(param_10, param_11, param_12);
                 }
-                if (descend)
-                {
-                    MinmaxCursor param_15 = cursor;
-                    minmax_descend(param_15);
-                    cursor = param_15;
-                }
-                else
-                {
-                    MinmaxCursor param_16 = cursor;
-                    minmax_next(param_16);
-                    cursor = param_16;
-                }
-                steps_to_end += (descend ? 4.0f : (-1.0f));
-                float param_17 = state;
-                bool covered = backprojection_covered(param_17);
-                cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
             }
         }
+        if (descend)
+        {
+            MinmaxCursor param_13 = cursor;
+            minmax_descend(param_13);
+            cursor = param_13;
+        }
+        else
+        {
+            MinmaxCursor param_14 = cursor;
+            minmax_next(param_14);
+            cursor = param_14;
+        }
+        steps_to_end += (descend ? 4.0f : (-1.0f));
+        float param_15 = state;
+        bool covered = backprojection_covered(param_15);
+        cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
     }
     return state;
 }
@@ -389,16 +367,16 @@ float shadow_visibility(float3 query)
     {
         float2 param = query.xy;
         float param_1 = query.z;
-        float _888 = shadow_compare_point(param, param_1);
-        return _888;
+        float _836 = shadow_compare_point(param, param_1);
+        return _836;
     }
     float3 param_2 = query;
     float param_3;
     float4 param_4;
-    bool _896 = backprojection_start(param_2, param_3, param_4);
+    bool _844 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     float4 window = param_4;
-    if (!_896)
+    if (!_844)
     {
         return 1.0f;
     }
@@ -406,8 +384,8 @@ float shadow_visibility(float3 query)
     float4 param_6 = window;
     float param_7 = limit;
     float param_8 = 0.0f;
-    float _911 = backprojection_walk(param_5, param_6, param_7, param_8);
-    float area = _911;
+    float _859 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _859;
     return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
 }
 
@@ -418,8 +396,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _936 = shadow_visibility(param);
-    return _936;
+    float _884 = shadow_visibility(param);
+    return _884;
 }
 
 void frag_main()
@@ -428,8 +406,8 @@ void frag_main()
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _957 = receiver_visibility(param, param_1);
-    float visible = _957;
+    float _905 = receiver_visibility(param, param_1);
+    float visible = _905;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

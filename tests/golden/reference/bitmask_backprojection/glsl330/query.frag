@@ -96,19 +96,14 @@ bool backprojection_start(vec3 query, inout float limit, inout vec4 window)
 {
     vec3 param = query;
     limit = backprojection_limit(param);
-    vec2 _954 = minmax_top_node();
-    float map_min = _954.x;
+    vec2 _933 = minmax_top_node();
+    float map_min = _933.x;
     vec3 param_1 = query;
     float param_2 = map_min * params.sampling.w;
     window = backprojection_window(param_1, param_2);
     vec4 param_3 = window;
     bool empty = minmax_window_empty(param_3);
     return (map_min < limit) && (!empty);
-}
-
-vec4 backprojection_slope(vec4 uv)
-{
-    return (uv - vec4(0.5)) * (params.light.y / params.light.z);
 }
 
 float minmax_level_spanning(vec4 window, float nodes)
@@ -161,8 +156,8 @@ vec2 minmax_node(float level, vec2 node)
     if (level < 0.5)
     {
         vec2 param = node;
-        float _379 = shadow_texel(param);
-        float depth = _379;
+        float _377 = shadow_texel(param);
+        float depth = _377;
         return vec2(depth, depth);
     }
     penumbra_texel_reads += 1.0;
@@ -174,8 +169,8 @@ vec2 minmax_cursor_read(MinmaxCursor cursor)
 {
     float param = cursor.level;
     vec2 param_1 = cursor.node;
-    vec2 _571 = minmax_node(param, param_1);
-    return _571;
+    vec2 _569 = minmax_node(param, param_1);
+    return _569;
 }
 
 vec4 minmax_node_texels(MinmaxCursor cursor)
@@ -191,29 +186,23 @@ float backprojection_gain(float z, float z_receiver)
     return (z * z_receiver) / (z_receiver - z);
 }
 
-vec4 backprojection_project(vec4 texels, float z, vec3 query, vec4 receiver_slope)
+float backprojection_to_slope()
+{
+    return params.light.y / params.light.z;
+}
+
+vec4 backprojection_project(vec4 texels, float z, vec3 query)
 {
     float param = z;
     float param_1 = query.z;
-    float gain = backprojection_gain(param, param_1);
+    float scale = backprojection_gain(param, param_1) * backprojection_to_slope();
     vec4 corners = vec4(texels.xy, texels.zw + vec2(1.0)) * params.shadow_map_size.zwzw;
-    vec4 param_2 = corners;
-    return (backprojection_slope(param_2) - receiver_slope) * gain;
+    return (corners - query.xyxy) * scale;
 }
 
 bool backprojection_touches(vec4 rect)
 {
-    bool _713 = all(lessThanEqual(rect.xy, vec2(params.light.x)));
-    bool _724;
-    if (_713)
-    {
-        _724 = all(greaterThanEqual(rect.zw, vec2(-params.light.x)));
-    }
-    else
-    {
-        _724 = _713;
-    }
-    return _724;
+    return all(lessThanEqual(rect * vec4(1.0, 1.0, -1.0, -1.0), vec4(params.light.x)));
 }
 
 int bitmask_popcount(inout uint x)
@@ -246,8 +235,8 @@ BackprojectionState backprojection_add(inout BackprojectionState state, vec4 rec
         uint fresh = mask & (~state.rows[r]);
         state.rows[r] |= fresh;
         uint param = fresh;
-        int _356 = bitmask_popcount(param);
-        state.set += _356;
+        int _354 = bitmask_popcount(param);
+        state.set += _354;
     }
     return state;
 }
@@ -262,16 +251,16 @@ void minmax_descend(inout MinmaxCursor cursor)
 void minmax_next(inout MinmaxCursor cursor)
 {
     bool root = cursor.level >= cursor.start;
-    vec2 _594;
+    vec2 _592;
     if (root)
     {
-        _594 = cursor.first_root;
+        _592 = cursor.first_root;
     }
     else
     {
-        _594 = floor(cursor.node * 0.5) * 2.0;
+        _592 = floor(cursor.node * 0.5) * 2.0;
     }
-    vec2 first_sibling = _594;
+    vec2 first_sibling = _592;
     vec2 offset = cursor.node - first_sibling;
     cursor.climbed = false;
     if (offset.x < 0.5)
@@ -308,11 +297,9 @@ bool backprojection_covered(BackprojectionState state)
 
 BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit, inout BackprojectionState state)
 {
-    vec4 param = query.xyxy;
-    vec4 receiver_slope = backprojection_slope(param);
     float visits = 0.0;
-    vec4 param_1 = window;
-    MinmaxCursor cursor = minmax_begin(param_1);
+    vec4 param = window;
+    MinmaxCursor cursor = minmax_begin(param);
     SPIRV_CROSS_LOOP
     for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
     {
@@ -327,70 +314,69 @@ BackprojectionState backprojection_walk(vec3 query, vec4 window, float limit, in
                 {
                     visits += 1.0;
                 }
-                bool _833 = !cursor.climbed;
-                bool _844;
-                if (_833)
+                bool _814 = !cursor.climbed;
+                bool _825;
+                if (_814)
                 {
-                    MinmaxCursor param_2 = cursor;
-                    vec4 param_3 = window;
-                    vec4 param_4 = minmax_node_part(param_2, param_3);
-                    _844 = !minmax_window_empty(param_4);
+                    MinmaxCursor param_1 = cursor;
+                    vec4 param_2 = window;
+                    vec4 param_3 = minmax_node_part(param_1, param_2);
+                    _825 = !minmax_window_empty(param_3);
                 }
                 else
                 {
-                    _844 = _833;
+                    _825 = _814;
                 }
-                if (_844)
+                if (_825)
                 {
+                    MinmaxCursor param_4 = cursor;
+                    vec2 _831 = minmax_cursor_read(param_4);
+                    vec2 range = _831;
                     MinmaxCursor param_5 = cursor;
-                    vec2 _850 = minmax_cursor_read(param_5);
-                    vec2 range = _850;
-                    MinmaxCursor param_6 = cursor;
-                    vec4 texels = minmax_node_texels(param_6);
-                    vec4 param_7 = texels;
-                    float param_8 = range.x * params.sampling.w;
-                    vec3 param_9 = query;
-                    vec4 param_10 = receiver_slope;
-                    vec4 rect = backprojection_project(param_7, param_8, param_9, param_10);
-                    vec4 param_11 = rect;
-                    bool touches = backprojection_touches(param_11);
+                    vec4 texels = minmax_node_texels(param_5);
+                    vec4 param_6 = texels;
+                    float param_7 = range.x * params.sampling.w;
+                    vec3 param_8 = query;
+                    vec4 rect = backprojection_project(param_6, param_7, param_8);
+                    vec4 param_9 = rect;
+                    bool touches = backprojection_touches(param_9);
                     if ((range.x < limit) && touches)
                     {
-                        bool _885 = range.y < limit;
-                        bool _893;
-                        if (_885)
+                        bool _864 = range.y < limit;
+                        bool _872;
+                        if (_864)
                         {
-                            _893 = range.x == range.y;
+                            _872 = range.x == range.y;
                         }
                         else
                         {
-                            _893 = _885;
+                            _872 = _864;
                         }
-                        bool one_patch = _893;
+                        bool one_patch = _872;
                         descend = !one_patch;
                         if (one_patch)
                         {
-                            BackprojectionState param_12 = state;
-                            vec4 param_13 = rect;
-                            BackprojectionState _903 = backprojection_add(param_12, param_13);
-                            state = _903;
+                            BackprojectionState param_10 = state;
+                            vec4 param_11 = rect;
+                            BackprojectionState _882 = backprojection_add(param_10, param_11);
+                            state = _882;
                         }
                     }
                 }
                 if (descend)
                 {
-                    MinmaxCursor param_14 = cursor;
-                    minmax_descend(param_14);
-                    cursor = param_14;
+                    MinmaxCursor param_12 = cursor;
+                    minmax_descend(param_12);
+                    cursor = param_12;
                 }
                 else
                 {
-                    MinmaxCursor param_15 = cursor;
-                    minmax_next(param_15);
-                    cursor = param_15;
+                    MinmaxCursor param_13 = cursor;
+                    minmax_next(param_13);
+                    cursor = param_13;
                 }
-                BackprojectionState param_16 = state;
-                bool covered = backprojection_covered(param_16);
+                BackprojectionState param_14 = state;
+                bool covered = backprojection_covered(param_14);
                 cursor.done = (cursor.done || covered) || (visits >= 16384.0);
             }
         }
@@ -404,16 +390,16 @@ float shadow_visibility(vec3 query)
     {
         vec2 param = query.xy;
         float param_1 = query.z;
-        float _988 = shadow_compare_point(param, param_1);
-        return _988;
+        float _967 = shadow_compare_point(param, param_1);
+        return _967;
     }
     vec3 param_2 = query;
     float param_3;
     vec4 param_4;
-    bool _996 = backprojection_start(param_2, param_3, param_4);
+    bool _975 = backprojection_start(param_2, param_3, param_4);
     float limit = param_3;
     vec4 window = param_4;
-    if (!_996)
+    if (!_975)
     {
         return 1.0;
     }
@@ -428,8 +414,8 @@ float shadow_visibility(vec3 query)
     vec4 param_6 = window;
     float param_7 = limit;
     BackprojectionState param_8 = state;
-    BackprojectionState _1026 = backprojection_walk(param_5, param_6, param_7, param_8);
-    state = _1026;
+    BackprojectionState _1005 = backprojection_walk(param_5, param_6, param_7, param_8);
+    state = _1005;
     return 1.0 - (float(state.set) / 64.0);
 }
 
@@ -440,8 +426,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _1052 = shadow_visibility(param);
-    return _1052;
+    float _1031 = shadow_visibility(param);
+    return _1031;
 }
 
 void main()
@@ -450,8 +436,8 @@ void main()
     vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
     vec3 param = query;
     vec2 param_1 = floor(screen_uv * params.screen_size.xy);
-    float _1073 = receiver_visibility(param, param_1);
-    float visible = _1073;
+    float _1052 = receiver_visibility(param, param_1);
+    float visible = _1052;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

@@ -194,65 +194,59 @@ float minmax_pcf_count(vec2 first, float reference)
     }
     vec4 param_3 = window;
     MinmaxCursor cursor = minmax_begin(param_3);
-    for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
+    for (int loop_inner = 0; all(bvec2(loop_inner < 149, !cursor.done)); loop_inner++)
     {
-        for (int loop_middle = 0; all(bvec2(loop_middle < 1, !cursor.done)); loop_middle++)
+        MinmaxCursor param_4 = cursor;
+        vec4 param_5 = window;
+        vec4 part = minmax_node_part(param_4, param_5);
+        bool descend = false;
+        bool _445 = !cursor.climbed;
+        bool _452;
+        if (_445)
         {
-            for (int loop_inner = 0; all(bvec2(loop_inner < 149, !cursor.done)); loop_inner++)
+            vec4 param_6 = part;
+            _452 = !minmax_window_empty(param_6);
+        }
+        else
+        {
+            _452 = _445;
+        }
+        if (_452)
+        {
+            MinmaxCursor param_7 = cursor;
+            vec2 _458 = minmax_cursor_read(param_7);
+            vec2 range = _458;
+            if (range.y < reference)
             {
-                MinmaxCursor param_4 = cursor;
-                vec4 param_5 = window;
-                vec4 part = minmax_node_part(param_4, param_5);
-                bool descend = false;
-                bool _471 = !cursor.climbed;
-                bool _478;
-                if (_471)
-                {
-                    vec4 param_6 = part;
-                    _478 = !minmax_window_empty(param_6);
-                }
-                else
-                {
-                    _478 = _471;
-                }
-                if (_478)
-                {
-                    MinmaxCursor param_7 = cursor;
-                    vec2 _484 = minmax_cursor_read(param_7);
-                    vec2 range = _484;
-                    if (range.y < reference)
-                    {
-                        vec4 param_8 = part;
-                        count += minmax_texel_count(param_8);
-                    }
-                    else
-                    {
-                        bool _500 = reference > range.x;
-                        bool _506;
-                        if (_500)
-                        {
-                            _506 = cursor.level > 0.5;
-                        }
-                        else
-                        {
-                            _506 = _500;
-                        }
-                        descend = _506;
-                    }
-                }
-                if (descend)
-                {
-                    MinmaxCursor param_9 = cursor;
-                    minmax_descend(param_9);
-                    cursor = param_9;
-                }
-                else
-                {
-                    MinmaxCursor param_10 = cursor;
-                    minmax_next(param_10);
-                    cursor = param_10;
-                }
+                vec4 param_8 = part;
+                count += minmax_texel_count(param_8);
             }
+            else
+            {
+                bool _474 = reference > range.x;
+                bool _480;
+                if (_474)
+                {
+                    _480 = cursor.level > 0.5;
+                }
+                else
+                {
+                    _480 = _474;
+                }
+                descend = _480;
+            }
+        }
+        if (descend)
+        {
+            MinmaxCursor param_9 = cursor;
+            minmax_descend(param_9);
+            cursor = param_9;
+        }
+        else
+        {
+            MinmaxCursor param_10 = cursor;
+            minmax_next(param_10);
+            cursor = param_10;
         }
     }
     return count;
@@ -264,18 +258,18 @@ float shadow_visibility(vec3 query)
     float param = query.z;
     vec2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _547 = minmax_pcf_count(param_1, param_2);
-    float count = _547;
-    float _550;
+    float _517 = minmax_pcf_count(param_1, param_2);
+    float count = _517;
+    float _520;
     if (count > 0.0)
     {
-        _550 = (36.0 - count) * 0.02777777798473834991455078125;
+        _520 = (36.0 - count) * 0.02777777798473834991455078125;
     }
     else
     {
-        _550 = 1.0;
+        _520 = 1.0;
     }
-    return _550;
+    return _520;
 }
 
 float receiver_visibility(vec3 query, vec2 pixel)
@@ -285,8 +279,8 @@ float receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _579 = shadow_visibility(param);
-    return _579;
+    float _549 = shadow_visibility(param);
+    return _549;
 }
 
 void main()
@@ -305,8 +299,8 @@ void main()
     }
     vec3 param_1 = query;
     vec2 param_2 = floor(screen_uv * params.screen_size.xy);
-    float _729 = receiver_visibility(param_1, param_2);
-    float visible = _729;
+    float _699 = receiver_visibility(param_1, param_2);
+    float visible = _699;
     visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }
 

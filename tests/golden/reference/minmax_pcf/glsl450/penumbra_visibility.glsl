@@ -178,65 +178,59 @@ float penumbra_minmax_pcf_count(vec2 first, float reference)
     }
     vec4 param_3 = window;
     penumbra_MinmaxCursor cursor = penumbra_minmax_begin(param_3);
-    for (int loop_outer = 0; all(bvec2(loop_outer < 1, !cursor.done)); loop_outer++)
+    for (int loop_inner = 0; all(bvec2(loop_inner < 149, !cursor.done)); loop_inner++)
     {
-        for (int loop_middle = 0; all(bvec2(loop_middle < 1, !cursor.done)); loop_middle++)
+        penumbra_MinmaxCursor param_4 = cursor;
+        vec4 param_5 = window;
+        vec4 part = penumbra_minmax_node_part(param_4, param_5);
+        bool descend = false;
+        bool _448 = !cursor.climbed;
+        bool _455;
+        if (_448)
         {
-            for (int loop_inner = 0; all(bvec2(loop_inner < 149, !cursor.done)); loop_inner++)
+            vec4 param_6 = part;
+            _455 = !penumbra_minmax_window_empty(param_6);
+        }
+        else
+        {
+            _455 = _448;
+        }
+        if (_455)
+        {
+            penumbra_MinmaxCursor param_7 = cursor;
+            vec2 _461 = penumbra_minmax_cursor_read(param_7);
+            vec2 range = _461;
+            if (range.y < reference)
             {
-                penumbra_MinmaxCursor param_4 = cursor;
-                vec4 param_5 = window;
-                vec4 part = penumbra_minmax_node_part(param_4, param_5);
-                bool descend = false;
-                bool _474 = !cursor.climbed;
-                bool _481;
-                if (_474)
-                {
-                    vec4 param_6 = part;
-                    _481 = !penumbra_minmax_window_empty(param_6);
-                }
-                else
-                {
-                    _481 = _474;
-                }
-                if (_481)
-                {
-                    penumbra_MinmaxCursor param_7 = cursor;
-                    vec2 _487 = penumbra_minmax_cursor_read(param_7);
-                    vec2 range = _487;
-                    if (range.y < reference)
-                    {
-                        vec4 param_8 = part;
-                        count += penumbra_minmax_texel_count(param_8);
-                    }
-                    else
-                    {
-                        bool _503 = reference > range.x;
-                        bool _509;
-                        if (_503)
-                        {
-                            _509 = cursor.level > 0.5;
-                        }
-                        else
-                        {
-                            _509 = _503;
-                        }
-                        descend = _509;
-                    }
-                }
-                if (descend)
-                {
-                    penumbra_MinmaxCursor param_9 = cursor;
-                    penumbra_minmax_descend(param_9);
-                    cursor = param_9;
-                }
-                else
-                {
-                    penumbra_MinmaxCursor param_10 = cursor;
-                    penumbra_minmax_next(param_10);
-                    cursor = param_10;
-                }
+                vec4 param_8 = part;
+                count += penumbra_minmax_texel_count(param_8);
             }
+            else
+            {
+                bool _477 = reference > range.x;
+                bool _483;
+                if (_477)
+                {
+                    _483 = cursor.level > 0.5;
+                }
+                else
+                {
+                    _483 = _477;
+                }
+                descend = _483;
+            }
+        }
+        if (descend)
+        {
+            penumbra_MinmaxCursor param_9 = cursor;
+            penumbra_minmax_descend(param_9);
+            cursor = param_9;
+        }
+        else
+        {
+            penumbra_MinmaxCursor param_10 = cursor;
+            penumbra_minmax_next(param_10);
+            cursor = param_10;
         }
     }
     return count;
@@ -248,18 +242,18 @@ float penumbra_shadow_visibility(vec3 query)
     float param = query.z;
     vec2 param_1 = first;
     float param_2 = penumbra_shadow_reference(param);
-    float _550 = penumbra_minmax_pcf_count(param_1, param_2);
-    float count = _550;
-    float _553;
+    float _520 = penumbra_minmax_pcf_count(param_1, param_2);
+    float count = _520;
+    float _523;
     if (count > 0.0)
     {
-        _553 = (36.0 - count) * 0.02777777798473834991455078125;
+        _523 = (36.0 - count) * 0.02777777798473834991455078125;
     }
     else
     {
-        _553 = 1.0;
+        _523 = 1.0;
     }
-    return _553;
+    return _523;
 }
 
 float penumbra_receiver_visibility(vec3 query, vec2 pixel)
@@ -269,8 +263,8 @@ float penumbra_receiver_visibility(vec3 query, vec2 pixel)
         return 1.0;
     }
     vec3 param = vec3(query.xy, min(query.z, 1152921504606846976.0));
-    float _582 = penumbra_shadow_visibility(param);
-    return _582;
+    float _552 = penumbra_shadow_visibility(param);
+    return _552;
 }
 
 float penumbra_visibility(vec4 light_clip_position)
@@ -281,6 +275,6 @@ float penumbra_visibility(vec4 light_clip_position)
     vec3 query = penumbra_clip_to_query(param);
     vec3 param_1 = query;
     vec2 param_2 = pixel;
-    float _614 = penumbra_receiver_visibility(param_1, param_2);
-    return _614;
+    float _584 = penumbra_receiver_visibility(param_1, param_2);
+    return _584;
 }

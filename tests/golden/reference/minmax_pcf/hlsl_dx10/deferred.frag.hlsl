@@ -206,67 +206,59 @@ float minmax_pcf_count(float2 first, float reference)
     float4 param_3 = window;
     MinmaxCursor cursor = minmax_begin(param_3);
     [loop]
-    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    for (int loop_inner = 0; all(bool2(loop_inner < 149, !cursor.done)); loop_inner++)
     {
-        [loop]
-        for (int loop_middle = 0; all(bool2(loop_middle < 1, !cursor.done)); loop_middle++)
+        MinmaxCursor param_4 = cursor;
+        float4 param_5 = window;
+        float4 part = minmax_node_part(param_4, param_5);
+        bool descend = false;
+        bool _445 = !cursor.climbed;
+        bool _452;
+        if (_445)
         {
-            [loop]
-            for (int loop_inner = 0; all(bool2(loop_inner < 149, !cursor.done)); loop_inner++)
+            float4 param_6 = part;
+            _452 = !minmax_window_empty(param_6);
+        }
+        else
+        {
+            _452 = _445;
+        }
+        if (_452)
+        {
+            MinmaxCursor param_7 = cursor;
+            float2 _458 = minmax_cursor_read(param_7);
+            float2 range = _458;
+            if (range.y < reference)
             {
-                MinmaxCursor param_4 = cursor;
-                float4 param_5 = window;
-                float4 part = minmax_node_part(param_4, param_5);
-                bool descend = false;
-                bool _471 = !cursor.climbed;
-                bool _478;
-                if (_471)
-                {
-                    float4 param_6 = part;
-                    _478 = !minmax_window_empty(param_6);
-                }
-                else
-                {
-                    _478 = _471;
-                }
-                if (_478)
-                {
-                    MinmaxCursor param_7 = cursor;
-                    float2 _484 = minmax_cursor_read(param_7);
-                    float2 range = _484;
-                    if (range.y < reference)
-                    {
-                        float4 param_8 = part;
-                        count += minmax_texel_count(param_8);
-                    }
-                    else
-                    {
-                        bool _500 = reference > range.x;
-                        bool _506;
-                        if (_500)
-                        {
-                            _506 = cursor.level > 0.5f;
-                        }
-                        else
-                        {
-                            _506 = _500;
-                        }
-                        descend = _506;
-                    }
-                }
-                if (descend)
-                {
-                    MinmaxCursor param_9 = cursor;
-                    minmax_descend(param_9);
-                    cursor = param_9;
-                }
-                else
-                {
-                    MinmaxCursor param_10 = cursor;
-                    minmax_next(param_10);
-                    cursor = param_10;
-                }
+                float4 param_8 = part;
+                count += minmax_texel_count(param_8);
             }
+            else
+            {
+                bool _474 = reference > range.x;
+                bool _480;
+                if (_474)
+                {
+                    _480 = cursor.level > 0.5f;
+                }
+                else
+                {
+                    _480 = _474;
+                }
+                descend = _480;
+            }
+        }
+        if (descend)
+        {
+            MinmaxCursor param_9 = cursor;
+            minmax_descend(param_9);
+            cursor = param_9;
+        }
+        else
+        {
+            MinmaxCursor param_10 = cursor;
+            minmax_next(param_10);
+            cursor = param_10;
         }
     }
     return count;
@@ -278,18 +270,18 @@ float shadow_visibility(float3 query)
     float param = query.z;
     float2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _547 = minmax_pcf_count(param_1, param_2);
-    float count = _547;
-    float _550;
+    float _517 = minmax_pcf_count(param_1, param_2);
+    float count = _517;
+    float _520;
     if (count > 0.0f)
     {
-        _550 = (36.0f - count) * 0.02777777798473834991455078125f;
+        _520 = (36.0f - count) * 0.02777777798473834991455078125f;
     }
     else
     {
-        _550 = 1.0f;
+        _520 = 1.0f;
     }
-    return _550;
+    return _520;
 }
 
 float receiver_visibility(float3 query, float2 pixel)
@@ -299,8 +291,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _579 = shadow_visibility(param);
-    return _579;
+    float _549 = shadow_visibility(param);
+    return _549;
 }
 
 void frag_main()
@@ -319,8 +311,8 @@ void frag_main()
     }
     float3 param_1 = query;
     float2 param_2 = floor(screen_uv * params_screen_size.xy);
-    float _730 = receiver_visibility(param_1, param_2);
-    float visible = _730;
+    float _700 = receiver_visibility(param_1, param_2);
+    float visible = _700;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

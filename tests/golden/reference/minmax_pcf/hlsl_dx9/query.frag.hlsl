@@ -187,67 +187,59 @@ float minmax_pcf_count(float2 first, float reference)
     float4 param_3 = window;
     MinmaxCursor cursor = minmax_begin(param_3);
     [loop]
-    for (int loop_outer = 0; all(bool2(loop_outer < 1, !cursor.done)); loop_outer++)
+    for (int loop_inner = 0; all(bool2(loop_inner < 149, !cursor.done)); loop_inner++)
     {
-        [loop]
-        for (int loop_middle = 0; all(bool2(loop_middle < 1, !cursor.done)); loop_middle++)
+        MinmaxCursor param_4 = cursor;
+        float4 param_5 = window;
+        float4 part = minmax_node_part(param_4, param_5);
+        bool descend = false;
+        bool _441 = !cursor.climbed;
+        bool _448;
+        if (_441)
         {
-            [loop]
-            for (int loop_inner = 0; all(bool2(loop_inner < 149, !cursor.done)); loop_inner++)
+            float4 param_6 = part;
+            _448 = !minmax_window_empty(param_6);
+        }
+        else
+        {
+            _448 = _441;
+        }
+        if (_448)
+        {
+            MinmaxCursor param_7 = cursor;
+            float2 _454 = minmax_cursor_read(param_7);
+            float2 range = _454;
+            if (range.y < reference)
             {
-                MinmaxCursor param_4 = cursor;
-                float4 param_5 = window;
-                float4 part = minmax_node_part(param_4, param_5);
-                bool descend = false;
-                bool _467 = !cursor.climbed;
-                bool _474;
-                if (_467)
-                {
-                    float4 param_6 = part;
-                    _474 = !minmax_window_empty(param_6);
-                }
-                else
-                {
-                    _474 = _467;
-                }
-                if (_474)
-                {
-                    MinmaxCursor param_7 = cursor;
-                    float2 _480 = minmax_cursor_read(param_7);
-                    float2 range = _480;
-                    if (range.y < reference)
-                    {
-                        float4 param_8 = part;
-                        count += minmax_texel_count(param_8);
-                    }
-                    else
-                    {
-                        bool _496 = reference > range.x;
-                        bool _502;
-                        if (_496)
-                        {
-                            _502 = cursor.level > 0.5f;
-                        }
-                        else
-                        {
-                            _502 = _496;
-                        }
-                        descend = _502;
-                    }
-                }
-                if (descend)
-                {
-                    MinmaxCursor param_9 = cursor;
-                    minmax_descend(param_9);
-                    cursor = param_9;
-                }
-                else
-                {
-                    MinmaxCursor param_10 = cursor;
-                    minmax_next(param_10);
-                    cursor = param_10;
-                }
+                float4 param_8 = part;
+                count += minmax_texel_count(param_8);
             }
+            else
+            {
+                bool _470 = reference > range.x;
+                bool _476;
+                if (_470)
+                {
+                    _476 = cursor.level > 0.5f;
+                }
+                else
+                {
+                    _476 = _470;
+                }
+                descend = _476;
+            }
+        }
+        if (descend)
+        {
+            MinmaxCursor param_9 = cursor;
+            minmax_descend(param_9);
+            cursor = param_9;
+        }
+        else
+        {
+            MinmaxCursor param_10 = cursor;
+            minmax_next(param_10);
+            cursor = param_10;
         }
     }
     return count;
@@ -259,18 +251,18 @@ float shadow_visibility(float3 query)
     float param = query.z;
     float2 param_1 = first;
     float param_2 = shadow_reference(param);
-    float _543 = minmax_pcf_count(param_1, param_2);
-    float count = _543;
-    float _546;
+    float _513 = minmax_pcf_count(param_1, param_2);
+    float count = _513;
+    float _516;
     if (count > 0.0f)
     {
-        _546 = (36.0f - count) * 0.02777777798473834991455078125f;
+        _516 = (36.0f - count) * 0.02777777798473834991455078125f;
     }
     else
     {
-        _546 = 1.0f;
+        _516 = 1.0f;
     }
-    return _546;
+    return _516;
 }
 
 float receiver_visibility(float3 query, float2 pixel)
@@ -280,8 +272,8 @@ float receiver_visibility(float3 query, float2 pixel)
         return 1.0f;
     }
     float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
-    float _575 = shadow_visibility(param);
-    return _575;
+    float _545 = shadow_visibility(param);
+    return _545;
 }
 
 void frag_main()
@@ -290,8 +282,8 @@ void frag_main()
     float3 query = tex2Dlod(receivers, float4(screen_uv, 0.0, 0.0f)).xyz;
     float3 param = query;
     float2 param_1 = floor(screen_uv * params_screen_size.xy);
-    float _596 = receiver_visibility(param, param_1);
-    float visible = _596;
+    float _566 = receiver_visibility(param, param_1);
+    float visible = _566;
     visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
 }
 

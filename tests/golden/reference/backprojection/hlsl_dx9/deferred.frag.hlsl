@@ -1,0 +1,446 @@
+struct MinmaxCursor
+{
+    float2 node;
+    float level;
+    float span;
+    float2 first_root;
+    float start;
+    bool climbed;
+    bool done;
+};
+
+// ShadowParams as Direct3D 9 constant registers
+uniform float4 params_shadow_map_size : register(c0);
+uniform float4 params_light : register(c1);
+uniform float4 params_sampling : register(c2);
+uniform float4 params_screen_size : register(c3);
+uniform float4 params_source_size : register(c4);
+uniform float4 params_minmax_info : register(c5);
+uniform float4 params_camera_inverse_0 : register(c6);
+uniform float4 params_camera_inverse_1 : register(c7);
+uniform float4 params_camera_inverse_2 : register(c8);
+uniform float4 params_camera_inverse_3 : register(c9);
+uniform float4 params_light_view_proj_0 : register(c10);
+uniform float4 params_light_view_proj_1 : register(c11);
+uniform float4 params_light_view_proj_2 : register(c12);
+uniform float4 params_light_view_proj_3 : register(c13);
+uniform float4 params_camera_depth_range : register(c14);
+
+
+uniform sampler2D shadow_depth : register(s1);
+uniform sampler2D shadow_minmax : register(s4);
+uniform sampler2D camera_depth : register(s10);
+
+static float2 screen_uv;
+static float4 visibility;
+
+struct SPIRV_Cross_Input
+{
+    float2 screen_uv : TEXCOORD0;
+};
+
+struct SPIRV_Cross_Output
+{
+    float4 visibility : COLOR0;
+};
+
+static float penumbra_texel_reads;
+
+float3 clip_to_query(float4 light_clip_position)
+{
+    float2 ndc = light_clip_position.xy / light_clip_position.w.xx;
+    return float3(0.5f + (0.5f * ndc.x), 0.5f + ((-0.5f) * ndc.y), light_clip_position.w);
+}
+
+float shadow_reference(float z_receiver)
+{
+    return (z_receiver - params_sampling.y) * params_sampling.z;
+}
+
+float shadow_compare_point(float2 uv, float z_receiver)
+{
+    penumbra_texel_reads += 1.0f;
+    float param = z_receiver;
+    return float(shadow_reference(param) <= tex2Dlod(shadow_depth, float4(uv, 0.0, 0.0f)).x);
+}
+
+float backprojection_limit(float3 query)
+{
+    float param = query.z;
+    return min(shadow_reference(param), query.z * params_sampling.z);
+}
+
+float2 minmax_top_node()
+{
+    penumbra_texel_reads += 1.0f;
+    return tex2Dlod(shadow_minmax, float4(0.5f.xx, 0.0, params_minmax_info.x - 1.0f)).xy;
+}
+
+float4 minmax_clip_window(float2 first, float2 last)
+{
+    return float4(max(first, 0.0f.xx), min(last, params_shadow_map_size.xy - 1.0f.xx));
+}
+
+float4 backprojection_window(float3 query, float z_min)
+{
+    float half_width = ((params_light.w * params_light.z) * (query.z - z_min)) / (query.z * z_min);
+    float2 map_size = params_shadow_map_size.xy;
+    float2 param = floor((query.xy - half_width.xx) * map_size) - 1.0f.xx;
+    float2 param_1 = floor((query.xy + half_width.xx) * map_size) + 1.0f.xx;
+    return minmax_clip_window(param, param_1);
+}
+
+bool minmax_window_empty(float4 window)
+{
+    return any(bool2(window.xy.x > window.zw.x, window.xy.y > window.zw.y));
+}
+
+bool backprojection_start(float3 query, inout float limit, inout float4 window)
+{
+    float3 param = query;
+    limit = backprojection_limit(param);
+    float2 _806 = minmax_top_node();
+    float map_min = _806.x;
+    float3 param_1 = query;
+    float param_2 = map_min * params_sampling.w;
+    window = backprojection_window(param_1, param_2);
+    float4 param_3 = window;
+    bool empty = minmax_window_empty(param_3);
+    return (map_min < limit) && (!empty);
+}
+
+float minmax_level_spanning(float4 window, float nodes)
+{
+    float level = 0.0f;
+    float inv_span = 1.0f;
+    [loop]
+    for (int k = 0; k < 16; k++)
+    {
+        float2 spanned = floor(window.zw * inv_span) - floor(window.xy * inv_span);
+        if (max(spanned.x, spanned.y) < nodes)
+        {
+            break;
+        }
+        level += 1.0f;
+        inv_span *= 0.5f;
+    }
+    return level;
+}
+
+MinmaxCursor minmax_begin(float4 window)
+{
+    float4 param = window;
+    float param_1 = 2.0f;
+    MinmaxCursor cursor;
+    cursor.level = minmax_level_spanning(param, param_1);
+    cursor.span = exp2(cursor.level);
+    cursor.start = cursor.level;
+    cursor.first_root = floor(window.xy / cursor.span.xx);
+    cursor.node = cursor.first_root;
+    cursor.climbed = false;
+    cursor.done = false;
+    return cursor;
+}
+
+float4 minmax_node_part(MinmaxCursor cursor, float4 window)
+{
+    float2 first = cursor.node * cursor.span;
+    return float4(max(first, window.xy), min((first + cursor.span.xx) - 1.0f.xx, window.zw));
+}
+
+float shadow_texel(float2 texel)
+{
+    penumbra_texel_reads += 1.0f;
+    return tex2Dlod(shadow_depth, float4((texel + 0.5f.xx) * params_shadow_map_size.zw, 0.0, 0.0f)).x;
+}
+
+float2 minmax_node(float level, float2 node)
+{
+    if (level < 0.5f)
+    {
+        float2 param = node;
+        float _255 = shadow_texel(param);
+        float depth = _255;
+        return float2(depth, depth);
+    }
+    penumbra_texel_reads += 1.0f;
+    float2 uv = (node + 0.5f.xx) * exp2(level - params_minmax_info.x);
+    return tex2Dlod(shadow_minmax, float4(uv, 0.0, level - 1.0f)).xy;
+}
+
+float2 minmax_cursor_read(MinmaxCursor cursor)
+{
+    float param = cursor.level;
+    float2 param_1 = cursor.node;
+    float2 _448 = minmax_node(param, param_1);
+    return _448;
+}
+
+float4 minmax_node_texels(MinmaxCursor cursor)
+{
+    float2 first = cursor.node * cursor.span;
+    float2 param = first;
+    float2 param_1 = (first + cursor.span.xx) - 1.0f.xx;
+    return minmax_clip_window(param, param_1);
+}
+
+float backprojection_gain(float z, float z_receiver)
+{
+    return (z * z_receiver) / (z_receiver - z);
+}
+
+float backprojection_to_slope()
+{
+    return params_light.y / params_light.z;
+}
+
+float4 backprojection_project(float4 texels, float z, float3 query)
+{
+    float param = z;
+    float param_1 = query.z;
+    float scale = backprojection_gain(param, param_1) * backprojection_to_slope();
+    float4 corners = float4(texels.xy, texels.zw + 1.0f.xx) * params_shadow_map_size.zwzw;
+    return (corners - query.xyxy) * scale;
+}
+
+bool backprojection_touches(float4 rect)
+{
+    float4 _584 = rect * float4(1.0f, 1.0f, -1.0f, -1.0f);
+    float4 _587 = params_light.x.xxxx;
+    return all(bool4(_584.x <= _587.x, _584.y <= _587.y, _584.z <= _587.z, _584.w <= _587.w));
+}
+
+float backprojection_inside(float4 rect)
+{
+    float2 size = max(min(rect.zw, params_light.x.xx) - max(rect.xy, (-params_light.x).xx), 0.0f.xx);
+    return size.x * size.y;
+}
+
+float backprojection_add_share(float area, float4 rect, float share)
+{
+    float4 param = rect;
+    return area + (share * backprojection_inside(param));
+}
+
+void minmax_descend(inout MinmaxCursor cursor)
+{
+    cursor.node *= 2.0f;
+    cursor.level -= 1.0f;
+    cursor.span *= 0.5f;
+}
+
+void minmax_next(inout MinmaxCursor cursor)
+{
+    bool root = cursor.level >= cursor.start;
+    float2 _471;
+    if (root)
+    {
+        _471 = cursor.first_root;
+    }
+    else
+    {
+        _471 = floor(cursor.node * 0.5f) * 2.0f;
+    }
+    float2 first_sibling = _471;
+    float2 offset = cursor.node - first_sibling;
+    cursor.climbed = false;
+    if (offset.x < 0.5f)
+    {
+        cursor.node.x += 1.0f;
+    }
+    else
+    {
+        if (offset.y < 0.5f)
+        {
+            cursor.node = float2(first_sibling.x, cursor.node.y + 1.0f);
+        }
+        else
+        {
+            if (root)
+            {
+                cursor.done = true;
+            }
+            else
+            {
+                cursor.node = floor(cursor.node * 0.5f);
+                cursor.level += 1.0f;
+                cursor.span *= 2.0f;
+                cursor.climbed = true;
+            }
+        }
+    }
+}
+
+float backprojection_whole_light_area()
+{
+    return (4.0f * params_light.x) * params_light.x;
+}
+
+bool backprojection_covered(float area)
+{
+    return area >= backprojection_whole_light_area();
+}
+
+float backprojection_walk(float3 query, float4 window, float limit, inout float state)
+{
+    float visits = 0.0f;
+    float4 param = window;
+    MinmaxCursor cursor = minmax_begin(param);
+    float steps_to_end = 4.0f;
+    float steps_left = 224.0f;
+    [loop]
+    for (int loop_inner = 0; all(bool2(loop_inner < 224, !cursor.done)); loop_inner++)
+    {
+        bool descend = false;
+        if (!cursor.climbed)
+        {
+            visits += 1.0f;
+        }
+        steps_left -= 1.0f;
+        bool _673 = !cursor.climbed;
+        bool _684;
+        if (_673)
+        {
+            MinmaxCursor param_1 = cursor;
+            float4 param_2 = window;
+            float4 param_3 = minmax_node_part(param_1, param_2);
+            _684 = !minmax_window_empty(param_3);
+        }
+        else
+        {
+            _684 = _673;
+        }
+        if (_684)
+        {
+            MinmaxCursor param_4 = cursor;
+            float2 _690 = minmax_cursor_read(param_4);
+            float2 range = _690;
+            MinmaxCursor param_5 = cursor;
+            float4 texels = minmax_node_texels(param_5);
+            float4 param_6 = texels;
+            float param_7 = range.x * params_sampling.w;
+            float3 param_8 = query;
+            float4 rect = backprojection_project(param_6, param_7, param_8);
+            float4 param_9 = rect;
+            bool touches = backprojection_touches(param_9);
+            if ((range.x < limit) && touches)
+            {
+                bool _723 = range.y < limit;
+                bool _731;
+                if (_723)
+                {
+                    _731 = range.x == range.y;
+                }
+                else
+                {
+                    _731 = _723;
+                }
+                bool one_patch = _731;
+                bool _733 = !one_patch;
+                bool _740;
+                if (_733)
+                {
+                    _740 = steps_left >= (steps_to_end + 4.0f);
+                }
+                else
+                {
+                    _740 = _733;
+                }
+                descend = _740;
+                if (!descend)
+                {
+                    float param_10 = state;
+                    float4 param_11 = rect;
+                    float param_12 = (range.y < limit) ? 1.0f : 0.5f;
+                    state = backprojection_add_share(param_10, param_11, param_12);
+                }
+            }
+        }
+        if (descend)
+        {
+            MinmaxCursor param_13 = cursor;
+            minmax_descend(param_13);
+            cursor = param_13;
+        }
+        else
+        {
+            MinmaxCursor param_14 = cursor;
+            minmax_next(param_14);
+            cursor = param_14;
+        }
+        steps_to_end += (descend ? 4.0f : (-1.0f));
+        float param_15 = state;
+        bool covered = backprojection_covered(param_15);
+        cursor.done = (cursor.done || covered) || (visits >= 16384.0f);
+    }
+    return state;
+}
+
+float shadow_visibility(float3 query)
+{
+    if (!(params_light.x > 0.0f))
+    {
+        float2 param = query.xy;
+        float param_1 = query.z;
+        float _840 = shadow_compare_point(param, param_1);
+        return _840;
+    }
+    float3 param_2 = query;
+    float param_3;
+    float4 param_4;
+    bool _848 = backprojection_start(param_2, param_3, param_4);
+    float limit = param_3;
+    float4 window = param_4;
+    if (!_848)
+    {
+        return 1.0f;
+    }
+    float3 param_5 = query;
+    float4 param_6 = window;
+    float param_7 = limit;
+    float param_8 = 0.0f;
+    float _863 = backprojection_walk(param_5, param_6, param_7, param_8);
+    float area = _863;
+    return max(0.0f, 1.0f - (area / backprojection_whole_light_area()));
+}
+
+float receiver_visibility(float3 query, float2 pixel)
+{
+    if (!(query.z > 0.0f))
+    {
+        return 1.0f;
+    }
+    float3 param = float3(query.xy, min(query.z, 1152921504606846976.0f));
+    float _888 = shadow_visibility(param);
+    return _888;
+}
+
+void frag_main()
+{
+    penumbra_texel_reads = 0.0f;
+    float depth = tex2Dlod(camera_depth, float4(screen_uv, 0.0, 0.0f)).x;
+    float4 clip = float4((2.0f * screen_uv.x) - 1.0f, (screen_uv.y - 0.5f) / (-0.5f), (depth * params_camera_depth_range.x) + params_camera_depth_range.y, 1.0f);
+    float4x4 camera_inverse = float4x4(float4(params_camera_inverse_0), float4(params_camera_inverse_1), float4(params_camera_inverse_2), float4(params_camera_inverse_3));
+    float4x4 light_view_proj = float4x4(float4(params_light_view_proj_0), float4(params_light_view_proj_1), float4(params_light_view_proj_2), float4(params_light_view_proj_3));
+    float4 world = mul(clip, camera_inverse);
+    float4 param = mul(world / world.w.xxxx, light_view_proj);
+    float3 query = clip_to_query(param);
+    if (depth == params_camera_depth_range.z)
+    {
+        query = float3(0.5f, 0.5f, 0.0f);
+    }
+    float3 param_1 = query;
+    float2 param_2 = floor(screen_uv * params_screen_size.xy);
+    float _1039 = receiver_visibility(param_1, param_2);
+    float visible = _1039;
+    visibility = float4(visible, penumbra_texel_reads, 0.0f, 0.0f);
+}
+
+SPIRV_Cross_Output main(SPIRV_Cross_Input stage_input)
+{
+    screen_uv = stage_input.screen_uv;
+    frag_main();
+    SPIRV_Cross_Output stage_output;
+    stage_output.visibility = float4(visibility);
+    return stage_output;
+}
