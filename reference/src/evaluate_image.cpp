@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,12 +46,7 @@ Sample with_depth_slope(Evaluate evaluate_at, const Query& query, const FloatIma
   return first;
 }
 
-Status check_inputs(const FloatImage& shadow_map, const FloatImage& receivers) {
-  if (shadow_map.channels != 1 || shadow_map.pixel_count() == 0) {
-    return make_error(Error::Kind::bad_input, "shadow map",
-                      "needs a non-empty 1-channel image of depth, got " +
-                          std::to_string(shadow_map.channels) + " channels");
-  }
+Status check_receivers(const FloatImage& receivers) {
   if ((receivers.channels != 3 && receivers.channels != 4) || receivers.pixel_count() == 0) {
     return make_error(Error::Kind::bad_input, "receivers",
                       "needs a non-empty 3- or 4-channel image (u, v, z_r), got " +
@@ -59,28 +55,66 @@ Status check_inputs(const FloatImage& shadow_map, const FloatImage& receivers) {
   return {};
 }
 
+Status check_inputs(const FloatImage& shadow_map, const FloatImage& receivers) {
+  if (shadow_map.channels != 1 || shadow_map.pixel_count() == 0) {
+    return make_error(Error::Kind::bad_input, "shadow map",
+                      "needs a non-empty 1-channel image of depth, got " +
+                          std::to_string(shadow_map.channels) + " channels");
+  }
+  return check_receivers(receivers);
+}
+
+// Evaluates pixels of `receivers` against `map`, the inputs checked.
+class PixelEvaluator {
+ public:
+  PixelEvaluator(const Variant& variant, const ShadowMapView& map, const LightParams& light,
+                 const FloatImage& receivers, const SamplingPrecision& precision,
+                 const ShaderLimits& limits)
+      : variant_(variant),
+        map_(map),
+        light_(light),
+        receivers_(receivers),
+        precision_(precision),
+        limits_(limits),
+        plane_(variant.keys.receiver_plane.value_or(false)),
+        tol_(tolerance(variant.technique, precision)) {
+    // Built once for the image, and only for a technique whose reference reads it.
+    if (reference_reads_mip(variant.technique)) mip_.emplace(map);
+  }
+
+  Sample operator()(int i, int j) const {
+    const Query query{receivers_.at(i, j, 0), receivers_.at(i, j, 1), receivers_.at(i, j, 2), i, j};
+    const auto evaluate_at = [&](const Query& q) {
+      return mip_ ? evaluate(variant_, map_, *mip_, light_, q, precision_, limits_)
+                  : evaluate(variant_, map_, light_, q, precision_, limits_);
+    };
+    return plane_ ? with_depth_slope(evaluate_at, query, receivers_, i, j, light_, tol_)
+                  : evaluate_at(query);
+  }
+
+ private:
+  const Variant& variant_;
+  const ShadowMapView& map_;
+  const LightParams& light_;
+  const FloatImage& receivers_;
+  const SamplingPrecision& precision_;
+  const ShaderLimits& limits_;
+  bool plane_;
+  double tol_;
+  std::optional<MinMaxMip> mip_;
+};
+
 // Every receiver against `map`, the inputs checked.
 ReferenceImage evaluate_view(const Variant& variant, const ShadowMapView& map,
                              const LightParams& light, const FloatImage& receivers,
                              const SamplingPrecision& precision, const ShaderLimits& limits) {
-  // Built once for the image, and only for a technique whose reference reads it.
-  std::optional<MinMaxMip> mip;
-  if (reference_reads_mip(variant.technique)) mip.emplace(map);
-  const bool plane = variant.keys.receiver_plane.value_or(false);
-  const double tol = tolerance(variant.technique, precision);
+  const PixelEvaluator sample_at(variant, map, light, receivers, precision, limits);
   ReferenceImage result{FloatImage(receivers.width, receivers.height, 1),
                         FloatImage(receivers.width, receivers.height, 1), FloatImage(),
                         FloatImage()};
   tbb::parallel_for(0, receivers.height, [&](int j) {
     for (int i = 0; i < receivers.width; ++i) {
-      const Query query{receivers.at(i, j, 0), receivers.at(i, j, 1), receivers.at(i, j, 2), i, j};
-      const auto evaluate_at = [&](const Query& q) {
-        return mip ? evaluate(variant, map, *mip, light, q, precision, limits)
-                   : evaluate(variant, map, light, q, precision, limits);
-      };
-      const Sample sample = plane
-                                ? with_depth_slope(evaluate_at, query, receivers, i, j, light, tol)
-                                : evaluate_at(query);
+      const Sample sample = sample_at(i, j);
       result.visibility.at(i, j) = float(sample.visibility);
       result.ambiguous.at(i, j) = float(std::uint16_t(sample.ambiguous));
     }
@@ -132,15 +166,33 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
   return result;
 }
 
-Result<FloatImage> evaluate_visibility(const Variant& variant, const FloatImage& stored,
-                                       const EncodedDepth& encoded, const LightParams& light,
-                                       const FloatImage& receivers,
+Result<FloatImage> evaluate_visibility(const Variant& variant, const ShadowMapView& map,
+                                       const LightParams& light, const FloatImage& receivers,
+                                       std::span<const std::size_t> pixels,
                                        const SamplingPrecision& precision,
                                        const ShaderLimits& limits) {
   PENUMBRA_TRY(check_variant(variant));
-  PENUMBRA_TRY(check_inputs(stored, receivers));
-  return evaluate_view(variant, ShadowMapView(stored, encoded), light, receivers, precision, limits)
-      .visibility;
+  if (map.width() == 0 || map.height() == 0) {
+    return make_error(Error::Kind::bad_input, "shadow map", "needs a non-empty image of depth");
+  }
+  PENUMBRA_TRY(check_receivers(receivers));
+  for (const std::size_t k : pixels) {
+    if (k >= receivers.pixel_count()) {
+      return make_error(Error::Kind::bad_input, "pixels",
+                        "index " + std::to_string(k) + " is outside the " +
+                            std::to_string(receivers.pixel_count()) + "-pixel receivers image");
+    }
+  }
+  FloatImage out(receivers.width, receivers.height, 1);
+  if (pixels.empty()) return out;
+  const PixelEvaluator sample_at(variant, map, light, receivers, precision, limits);
+  tbb::parallel_for(std::size_t(0), pixels.size(), [&](std::size_t n) {
+    const std::size_t k = pixels[n];
+    out.data[k] = float(
+        sample_at(int(k % std::size_t(receivers.width)), int(k / std::size_t(receivers.width)))
+            .visibility);
+  });
+  return out;
 }
 
 }  // namespace penumbra::reference

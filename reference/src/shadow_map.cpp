@@ -1,5 +1,11 @@
 #include "penumbra/reference/shadow_map.hpp"
 
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
+
 namespace penumbra::reference {
 
 double tie_margin(const EncodedDepth& encoded, double z) {
@@ -7,6 +13,18 @@ double tie_margin(const EncodedDepth& encoded, double z) {
   constexpr double kReceiverReach = 0x1p-22;  // 4 ulp of z
   const double stored_reach = kStoredReach + depth_step(encoded.format);
   return stored_reach * depth_per_unit(encoded.encoding, z, encoded.range) + kReceiverReach * z;
+}
+
+ShadowMapView::ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded, int shift)
+    : width_(stored.width), height_(stored.height) {
+  std::vector<double> depths(stored.pixel_count());
+  for (std::size_t k = 0; k < depths.size(); ++k) {
+    const double d = stored.data[k * std::size_t(stored.channels)];
+    const double z = std::isnan(d) ? std::numeric_limits<double>::infinity()
+                                   : decode_depth(encoded.encoding, d, encoded.range);
+    depths[k] = std::isfinite(z) ? z + shift * tie_margin(encoded, z) : z;
+  }
+  decoded_ = std::make_shared<const std::vector<double>>(std::move(depths));
 }
 
 }  // namespace penumbra::reference

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
-#include <optional>
+#include <memory>
+#include <vector>
 
 #include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/map_encoding.hpp"
@@ -33,33 +35,32 @@ double tie_margin(const EncodedDepth& encoded, double z);
 class ShadowMapView {
  public:
   // Reads channel 0 of `depth`, linear z; the image must outlive the view.
-  explicit ShadowMapView(const FloatImage& depth) : image_(&depth) {}
+  explicit ShadowMapView(const FloatImage& depth)
+      : image_(&depth), width_(depth.width), height_(depth.height) {}
   // Reads channel 0 of `stored`, values in `encoded`'s encoding, each
   // decoded depth moved `shift` (-1, 0 or +1) tie_margin()s away from the
-  // light, to find the receivers a shader's rounding decides.
-  ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded, int shift = 0)
-      : image_(&stored), encoded_(encoded), shift_(shift) {}
+  // light, to find the receivers a shader's rounding decides. Decodes every
+  // texel once, here: the reference reads each many times.
+  ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded, int shift = 0);
 
-  int width() const { return image_->width; }
-  int height() const { return image_->height; }
+  int width() const { return width_; }
+  int height() const { return height_; }
 
   // Depth of texel (i, j); indices outside the map take the nearest edge texel.
   // A NaN texel reads as +inf: it occludes nothing (docs/robustness.md).
   double depth(int i, int j) const {
-    const double z = image_->at(std::clamp(i, 0, width() - 1), std::clamp(j, 0, height() - 1));
-    if (std::isnan(z)) return std::numeric_limits<double>::infinity();
-    return encoded_ ? decoded(z) : z;
+    const int ci = std::clamp(i, 0, width_ - 1);
+    const int cj = std::clamp(j, 0, height_ - 1);
+    if (decoded_) return (*decoded_)[std::size_t(cj) * std::size_t(width_) + std::size_t(ci)];
+    const double z = image_->at(ci, cj);
+    return std::isnan(z) ? std::numeric_limits<double>::infinity() : z;
   }
 
  private:
-  double decoded(double stored) const {
-    const double z = decode_depth(encoded_->encoding, stored, encoded_->range);
-    return std::isfinite(z) ? z + shift_ * tie_margin(*encoded_, z) : z;
-  }
-
-  const FloatImage* image_;
-  std::optional<EncodedDepth> encoded_;
-  int shift_ = 0;
+  const FloatImage* image_ = nullptr;
+  std::shared_ptr<const std::vector<double>> decoded_;  // an encoded map's depths
+  int width_ = 0;
+  int height_ = 0;
 };
 
 }  // namespace penumbra::reference

@@ -2,7 +2,9 @@
 // precision and independent of the shader sources.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "penumbra/model/model.hpp"
 #include "penumbra/reference/light.hpp"
@@ -179,11 +181,14 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                       const SamplingPrecision& precision = {},
                                       const ShaderLimits& limits = {});
 
-// The visibility alone of that evaluate_image() at the exactly decoded
-// depths: without the two evaluations its depth_tie marking takes.
-Result<FloatImage> evaluate_visibility(const Variant& variant, const FloatImage& stored,
-                                       const EncodedDepth& encoded, const LightParams& light,
-                                       const FloatImage& receivers,
+// The visibility alone of `pixels` (row-major indices into `receivers`)
+// against `map`, every other pixel 0: for a check that needs the
+// reference at a few pixels, without the depth_tie evaluations an encoded
+// map's evaluate_image() makes. Errors: as evaluate_image()'s, and
+// bad_input for an index outside the image.
+Result<FloatImage> evaluate_visibility(const Variant& variant, const ShadowMapView& map,
+                                       const LightParams& light, const FloatImage& receivers,
+                                       std::span<const std::size_t> pixels,
                                        const SamplingPrecision& precision = {},
                                        const ShaderLimits& limits = {});
 

@@ -65,12 +65,14 @@ std::vector<std::size_t> face_pixels(const reference::Stage& stage,
 // `visibility` (channel `channel`), drawn by `variant`'s function form at
 // `receivers` (the view's size) on `map` under `light`, against the reference.
 // `rounded` holds the same receivers as float32 shaders may compute them, where
-// the GPU's own are not known exactly (the deferred pass's): a pixel whose
-// reference differs at one of them by over half the tolerance is ambiguous. A
-// pixel ambiguous only for that reason or for depth ties (the reference's `low`
-// and `high`) is compared with the nearest value of the reference's range over
-// those alternatives where the GPU's value lies within the tolerance of it, and
-// left out elsewhere. Errors: the reference's, for inputs it cannot evaluate.
+// the GPU's own are not known exactly: a pixel whose reference differs at one
+// of them by over half the tolerance is ambiguous. A pixel ambiguous only for
+// that reason or for depth ties (the reference's `low` and `high`) is compared
+// with the nearest value of the reference's range over those alternatives where
+// the GPU's value lies within the tolerance of it, and left out elsewhere. The
+// alternatives are evaluated only at the pixels where the GPU lies over a tenth
+// of the tolerance from the reference: elsewhere they cannot change the
+// outcome. Errors: the reference's, for inputs it cannot evaluate.
 Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
