@@ -159,9 +159,10 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
     const auto reasons = Ambiguity(std::uint16_t(result.ambiguous.data[k])) |
                          ambiguous_if(tie, Ambiguity::depth_tie);
     result.ambiguous.data[k] = float(std::uint16_t(reasons));
-    result.low.data[k] = std::min({result.low.data[k], nearer.low.data[k], farther.low.data[k]});
-    result.high.data[k] =
-        std::max({result.high.data[k], nearer.high.data[k], farther.high.data[k]});
+    const auto values = {result.visibility.data[k], nearer.visibility.data[k],
+                         farther.visibility.data[k]};
+    result.low.data[k] = std::min(values);
+    result.high.data[k] = std::max(values);
   }
   return result;
 }

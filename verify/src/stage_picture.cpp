@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <limits>
 #include <span>
-#include <utility>
 
 namespace penumbra {
 namespace {
@@ -69,21 +68,37 @@ Result<reference::ReferenceImage> reference_at(const Variant& variant, const Eng
                                    limits);
 }
 
-// Its visibility alone at `pixels`: an encoded map's without the depth-tie
-// evaluations.
-Result<FloatImage> visibility_at(const Variant& variant, const EngineMap& map,
-                                 const reference::LightParams& light, const FloatImage& receivers,
-                                 std::span<const std::size_t> pixels,
-                                 const reference::SamplingPrecision& precision,
-                                 const reference::ShaderLimits& limits) {
-  if (map.encoded) {
-    return reference::evaluate_visibility(variant,
-                                          reference::ShadowMapView(map.stored, *map.encoded), light,
-                                          receivers, pixels, precision, limits);
+// Widens `expected` at `pixels` by the reference at each of `rounded`:
+// receiver_rounding where it differs by over half the tolerance, and its
+// value in [low, high]. The map is decoded once for all of them, without
+// an encoded map's depth-tie evaluations.
+Status widen_by_rounding(reference::ReferenceImage& expected, const Variant& variant,
+                         const EngineMap& map, const reference::LightParams& light,
+                         std::span<const FloatImage> rounded, std::span<const std::size_t> pixels,
+                         const reference::SamplingPrecision& precision,
+                         const reference::ShaderLimits& limits) {
+  if (pixels.empty()) return {};
+  const FloatImage linear = map.encoded ? FloatImage() : linear_depths(map);
+  const reference::ShadowMapView view = map.encoded
+                                            ? reference::ShadowMapView(map.stored, *map.encoded)
+                                            : reference::ShadowMapView(linear);
+  const double half_tolerance = 0.5 * reference::tolerance(variant.technique, precision);
+  for (const FloatImage& alternative : rounded) {
+    PENUMBRA_TRY_ASSIGN(const FloatImage other,
+                        reference::evaluate_visibility(variant, view, light, alternative, pixels,
+                                                       precision, limits));
+    for (const std::size_t at : pixels) {
+      const float value = other.data[at];
+      const double apart = std::abs(double(expected.visibility.data[at]) - value);
+      const auto reasons =
+          reference::Ambiguity(std::uint16_t(expected.ambiguous.data[at])) |
+          reference::ambiguous_if(apart > half_tolerance, reference::Ambiguity::receiver_rounding);
+      expected.ambiguous.data[at] = float(std::uint16_t(reasons));
+      expected.low.data[at] = std::min(expected.low.data[at], value);
+      expected.high.data[at] = std::max(expected.high.data[at], value);
+    }
   }
-  const FloatImage linear = linear_depths(map);
-  return reference::evaluate_visibility(variant, reference::ShadowMapView(linear), light, receivers,
-                                        pixels, precision, limits);
+  return {};
 }
 
 }  // namespace
@@ -153,18 +168,16 @@ Result<StagePictureCheck> check_stage_picture(
   const auto gpu_at = [&](std::size_t at) {
     return visibility.data[std::size_t(visibility.channels) * at + std::size_t(channel)];
   };
-  // The reference's range over the maps and receivers a shader may in
-  // effect have used; a pixel ambiguous only where the receiver rounds or
-  // depths tie is compared with its nearest value, or left out where the
-  // GPU misses the range.
-  FloatImage low = expected.low.data.empty() ? expected.visibility : expected.low;
-  FloatImage high = expected.high.data.empty() ? expected.visibility : expected.high;
+  // `expected.low` and `high`: the reference's range over the maps and
+  // receivers a shader may in effect have used; a pixel ambiguous only
+  // where the receiver rounds or depths tie is compared with its nearest
+  // value, or left out where the GPU misses the range.
   constexpr auto kRanged =
       std::uint16_t(reference::Ambiguity::receiver_rounding | reference::Ambiguity::depth_tie);
   const auto target = [&](std::size_t at) {
     const auto reasons = std::uint16_t(expected.ambiguous.data[at]);
     return reasons == 0 ? expected.visibility.data[at]
-                        : std::clamp(gpu_at(at), low.data[at], high.data[at]);
+                        : std::clamp(gpu_at(at), expected.low.data[at], expected.high.data[at]);
   };
   // The rounded receivers can change the outcome only of a compared pixel
   // where the GPU misses the reference, and the reference is costly (a
@@ -179,20 +192,7 @@ Result<StagePictureCheck> check_stage_picture(
       open.push_back(at);
     }
   }
-  for (const FloatImage& alternative : open.empty() ? std::span<const FloatImage>() : rounded) {
-    PENUMBRA_TRY_ASSIGN(const FloatImage other,
-                        visibility_at(variant, map, light, alternative, open, precision, limits));
-    for (const std::size_t at : open) {
-      const float value = other.data[at];
-      const double apart = std::abs(double(expected.visibility.data[at]) - value);
-      const auto reasons =
-          reference::Ambiguity(std::uint16_t(expected.ambiguous.data[at])) |
-          reference::ambiguous_if(apart > 0.5 * tolerance, reference::Ambiguity::receiver_rounding);
-      expected.ambiguous.data[at] = float(std::uint16_t(reasons));
-      low.data[at] = std::min(low.data[at], value);
-      high.data[at] = std::max(high.data[at], value);
-    }
-  }
+  PENUMBRA_TRY(widen_by_rounding(expected, variant, map, light, rounded, open, precision, limits));
   const int count = int(inside.size());
   FloatImage gpu(count, 1, 1), reference(count, 1, 1), ambiguous(count, 1, 1);
   for (std::size_t k = 0; k < inside.size(); ++k) {
