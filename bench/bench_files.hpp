@@ -1,6 +1,6 @@
 // Where a benchmark finds what it needs by default, so that it runs wherever
 // its executable is: in the build tree, installed, or packed for another
-// machine (../shared/tools/pack-portable), never from the source tree's path.
+// machine (scripts/pack-portable.sh), never from the source tree's path.
 #pragma once
 
 #include <filesystem>

@@ -247,8 +247,8 @@ void add_build_command(CLI::App& app, int& exit_code) {
     }
     if (compiler->empty() && has_hlsl(*variants)) {
       std::cerr << "penumbra: no Direct3D bytecode made: no HLSL compiler (give --hlsl-compiler "
-                   "PATH or PENUMBRA_HLSL_COMPILER; scripts/lib/setup.sh installs vkd3d-compiler "
-                   "with ../shared/tools/fetch-vkd3d)\n";
+                   "PATH or PENUMBRA_HLSL_COMPILER; in a penumbra checkout, "
+                   "scripts/lib/sid-tools.sh vkd3d installs vkd3d-compiler)\n";
     }
   });
 }

@@ -14,8 +14,8 @@ inline constexpr const char* kHlslCompilerHelp =
     "~/.cache/penumbra/vkd3d/bin/vkd3d-compiler)";
 
 // vkd3d-compiler: `flag` (--hlsl-compiler), else $PENUMBRA_HLSL_COMPILER,
-// else where ../shared/tools/fetch-vkd3d installs it (scripts/lib/setup.sh's
-// cache, $XDG_CACHE_HOME or ~/.cache); empty when none of them has it. A
+// else where scripts/lib/sid-tools.sh installs it ($XDG_CACHE_HOME or
+// ~/.cache, then penumbra/vkd3d); empty when none of them has it. A
 // flag or variable naming no executable file is a bad_input error.
 Result<std::filesystem::path> find_hlsl_compiler(const std::string& flag);
 

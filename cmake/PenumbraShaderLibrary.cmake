@@ -18,7 +18,7 @@
 # out the same leaves it untouched too, so Ninja reruns nothing after it.
 # Compiled shaders come from the shader cache when they were built before
 # (docs/cache.md). The Direct3D bytecode needs vkd3d-compiler: HLSL_COMPILER,
-# or what `penumbra build` finds (PENUMBRA_HLSL_COMPILER, fetch-vkd3d's cache).
+# or what `penumbra build` finds (PENUMBRA_HLSL_COMPILER, sid-tools.sh's cache).
 #
 # The shaders are compiled from SHADERLIB_DIR's files (`penumbra build
 # --shaderlib`), by default the installed package's Penumbra_SHADERLIB_DIR

@@ -38,7 +38,7 @@ install_missing_packages
 if [[ $bench == bytecode || $bench == jobs || ($bench == build && " $* " == *" --bytecode "*) ]]; then
   install_hlsl_compiler
 fi
-configure_and_build build "penumbra_bench_$bench"
+configure_and_build build "penumbra_bench_$bench" "${PENUMBRA_DEVELOPER_CONFIG[@]}"
 # One Xvfb and Wine prefix for every verify and report the benchmark runs.
 if [[ $bench == jobs ]]; then start_wine_session; fi
 "build/bench/penumbra_bench_$bench" "$@"

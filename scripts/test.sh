@@ -20,7 +20,7 @@ esac
 install_missing_packages
 install_hlsl_compiler
 if [ "$sanitize" -eq 1 ]; then
-  configure_and_build build-sanitize all -DPENUMBRA_SANITIZE=ON
+  configure_and_build build-sanitize all "${PENUMBRA_DEVELOPER_CONFIG[@]}" -DPENUMBRA_SANITIZE=ON
   start_wine_session  # before LD_PRELOAD: Wine is not ours to sanitize
   # Leaks inside the graphics drivers (Mesa's lavapipe and EGL, LLVM) are
   # theirs, not ours: tests/sanitize/lsan.supp names them.
@@ -37,7 +37,7 @@ if [ "$sanitize" -eq 1 ]; then
   ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)"
   exit 0
 fi
-configure_and_build build
+configure_and_build build all "${PENUMBRA_DEVELOPER_CONFIG[@]}"
 start_wine_session
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"
 bash scripts/fuzz.sh

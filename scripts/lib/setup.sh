@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by scripts/run.sh, test.sh and bench.sh: installs the Debian 12
 # packages that are missing and the HLSL compiler, then configures and
 # builds with CMake + Ninja.
@@ -35,44 +36,50 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
-# Where ../shared/tools/fetch-vkd3d installs vkd3d-compiler (its own default
-# when XDG_CACHE_HOME is unset); `penumbra build` looks there too.
+# Where scripts/lib/sid-tools.sh installs vkd3d-compiler (its default when
+# XDG_CACHE_HOME is unset); `penumbra build` looks there too.
 PENUMBRA_VKD3D_DIR="${PENUMBRA_VKD3D_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/penumbra/vkd3d}"
 
 # install_hlsl_compiler: vkd3d-compiler 2.1 (Wine's HLSL compiler, for the
-# Direct3D bytecode), installed once into PENUMBRA_VKD3D_DIR, exported as
+# Direct3D bytecode), installed once from Debian's unstable archive into
+# PENUMBRA_VKD3D_DIR (scripts/lib/sid-tools.sh), exported as
 # PENUMBRA_HLSL_COMPILER for CMake, `penumbra build` and the tests. An
 # already exported executable is kept. Fails when it cannot be had: the
-# bytecode tests need it.
+# bytecode and its tests need it.
 install_hlsl_compiler() {
   if [ -n "${PENUMBRA_HLSL_COMPILER:-}" ] && [ -x "$PENUMBRA_HLSL_COMPILER" ]; then
     return 0
   fi
-  local fetch="../shared/tools/fetch-vkd3d"
-  if [ ! -f "$fetch" ]; then
-    echo "penumbra: error: $fetch is missing; it installs vkd3d-compiler, which the build's bytecode and its tests need" >&2
-    return 1
-  fi
   local wrapper
-  wrapper="$(bash "$fetch" "$PENUMBRA_VKD3D_DIR" | tail -n 1)"
-  if [ ! -x "$wrapper" ]; then
-    echo "penumbra: error: fetch-vkd3d did not install vkd3d-compiler into $PENUMBRA_VKD3D_DIR" >&2
+  if ! wrapper="$(bash "$(dirname "${BASH_SOURCE[0]}")/sid-tools.sh" vkd3d \
+    --dir "$PENUMBRA_VKD3D_DIR" | tail -n 1)" || [ ! -x "$wrapper" ]; then
+    echo "penumbra: error: vkd3d-compiler could not be installed into $PENUMBRA_VKD3D_DIR" \
+      "(above: why); the Direct3D bytecode and its tests need it" >&2
     return 1
   fi
   export PENUMBRA_HLSL_COMPILER="$wrapper"
 }
 
-# configure_and_build BUILD_DIR [TARGET [CMAKE_ARG...]]: configures (tests
-# on, warnings as errors, with the HLSL compiler of install_hlsl_compiler
-# when there is one, then CMAKE_ARGs) and builds TARGET, or everything.
+# The two ways the scripts configure. Developers' (scripts/test.sh, bench.sh
+# and CI): the tests, warnings as errors. Users' (scripts/run.sh): Release,
+# no tests, and a newer compiler's new warning left a warning.
+# shellcheck disable=SC2034  # used by the scripts that source this file
+PENUMBRA_DEVELOPER_CONFIG=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON
+  -DPENUMBRA_WERROR=ON)
+# shellcheck disable=SC2034
+PENUMBRA_USER_CONFIG=(-DCMAKE_BUILD_TYPE=Release -DPENUMBRA_BUILD_TESTS=OFF -DPENUMBRA_WERROR=OFF)
+
+# configure_and_build BUILD_DIR TARGET CMAKE_ARG...: configures with Ninja,
+# the HLSL compiler of install_hlsl_compiler when there is one, and the
+# CMAKE_ARGs (one of the configurations above, then any more), and builds
+# TARGET ("all" for everything).
 configure_and_build() {
   local build_dir="$1"
-  local target="${2:-all}"
-  shift $(($# < 2 ? $# : 2))
+  local target="$2"
+  shift 2
   local hlsl=()
   if [ -n "${PENUMBRA_HLSL_COMPILER:-}" ]; then hlsl=("-DPENUMBRA_HLSL_COMPILER=$PENUMBRA_HLSL_COMPILER"); fi
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPENUMBRA_BUILD_TESTS=ON \
-    -DPENUMBRA_WERROR=ON "${hlsl[@]}" "$@"
+  cmake -S . -B "$build_dir" -G Ninja "${hlsl[@]}" "$@"
   cmake --build "$build_dir" --parallel "$(nproc)" --target "$target"
 }
 

@@ -1,5 +1,5 @@
 // `penumbra build` finds vkd3d-compiler (--hlsl-compiler, then
-// PENUMBRA_HLSL_COMPILER, then fetch-vkd3d's cache) and, without one, writes
+// PENUMBRA_HLSL_COMPILER, then sid-tools.sh's cache) and, without one, writes
 // the text alone and says so in one line.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -59,7 +59,7 @@ TEST_F(CliBytecode, WithoutACompilerTheTextIsWrittenAndOneLineSaysSo) {
   ASSERT_NE(at, std::string::npos) << run.err;
   EXPECT_EQ(run.err.find(kNoBytecode, at + 1), std::string::npos) << "said more than once";
   EXPECT_THAT(run.err, HasSubstr("--hlsl-compiler"));
-  EXPECT_THAT(run.err, HasSubstr("fetch-vkd3d"));
+  EXPECT_THAT(run.err, HasSubstr("scripts/lib/sid-tools.sh vkd3d"));
   EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx9/hard/query.frag.hlsl"));
   EXPECT_FALSE(std::filesystem::exists(out() / "hlsl_dx9/hard/query.frag.d3dbc"));
   EXPECT_EQ(listed_bytecode(), 0u);

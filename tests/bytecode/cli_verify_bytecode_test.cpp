@@ -1,5 +1,5 @@
 // `penumbra verify` finds vkd3d-compiler as `penumbra build` does
-// (--hlsl-compiler, then PENUMBRA_HLSL_COMPILER, then fetch-vkd3d's cache),
+// (--hlsl-compiler, then PENUMBRA_HLSL_COMPILER, then sid-tools.sh's cache),
 // runs the bytecode path with it, and refuses a compiler that is not there.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -18,8 +18,8 @@ inline Result<std::filesystem::path> recorded_hlsl_compiler() {
   if (::access(path.c_str(), X_OK) == 0) return path;
   return make_error(Error::Kind::io, "PENUMBRA_HLSL_COMPILER",
                     "no vkd3d-compiler recorded at configure time (\"" + path.string() +
-                        "\"): run scripts/test.sh, or ../shared/tools/fetch-vkd3d and then "
-                        "cmake -DPENUMBRA_HLSL_COMPILER=PATH");
+                        "\"): run scripts/test.sh, or scripts/lib/sid-tools.sh vkd3d and "
+                        "then cmake -DPENUMBRA_HLSL_COMPILER=PATH");
 }
 
 }  // namespace penumbra::testing

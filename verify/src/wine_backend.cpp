@@ -248,9 +248,7 @@ class WineBackend final : public Backend {
 // Why the runtimes cannot run here, or empty: checked without starting anything.
 std::string why_missing(bool requested) {
   if (!requested) return "not requested (--no-wine)";
-  if (default_d3d_host().empty()) {
-    return "penumbra_d3d_host.exe was not built (it needs Debian's g++-mingw-w64-x86-64)";
-  }
+  if (std::string host = why_no_d3d_host(); !host.empty()) return host;
   const auto session = WineSession::options_from_environment();
   if (auto missing = WineSession::missing_programs(session); !missing.empty()) return missing;
   return {};

@@ -199,9 +199,9 @@ Result<std::unique_ptr<D3dEngine>> D3dEngine::create(std::shared_ptr<WineSession
                                                      const D3dEngineOptions& options) {
   const std::filesystem::path host = options.host.empty() ? default_d3d_host() : options.host;
   if (host.empty() || !std::filesystem::exists(host)) {
-    return make_error(Error::Kind::device, "penumbra_d3d_host.exe",
-                      "not found (build it: it needs Debian's g++-mingw-w64-x86-64; or set "
-                      "PENUMBRA_D3D_HOST)");
+    const std::string why = options.host.empty() ? why_no_d3d_host() : std::string();
+    return make_error(Error::Kind::device, host.empty() ? "penumbra_d3d_host.exe" : host.string(),
+                      why.empty() ? "does not exist" : why);
   }
   auto process = d3d::HostProcess::start(
       {session->wine(), host.string(), std::string(to_string(options.runtime))},
@@ -419,6 +419,27 @@ std::filesystem::path default_d3d_host() {
     if (std::filesystem::exists(candidate, ec)) return candidate;
   }
   return {};
+}
+
+std::string why_no_d3d_host() {
+  if (const char* given = std::getenv("PENUMBRA_D3D_HOST"); given && *given) {
+    std::error_code ec;
+    if (std::filesystem::exists(given, ec)) return {};
+    return std::string("PENUMBRA_D3D_HOST names ") + given + ", which does not exist";
+  }
+  if (!default_d3d_host().empty()) return {};
+#ifdef PENUMBRA_D3D_HOST_BUILD_TREE
+  // The build tree can make it: the target was not built, or not installed.
+  return "penumbra_d3d_host.exe is neither beside this program, in its ../libexec/penumbra, "
+         "nor built in " PENUMBRA_D3D_HOST_BUILD_TREE
+         ": build it with cmake --build " PENUMBRA_D3D_HOST_BUILD_TREE
+         " --target penumbra_d3d_host (penumbra_cli builds it "
+         "too), or set PENUMBRA_D3D_HOST";
+#else
+  return "penumbra_d3d_host.exe was not built: CMake found no mingw-w64 C++ compiler when this "
+         "build was configured (Debian: g++-mingw-w64-x86-64; install it and configure again), "
+         "or set PENUMBRA_D3D_HOST";
+#endif
 }
 
 }  // namespace penumbra

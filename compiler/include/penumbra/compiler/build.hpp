@@ -33,7 +33,7 @@ std::string toolchain_id();
 std::string variant_identity(const Variant& variant);
 
 // Direct3D bytecode from the HLSL targets' text, by vkd3d-compiler
-// 2.1 or newer (../shared/tools/fetch-vkd3d installs it).
+// 2.1 or newer (scripts/lib/sid-tools.sh installs it).
 struct HlslCompilerOptions {
   std::filesystem::path compiler = {};  // vkd3d-compiler to run; empty: text only, no bytecode
   std::chrono::milliseconds timeout{60'000};  // per file; a file still compiling fails its variant

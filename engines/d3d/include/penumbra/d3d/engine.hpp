@@ -59,6 +59,10 @@ struct D3dEngineOptions {
 // running executable, else the installed libexec folder, else the build
 // tree's; empty when none exists.
 std::filesystem::path default_d3d_host();
+// Why no host can be started, naming the cause a user can act on (a
+// PENUMBRA_D3D_HOST that names nothing, a build tree that did not build it,
+// or one configured without mingw-w64); empty when default_d3d_host() exists.
+std::string why_no_d3d_host();
 
 // One pass's bytecode and reflection. The engine reads the reflection
 // through the reference; it must outlive the call.
