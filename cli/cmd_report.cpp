@@ -4,6 +4,7 @@
 #include "exit_codes.hpp"
 #include "hlsl_compiler.hpp"
 #include "jobs.hpp"
+#include "output_file.hpp"
 #include "penumbra/report/report.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "validators.hpp"
@@ -27,6 +28,21 @@ struct ReportArgs {
   bool quiet = false;  // no progress
   int jobs = 0;        // 0: every core
 };
+
+// DIR is staged beside itself and renamed, its missing parents made: the
+// nearest existing one must take new files. Checked before any picture is
+// drawn; a library's own report folder names the way out.
+Status check_report_parent(const fs::path& out, bool in_library) {
+  fs::path parent = fs::absolute(out).parent_path();
+  std::error_code ec;
+  while (!fs::exists(parent, ec) && parent != parent.parent_path()) parent = parent.parent_path();
+  const std::string why = why_unwritable(parent);
+  if (why.empty()) return {};
+  return make_error(Error::Kind::bad_input, in_library ? out.string() : "-o " + out.string(),
+                    "cannot write into " + parent.string() + " (" + why +
+                        "); allowed: a directory whose parent penumbra may write to" +
+                        (in_library ? "; pass -o DIR to write the report elsewhere" : ""));
+}
 
 Status run_report(const ReportArgs& args) {
   PENUMBRA_TRY_ASSIGN(const fs::path compiler, find_hlsl_compiler(args.hlsl_compiler));
@@ -55,6 +71,7 @@ Status run_report(const ReportArgs& args) {
     }
   }
   PENUMBRA_TRY(check_report_directory(out));
+  PENUMBRA_TRY(check_report_parent(out, args.output.empty()));
   limit_software_rasterizers(args.jobs);
   PENUMBRA_TRY_ASSIGN(auto engine,
                       Engine::create({.device = args.device, .validation = args.validation},

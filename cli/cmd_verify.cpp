@@ -19,8 +19,9 @@ struct VerifyArgs {
   std::vector<std::string> variants;
   std::vector<std::string> targets;
   std::string hlsl_compiler;
-  std::string shard;  // "I/N"; empty: the whole library
-  std::string junit;  // JUnit report to write; empty: none
+  std::string shard;    // "I/N"; empty: the whole library
+  std::string junit;    // JUnit report to write; empty: none
+  std::string results;  // verify.json to write; empty: LIBRARY/verify.json
   bool no_gl = false;
   bool no_wine = false;
   std::vector<std::string> paths;
@@ -127,6 +128,33 @@ void print_summary(const VerifyReport& report, bool quiet) {
   std::cout << report.runs - report.failed << " passed, " << report.failed << " failed\n";
 }
 
+// Why the library's verify.json is not written, and how to write it.
+std::string read_only_note(const Library& library) {
+  return library.root.string() + " cannot be written into (" + why_unwritable(library.root) +
+         "); pass --results FILE to write them elsewhere";
+}
+
+// Where verify.json goes: --results, checked before the checks run, not
+// after, when their results would be lost; else the library's own, or, for
+// a library no file can be made in (read-only, installed), nowhere: the
+// results are still printed. Empty: not written.
+Result<std::filesystem::path> results_file(const VerifyArgs& args, const Library& library) {
+  if (!args.results.empty()) {
+    PENUMBRA_TRY(check_output_file(args.results, "--results"));
+    return std::filesystem::path(args.results);
+  }
+  if (!why_unwritable(library.root).empty()) {
+    if (!args.quiet) {
+      std::cerr << "penumbra: note: verify.json will not be written: " << read_only_note(library)
+                << "\n";
+    }
+    return std::filesystem::path();
+  }
+  const std::filesystem::path own = library.root / "verify.json";
+  PENUMBRA_TRY(check_output_file(own.string(), ""));
+  return own;
+}
+
 }  // namespace
 
 void add_verify_command(CLI::App& app, int& exit_code) {
@@ -141,6 +169,8 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--shard", args->shard,
                   "Only the I-th of N disjoint slices of the checks, I from 1 (docs/scale-out.md)");
   cmd->add_option("--junit", args->junit, "Also write a JUnit XML report to this file");
+  cmd->add_option("--results", args->results,
+                  "Write the results (verify.json) to this file (default: LIBRARY/verify.json)");
   cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
   cmd->add_option("--path", args->paths,
                   "Only these execution paths (repeatable): " + std::string(kPathNames));
@@ -195,11 +225,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(library.error());
       return;
     }
-    // verify.json goes into the library: a read-only one is refused before
-    // the checks run, not after, when their results would be lost.
-    const std::string results = (library->root / "verify.json").string();
-    if (Status s = check_output_file(results, ""); !s) {
-      exit_code = report(s.error());
+    auto results = results_file(*args, *library);
+    if (!results) {
+      exit_code = report(results.error());
       return;
     }
     limit_software_rasterizers(args->jobs);
@@ -233,10 +261,11 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       exit_code = report(result.error());
       return;
     }
-    const auto path = library->root / "verify.json";
-    if (Status s = write_file_atomic(path, to_json(*result, *library).dump(2) + "\n"); !s) {
-      exit_code = report(s.error());
-      return;
+    if (!results->empty()) {
+      if (Status s = write_file_atomic(*results, to_json(*result, *library).dump(2) + "\n"); !s) {
+        exit_code = report(s.error());
+        return;
+      }
     }
     if (!args->junit.empty()) {
       if (Status s = write_file_atomic(args->junit, to_junit_xml(to_junit(*result))); !s) {
@@ -245,8 +274,13 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       }
     }
     print_summary(*result, args->quiet);
-    std::cout << "results: " << path.string() << (args->junit.empty() ? "" : ", " + args->junit)
-              << "\n";
+    if (results->empty()) {
+      std::cout << "results: verify.json not written: " << read_only_note(*library) << "\n";
+      if (!args->junit.empty()) std::cout << "JUnit report: " << args->junit << "\n";
+    } else {
+      std::cout << "results: " << results->string()
+                << (args->junit.empty() ? "" : ", " + args->junit) << "\n";
+    }
     exit_code = result->pass() ? kExitOk : kExitCheckFailed;
   });
 }

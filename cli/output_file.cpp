@@ -25,14 +25,20 @@ Status check_output_file(const std::string& path, const std::string& argument) {
     return make_error(Error::Kind::bad_input, where,
                       "is a directory; allowed: a file in an existing directory");
   }
-  // The file is written beside itself and renamed: the directory must take
-  // new files (EACCES, or EROFS on a read-only mount, even for root).
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+  if (const std::string why = why_unwritable(dir); !why.empty()) {
     return make_error(Error::Kind::bad_input, where,
-                      "cannot write into " + dir.string() + ": " + std::strerror(errno) +
+                      "cannot write into " + dir.string() + ": " + why +
                           "; allowed: a file in a directory penumbra may write to");
   }
   return {};
+}
+
+std::string why_unwritable(const std::filesystem::path& dir) {
+  // A file is written beside itself and renamed: the directory must take
+  // new files (EACCES; EROFS on a read-only mount and EPERM on an immutable
+  // directory, even for root).
+  if (::access(dir.c_str(), W_OK | X_OK) == 0) return {};
+  return std::strerror(errno);
 }
 
 }  // namespace penumbra::cli

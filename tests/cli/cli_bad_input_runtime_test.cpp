@@ -2,7 +2,6 @@
 // one message naming the argument or file, found before any device work.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <string>
 
@@ -13,9 +12,10 @@ namespace {
 
 using ::testing::HasSubstr;
 
-// verify writes OUT/verify.json: a library it cannot write into is refused
-// before the checks run (here before the device, which does not exist).
-TEST(BadRuntimeInput, VerifyRefusesALibraryItCannotWriteInto) {
+// verify writes OUT/verify.json, or --results: a file it cannot write is
+// refused before the checks run (here before the device, which does not
+// exist). A library that takes no files is verified: cli_read_only_test.
+TEST(BadRuntimeInput, VerifyRefusesAResultsFileItCannotWrite) {
   ScratchDir dir("bad-verify");
   const auto manifest = dir.write(
       "m.json", R"({"schema": 1, "targets": ["spirv"], "sets": [{"technique": "hard"}]})");
@@ -32,15 +32,12 @@ TEST(BadRuntimeInput, VerifyRefusesALibraryItCannotWriteInto) {
   EXPECT_THAT(blocked.err, HasSubstr("is a directory"));
   std::filesystem::remove(lib / "verify.json");
 
-  // A read-only folder stops everyone but root (whom only a read-only mount stops).
-  if (::geteuid() != 0) {
-    std::filesystem::permissions(lib, std::filesystem::perms::owner_write,
-                                 std::filesystem::perm_options::remove);
-    const CliRun read_only = run_penumbra(verify);
-    std::filesystem::permissions(lib, std::filesystem::perms::owner_write,
-                                 std::filesystem::perm_options::add);
-    EXPECT_EQ(read_only.exit_code, 2) << read_only.err;
-    EXPECT_THAT(read_only.err, HasSubstr("Permission denied"));
+  for (const std::string& results :
+       {(dir.path() / "missing" / "r.json").string(), dir.path().string()}) {
+    const CliRun refused = run_penumbra(verify + " --results '" + results + "'");
+    EXPECT_EQ(refused.exit_code, 2) << refused.err;
+    EXPECT_THAT(refused.err, HasSubstr("--results " + results));
+    EXPECT_THAT(refused.err, HasSubstr("allowed:"));
   }
 }
 

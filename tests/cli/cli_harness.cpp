@@ -1,6 +1,9 @@
 #include "cli_harness.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <linux/fs.h>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +24,39 @@ std::string slurp(const std::filesystem::path& path) {
 }
 
 }  // namespace
+
+bool set_immutable(const std::filesystem::path& path, bool on) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  int flags = 0;
+  bool done = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
+  flags = on ? (flags | FS_IMMUTABLE_FL) : (flags & ~FS_IMMUTABLE_FL);
+  done = done && ::ioctl(fd, FS_IOC_SETFLAGS, &flags) == 0;
+  ::close(fd);
+  return done;
+}
+
+ReadOnlyDir::ReadOnlyDir(std::filesystem::path dir) : dir_(std::move(dir)) {
+  namespace fs = std::filesystem;
+  if (::geteuid() == 0) {
+    ok_ = set_immutable(dir_, true);
+  } else {
+    std::error_code ec;
+    fs::permissions(dir_, fs::perms::owner_write, fs::perm_options::remove, ec);
+    ok_ = !ec;
+  }
+}
+
+ReadOnlyDir::~ReadOnlyDir() {
+  if (!ok_) return;
+  if (::geteuid() == 0) {
+    set_immutable(dir_, false);
+  } else {
+    std::error_code ec;
+    std::filesystem::permissions(dir_, std::filesystem::perms::owner_write,
+                                 std::filesystem::perm_options::add, ec);
+  }
+}
 
 CliRun run_penumbra(const std::string& args, const std::string& env) {
   const auto base =

@@ -61,6 +61,26 @@ class ScratchDir {
   std::filesystem::path path_;
 };
 
+// Sets or clears `path`'s immutable attribute (root only: a directory so
+// marked takes no new file, even root's); whether it could.
+bool set_immutable(const std::filesystem::path& path, bool on);
+
+// Makes a directory take no new files while it lives, as a read-only mount
+// or an installed folder does: immutable as root, whom permissions do not
+// stop, without write permission otherwise. ok(): whether that worked here.
+class ReadOnlyDir {
+ public:
+  explicit ReadOnlyDir(std::filesystem::path dir);
+  ~ReadOnlyDir();
+  ReadOnlyDir(const ReadOnlyDir&) = delete;
+  ReadOnlyDir& operator=(const ReadOnlyDir&) = delete;
+  bool ok() const { return ok_; }
+
+ private:
+  std::filesystem::path dir_;
+  bool ok_ = false;
+};
+
 // The eval tests' fixture: a scratch directory holding the library `penumbra
 // build` made from a manifest (lib/) and the first built-in scene's shadow
 // map and receivers (depth.pfm, recv.pfm). Each suite calls set_up_eval() in

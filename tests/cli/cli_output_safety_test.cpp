@@ -1,11 +1,8 @@
 // What `penumbra build` and `merge` may do to OUT and what lies beside it:
 // replace only a library that penumbra wrote, one writer at a time, clean up
 // after writers that died, and exit 0 once OUT is replaced.
-#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <linux/fs.h>
-#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -173,16 +170,6 @@ class Undeletable {
   }
 
  private:
-  static bool set_immutable(const fs::path& file, bool on) {
-    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    int flags = 0;
-    bool done = ::ioctl(fd, FS_IOC_GETFLAGS, &flags) == 0;
-    flags = on ? (flags | FS_IMMUTABLE_FL) : (flags & ~FS_IMMUTABLE_FL);
-    done = done && ::ioctl(fd, FS_IOC_SETFLAGS, &flags) == 0;
-    ::close(fd);
-    return done;
-  }
   fs::path root_;
 };
 
