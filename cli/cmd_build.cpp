@@ -83,13 +83,17 @@ bool in_group(const std::string& name, std::pair<int, int> group) {
   return static_cast<int>(hash % static_cast<std::uint64_t>(group.second)) == group.first - 1;
 }
 
+// `error`, its place named after `argument` ("--shaderlib DIR: ...").
+Error under_argument(Error error, const std::string& argument) {
+  error.where = argument + " " + error.where;
+  return error;
+}
+
 // OUT and --depfile, checked before the work: a build that cannot write
 // them must fail before it replaces anything.
 Status check_outputs(const std::string& out, const std::string& depfile) {
   if (Status usable = check_output_directory(out); !usable) {
-    Error error = usable.error();
-    error.where = "-o " + error.where;
-    return error;
+    return under_argument(usable.error(), "-o");
   }
   if (!depfile.empty()) PENUMBRA_TRY(check_output_file(depfile, "--depfile"));
   return {};
@@ -107,27 +111,109 @@ std::function<void(std::size_t, std::size_t)> terminal_progress() {
   };
 }
 
+// `penumbra build`'s arguments, as CLI11 fills them.
+struct BuildArgs {
+  std::string manifest;
+  std::string out;
+  int jobs = default_jobs();
+  std::vector<std::string> variants;
+  std::vector<std::string> targets;
+  std::string hlsl_compiler;
+  std::string shaderlib;  // empty: the copy built into penumbra
+  std::string depfile;    // empty: none
+  std::string group;      // "I/N"; empty: every variant
+  std::string cache_dir;  // empty: $PENUMBRA_CACHE_DIR, else ~/.cache/penumbra
+  bool no_cache = false;
+  int hlsl_timeout = 60;  // seconds per HLSL file
+  bool keep_going = false;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+// The manifest's variants that --variant, --target and --group select.
+Result<std::vector<Variant>> selected_variants(const BuildArgs& args) {
+  PENUMBRA_TRY_ASSIGN(std::vector<Variant> all, load_variants(args.manifest));
+  PENUMBRA_TRY_ASSIGN(std::vector<Variant> variants,
+                      select_variants(std::move(all), args.variants, args.targets, args.manifest));
+  if (!args.group.empty()) {
+    PENUMBRA_TRY_ASSIGN(const auto group, parse_group(args.group));
+    std::erase_if(variants, [&](const Variant& v) { return !in_group(v.name, group); });
+  }
+  return variants;
+}
+
+Result<std::shared_ptr<const ShaderlibSource>> chosen_shaderlib(const BuildArgs& args) {
+  if (args.shaderlib.empty()) return embedded_shaderlib();
+  auto dir = shaderlib_directory(args.shaderlib);
+  if (!dir) return under_argument(dir.error(), "--shaderlib");
+  return std::shared_ptr<const ShaderlibSource>(std::move(*dir));
+}
+
+// The build itself, or what the cache's stamp says is current: the summary,
+// and whether it came from the stamp.
+Result<std::pair<BuildSummary, bool>> build_or_reuse(
+    const BuildArgs& args, const std::vector<Variant>& variants,
+    const std::filesystem::path& compiler, std::shared_ptr<const ShaderlibSource> shaderlib) {
+  const std::filesystem::path cache = cache_directory(args.cache_dir, args.no_cache);
+  const BuildStamp stamp = BuildStamp::of(
+      cache,
+      {variants, args.out,
+       args.shaderlib.empty() ? "" : std::filesystem::absolute(args.shaderlib).string(), compiler});
+  if (!cache.empty()) {
+    if (auto current = stamp.current()) {
+      BuildSummary summary;
+      summary.inputs = std::move(*current);
+      return std::pair{std::move(summary), true};
+    }
+  }
+  const bool on_disk = shaderlib->on_disk();
+  const BuildOptions options{
+      .jobs = args.jobs,
+      .hlsl = {.compiler = compiler, .timeout = std::chrono::seconds(args.hlsl_timeout)},
+      .keep_going = args.keep_going,
+      .shaderlib = std::move(shaderlib),
+      .cache_dir = cache,
+      .progress = !args.quiet && isatty(STDERR_FILENO) ? terminal_progress() : nullptr};
+  PENUMBRA_TRY_ASSIGN(BuildSummary summary,
+                      build_library(variants, args.out, options, stderr_diagnostics(args.verbose)));
+  if (!cache.empty()) stamp.record(on_disk ? summary.inputs : std::vector<std::string>{});
+  return std::pair{std::move(summary), false};
+}
+
+Status run_build(const BuildArgs& args) {
+  PENUMBRA_TRY(check_outputs(args.out, args.depfile));
+  PENUMBRA_TRY_ASSIGN(const std::vector<Variant> variants, selected_variants(args));
+  PENUMBRA_TRY_ASSIGN(const std::filesystem::path compiler, find_hlsl_compiler(args.hlsl_compiler));
+  PENUMBRA_TRY_ASSIGN(std::shared_ptr<const ShaderlibSource> shaderlib, chosen_shaderlib(args));
+  PENUMBRA_TRY_ASSIGN(const auto built, build_or_reuse(args, variants, compiler, shaderlib));
+  const auto& [summary, current] = built;
+  if (!args.depfile.empty()) {
+    const std::string text = depfile_text(args.out, args.manifest, *shaderlib, summary);
+    if (Status written = write_file_atomic(args.depfile, text); !written) {
+      Error error = written.error();
+      error.where = "--depfile " + args.depfile;
+      return error;
+    }
+  }
+  if (!args.quiet && current) {
+    std::cout << args.out << " is up to date\n";
+  } else if (!args.quiet) {
+    std::cout << "built " << summary.variants << " variants (" << summary.files << " shader files, "
+              << summary.bytecode << " bytecode files, " << summary.cached
+              << " shaders from the cache) into " << args.out << "\n";
+  }
+  if (compiler.empty() && has_hlsl(variants)) {
+    std::cerr << "penumbra: no Direct3D bytecode made: no HLSL compiler (give --hlsl-compiler "
+                 "PATH or PENUMBRA_HLSL_COMPILER; in a penumbra checkout, "
+                 "scripts/lib/sid-tools.sh vkd3d installs vkd3d-compiler)\n";
+  }
+  return {};
+}
+
 }  // namespace
 
 void add_build_command(CLI::App& app, int& exit_code) {
-  struct Args {
-    std::string manifest;
-    std::string out;
-    int jobs = default_jobs();
-    std::vector<std::string> variants;
-    std::vector<std::string> targets;
-    std::string hlsl_compiler;
-    std::string shaderlib;
-    std::string depfile;
-    std::string group;
-    std::string cache_dir;
-    bool no_cache = false;
-    int hlsl_timeout = 60;
-    bool keep_going = false;
-    bool quiet = false;
-    bool verbose = false;
-  };
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<BuildArgs>();
   CLI::App* cmd = app.add_subcommand("build", "Compile every variant of a manifest into OUT");
   cmd->add_option("manifest", args->manifest, "Permutation manifest (JSON)")->required();
   cmd->add_option("-o,--out", args->out, "Output directory (replaced only on success)")->required();
@@ -162,94 +248,8 @@ void add_build_command(CLI::App& app, int& exit_code) {
       cmd->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (no summary line)");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes")->excludes(quiet);
   cmd->callback([args, &exit_code] {
-    if (Status usable = check_outputs(args->out, args->depfile); !usable) {
-      exit_code = report(usable.error());
-      return;
-    }
-    auto all_variants = load_variants(args->manifest);
-    if (!all_variants) {
-      exit_code = report(all_variants.error());
-      return;
-    }
-    auto variants =
-        select_variants(std::move(*all_variants), args->variants, args->targets, args->manifest);
-    if (!variants) {
-      exit_code = report(variants.error());
-      return;
-    }
-    if (!args->group.empty()) {
-      auto group = parse_group(args->group);
-      if (!group) {
-        exit_code = report(group.error());
-        return;
-      }
-      std::erase_if(*variants, [&](const Variant& v) { return !in_group(v.name, *group); });
-    }
-    auto compiler = find_hlsl_compiler(args->hlsl_compiler);
-    if (!compiler) {
-      exit_code = report(compiler.error());
-      return;
-    }
-    std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib();
-    if (!args->shaderlib.empty()) {
-      auto dir = shaderlib_directory(args->shaderlib);
-      if (!dir) {
-        Error error = dir.error();
-        error.where = "--shaderlib " + error.where;
-        exit_code = report(error);
-        return;
-      }
-      shaderlib = std::move(*dir);
-    }
-    const std::filesystem::path cache = cache_directory(args->cache_dir, args->no_cache);
-    const BuildStamp stamp = BuildStamp::of(
-        cache, {*variants, args->out,
-                args->shaderlib.empty() ? "" : std::filesystem::absolute(args->shaderlib).string(),
-                *compiler});
-    std::optional<std::vector<std::string>> current;
-    if (!cache.empty()) current = stamp.current();
-    BuildSummary summary;
-    if (current) {
-      summary.inputs = *current;
-    } else {
-      const BuildOptions options{
-          .jobs = args->jobs,
-          .hlsl = {.compiler = *compiler, .timeout = std::chrono::seconds(args->hlsl_timeout)},
-          .keep_going = args->keep_going,
-          .shaderlib = shaderlib,
-          .cache_dir = cache,
-          .progress = !args->quiet && isatty(STDERR_FILENO) ? terminal_progress() : nullptr};
-      auto built = build_library(*variants, args->out, options, stderr_diagnostics(args->verbose));
-      if (!built) {
-        exit_code = report(built.error());
-        return;
-      }
-      summary = std::move(*built);
-      if (!cache.empty()) {
-        stamp.record(shaderlib->on_disk() ? summary.inputs : std::vector<std::string>{});
-      }
-    }
-    if (!args->depfile.empty()) {
-      const std::string text = depfile_text(args->out, args->manifest, *shaderlib, summary);
-      if (Status written = write_file_atomic(args->depfile, text); !written) {
-        Error error = written.error();
-        error.where = "--depfile " + args->depfile;
-        exit_code = report(error);
-        return;
-      }
-    }
-    if (!args->quiet && current) {
-      std::cout << args->out << " is up to date\n";
-    } else if (!args->quiet) {
-      std::cout << "built " << summary.variants << " variants (" << summary.files
-                << " shader files, " << summary.bytecode << " bytecode files, " << summary.cached
-                << " shaders from the cache) into " << args->out << "\n";
-    }
-    if (compiler->empty() && has_hlsl(*variants)) {
-      std::cerr << "penumbra: no Direct3D bytecode made: no HLSL compiler (give --hlsl-compiler "
-                   "PATH or PENUMBRA_HLSL_COMPILER; in a penumbra checkout, "
-                   "scripts/lib/sid-tools.sh vkd3d installs vkd3d-compiler)\n";
-    }
+    const Status s = run_build(*args);
+    exit_code = s ? kExitOk : report(s.error());
   });
 }
 

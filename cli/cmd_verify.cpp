@@ -155,6 +155,75 @@ Result<std::filesystem::path> results_file(const VerifyArgs& args, const Library
   return own;
 }
 
+// What the arguments ask of verify_library, checked before anything is
+// read: --path, --map-format, --shard and --target.
+Result<VerifyOptions> verify_options(const VerifyArgs& args) {
+  for (const std::string& path : args.paths) {
+    if (!is_path_name(path)) {
+      return make_error(Error::Kind::bad_input, "--path " + path,
+                        "unknown execution path; allowed: " + std::string(kPathNames));
+    }
+  }
+  const std::optional<DepthFormat> map_format = parse_depth_format(args.map_format);
+  if (!map_format) {
+    return make_error(Error::Kind::bad_input, "--map-format " + args.map_format,
+                      "unknown depth format; allowed: " + allowed_depth_formats());
+  }
+  VerifyOptions options{.variants = args.variants,
+                        .targets = {},
+                        .gl = !args.no_gl,
+                        .wine = !args.no_wine,
+                        .paths = args.paths,
+                        .map_format = *map_format,
+                        .bytecode = {},
+                        .shard = {},
+                        .jobs = args.jobs,
+                        .progress = stderr_progress(args.quiet)};
+  if (!args.shard.empty()) {
+    PENUMBRA_TRY_ASSIGN(options.shard, parse_shard(args.shard, "--shard"));
+  }
+  for (const std::string& name : args.targets) {
+    const std::optional<Target> target = parse_target(name);
+    if (!target) {
+      return make_error(Error::Kind::bad_input, "--target " + name,
+                        "unknown target; allowed: " + allowed_targets());
+    }
+    options.targets.push_back(*target);
+  }
+  return options;
+}
+
+// The run, its results written and printed: the exit code, 0 when every
+// check passed, else kExitCheckFailed.
+Result<int> run_verify(const VerifyArgs& args) {
+  PENUMBRA_TRY_ASSIGN(VerifyOptions options, verify_options(args));
+  if (!args.junit.empty()) PENUMBRA_TRY(check_output_file(args.junit, "--junit"));
+  PENUMBRA_TRY_ASSIGN(options.bytecode.compiler, find_hlsl_compiler(args.hlsl_compiler));
+  PENUMBRA_TRY_ASSIGN(const Library library, load_library(args.library));
+  PENUMBRA_TRY_ASSIGN(const std::filesystem::path results, results_file(args, library));
+  limit_software_rasterizers(args.jobs);
+  PENUMBRA_TRY_ASSIGN(const auto engine,
+                      Engine::create({.device = args.device, .validation = args.validation},
+                                     stderr_diagnostics(args.verbose)));
+  PENUMBRA_TRY_ASSIGN(const VerifyReport verified,
+                      verify_library(library, *engine, options, stderr_diagnostics(args.verbose)));
+  if (!results.empty()) {
+    PENUMBRA_TRY(write_file_atomic(results, to_json(verified, library).dump(2) + "\n"));
+  }
+  if (!args.junit.empty()) {
+    PENUMBRA_TRY(write_file_atomic(args.junit, to_junit_xml(to_junit(verified))));
+  }
+  print_summary(verified, args.quiet);
+  if (results.empty()) {
+    std::cout << "results: verify.json not written: " << read_only_note(library) << "\n";
+    if (!args.junit.empty()) std::cout << "JUnit report: " << args.junit << "\n";
+  } else {
+    std::cout << "results: " << results.string() << (args.junit.empty() ? "" : ", " + args.junit)
+              << "\n";
+  }
+  return verified.pass() ? kExitOk : kExitCheckFailed;
+}
+
 }  // namespace
 
 void add_verify_command(CLI::App& app, int& exit_code) {
@@ -186,102 +255,8 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                 "Print no progress and only the failed checks, then the totals");
   add_jobs_option(cmd, args->jobs);
   cmd->callback([args, &exit_code] {
-    for (const std::string& path : args->paths) {
-      if (!is_path_name(path)) {
-        exit_code =
-            report(make_error(Error::Kind::bad_input, "--path " + path,
-                              "unknown execution path; allowed: " + std::string(kPathNames)));
-        return;
-      }
-    }
-    const std::optional<DepthFormat> map_format = parse_depth_format(args->map_format);
-    if (!map_format) {
-      exit_code = report(make_error(Error::Kind::bad_input, "--map-format " + args->map_format,
-                                    "unknown depth format; allowed: " + allowed_depth_formats()));
-      return;
-    }
-    Shard shard;
-    if (!args->shard.empty()) {
-      auto parsed = parse_shard(args->shard, "--shard");
-      if (!parsed) {
-        exit_code = report(parsed.error());
-        return;
-      }
-      shard = *parsed;
-    }
-    if (!args->junit.empty()) {
-      if (Status s = check_output_file(args->junit, "--junit"); !s) {
-        exit_code = report(s.error());
-        return;
-      }
-    }
-    auto compiler = find_hlsl_compiler(args->hlsl_compiler);
-    if (!compiler) {
-      exit_code = report(compiler.error());
-      return;
-    }
-    auto library = load_library(args->library);
-    if (!library) {
-      exit_code = report(library.error());
-      return;
-    }
-    auto results = results_file(*args, *library);
-    if (!results) {
-      exit_code = report(results.error());
-      return;
-    }
-    limit_software_rasterizers(args->jobs);
-    auto engine = Engine::create({.device = args->device, .validation = args->validation},
-                                 stderr_diagnostics(args->verbose));
-    if (!engine) {
-      exit_code = report(engine.error());
-      return;
-    }
-    VerifyOptions options{.variants = args->variants,
-                          .targets = {},
-                          .gl = !args->no_gl,
-                          .wine = !args->no_wine,
-                          .paths = args->paths,
-                          .map_format = *map_format,
-                          .bytecode = {.compiler = *compiler},
-                          .shard = shard,
-                          .jobs = args->jobs,
-                          .progress = stderr_progress(args->quiet)};
-    for (const std::string& name : args->targets) {
-      auto target = parse_target(name);
-      if (!target) {
-        exit_code = report(make_error(Error::Kind::bad_input, "--target " + name,
-                                      "unknown target; allowed: " + allowed_targets()));
-        return;
-      }
-      options.targets.push_back(*target);
-    }
-    auto result = verify_library(*library, **engine, options, stderr_diagnostics(args->verbose));
-    if (!result) {
-      exit_code = report(result.error());
-      return;
-    }
-    if (!results->empty()) {
-      if (Status s = write_file_atomic(*results, to_json(*result, *library).dump(2) + "\n"); !s) {
-        exit_code = report(s.error());
-        return;
-      }
-    }
-    if (!args->junit.empty()) {
-      if (Status s = write_file_atomic(args->junit, to_junit_xml(to_junit(*result))); !s) {
-        exit_code = report(s.error());
-        return;
-      }
-    }
-    print_summary(*result, args->quiet);
-    if (results->empty()) {
-      std::cout << "results: verify.json not written: " << read_only_note(*library) << "\n";
-      if (!args->junit.empty()) std::cout << "JUnit report: " << args->junit << "\n";
-    } else {
-      std::cout << "results: " << results->string()
-                << (args->junit.empty() ? "" : ", " + args->junit) << "\n";
-    }
-    exit_code = result->pass() ? kExitOk : kExitCheckFailed;
+    const Result<int> code = run_verify(*args);
+    exit_code = code ? *code : report(code.error());
   });
 }
 
