@@ -66,7 +66,7 @@ Status measure_scene(const Library& library, Engine& engine, const reference::Sc
   const FloatImage exact = reference::exact_visibility_image(scene, view);
   PictureOptions options;
   options.targets = {Target::spirv};
-  options.gl = false;
+  options.skipped = paths_skipped_by("--no-gl");
   auto& measured = results.scenes[scene.name];
   return render_pictures(
       library, engine, {scene, view.receivers}, options,

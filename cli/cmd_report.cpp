@@ -5,6 +5,7 @@
 #include "hlsl_compiler.hpp"
 #include "jobs.hpp"
 #include "output_file.hpp"
+#include "path_flags.hpp"
 #include "penumbra/report/report.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "validators.hpp"
@@ -21,8 +22,7 @@ struct ReportArgs {
   std::vector<std::string> variants;
   std::vector<std::string> targets;
   std::string hlsl_compiler;
-  bool no_gl = false;
-  bool no_wine = false;
+  std::vector<std::string> skipped;  // from the skip flags (--no-gl, --no-wine)
   bool validation = false;
   bool verbose = false;
   bool quiet = false;  // no progress
@@ -50,8 +50,7 @@ Status run_report(const ReportArgs& args) {
   const fs::path out = args.output.empty() ? library.root / "report" : fs::path(args.output);
   ReportOptions options;
   options.pictures.variants = args.variants;
-  options.pictures.gl = !args.no_gl;
-  options.pictures.wine = !args.no_wine;
+  options.pictures.skipped = args.skipped;
   options.pictures.bytecode = {.compiler = compiler};
   options.pictures.jobs = args.jobs;
   options.pictures.progress = stderr_progress(args.quiet);
@@ -98,10 +97,7 @@ void add_report_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--variant", args->variants, "Only these variants (repeatable)");
   cmd->add_option("--target", args->targets, "Only these targets (repeatable)");
   cmd->add_option("--hlsl-compiler", args->hlsl_compiler, kHlslCompilerHelp);
-  cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
-  cmd->add_flag(
-      "--no-wine", args->no_wine,
-      "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
+  add_skip_flags(cmd, args->skipped);
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->add_flag("-q,--quiet", args->quiet, "Print no progress (runs done of the total)");

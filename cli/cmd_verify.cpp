@@ -6,6 +6,7 @@
 #include "hlsl_compiler.hpp"
 #include "jobs.hpp"
 #include "output_file.hpp"
+#include "path_flags.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "verify_junit.hpp"
@@ -19,11 +20,10 @@ struct VerifyArgs {
   std::vector<std::string> variants;
   std::vector<std::string> targets;
   std::string hlsl_compiler;
-  std::string shard;    // "I/N"; empty: the whole library
-  std::string junit;    // JUnit report to write; empty: none
-  std::string results;  // verify.json to write; empty: LIBRARY/verify.json
-  bool no_gl = false;
-  bool no_wine = false;
+  std::string shard;                 // "I/N"; empty: the whole library
+  std::string junit;                 // JUnit report to write; empty: none
+  std::string results;               // verify.json to write; empty: LIBRARY/verify.json
+  std::vector<std::string> skipped;  // from the skip flags (--no-gl, --no-wine)
   std::vector<std::string> paths;
   std::string map_format = "d32_float";
   bool validation = false;
@@ -158,12 +158,7 @@ Result<std::filesystem::path> results_file(const VerifyArgs& args, const Library
 // What the arguments ask of verify_library, checked before anything is
 // read: --path, --map-format, --shard and --target.
 Result<VerifyOptions> verify_options(const VerifyArgs& args) {
-  for (const std::string& path : args.paths) {
-    if (!is_path_name(path)) {
-      return make_error(Error::Kind::bad_input, "--path " + path,
-                        "unknown execution path; allowed: " + std::string(kPathNames));
-    }
-  }
+  PENUMBRA_TRY(check_path_names(args.paths));
   const std::optional<DepthFormat> map_format = parse_depth_format(args.map_format);
   if (!map_format) {
     return make_error(Error::Kind::bad_input, "--map-format " + args.map_format,
@@ -171,8 +166,7 @@ Result<VerifyOptions> verify_options(const VerifyArgs& args) {
   }
   VerifyOptions options{.variants = args.variants,
                         .targets = {},
-                        .gl = !args.no_gl,
-                        .wine = !args.no_wine,
+                        .skipped = args.skipped,
                         .paths = args.paths,
                         .map_format = *map_format,
                         .bytecode = {},
@@ -240,15 +234,12 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--junit", args->junit, "Also write a JUnit XML report to this file");
   cmd->add_option("--results", args->results,
                   "Write the results (verify.json) to this file (default: LIBRARY/verify.json)");
-  cmd->add_flag("--no-gl", args->no_gl, "Skip the OpenGL driver path");
   cmd->add_option("--path", args->paths,
-                  "Only these execution paths (repeatable): " + std::string(kPathNames));
+                  "Only these execution paths (repeatable): " + path_names());
   cmd->add_option("--map-format", args->map_format,
                   "Depth image of encoded maps (perspective, perspective_reversed): " +
                       allowed_depth_formats());
-  cmd->add_flag(
-      "--no-wine", args->no_wine,
-      "Skip the Direct3D 9, 10 and 11 runtimes under Wine (the d3d9, d3d10, d3d11 paths)");
+  add_skip_flags(cmd, args->skipped);
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->add_flag("-q,--quiet", args->quiet,

@@ -46,14 +46,14 @@ Result<VerifyReport> bytecode_report(const Library& library, const std::string& 
   if (!compiler) return compiler.error();
   auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   if (!engine) return engine.error();
-  return verify_library(library, **engine,
-                        {.variants = {name},
-                         .targets = bytecode_targets(),
-                         .gl = false,
-                         .wine = false,  // tests/d3d runs the runtimes
-                         .paths = {"bytecode"},
-                         .bytecode = {.compiler = *compiler}},
-                        ignore_diagnostics());
+  return verify_library(
+      library, **engine,
+      {.variants = {name},
+       .targets = bytecode_targets(),
+       .skipped = {"gl", "d3d9", "d3d10", "d3d11"},  // tests/d3d runs the runtimes
+       .paths = {"bytecode"},
+       .bytecode = {.compiler = *compiler}},
+      ignore_diagnostics());
 }
 
 // The bytecode path's runs of `name` in `library`.
@@ -185,10 +185,11 @@ TEST(BytecodeExecutionCheck, NotExecutedWithoutTranslatorOrBytecode) {
   }
   auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   ASSERT_TRUE(engine) << engine.error().to_string();
-  auto report = verify_library(
-      (*built)->library(), **engine,
-      {.variants = {"hard"}, .targets = bytecode_targets(), .gl = false, .wine = false},
-      ignore_diagnostics());
+  auto report = verify_library((*built)->library(), **engine,
+                               {.variants = {"hard"},
+                                .targets = bytecode_targets(),
+                                .skipped = {"gl", "d3d9", "d3d10", "d3d11"}},
+                               ignore_diagnostics());
   ASSERT_TRUE(report) << report.error().to_string();
   for (const TargetRun& run : report->variants.at(0).runs) {
     if (run.backend != "bytecode") continue;

@@ -24,9 +24,9 @@ TEST_P(VariantConformance, EveryTargetMatchesTheReferenceOnEveryScene) {
   ASSERT_TRUE(built) << built.error().to_string();
   auto engine = Engine::create({.device = "", .validation = true}, fail_on_validation_messages());
   ASSERT_TRUE(engine) << engine.error().to_string();
-  auto report =
-      verify_library((*built)->library(), **engine,
-                     {.variants = {GetParam()}, .targets = {}, .gl = true}, ignore_diagnostics());
+  auto report = verify_library((*built)->library(), **engine,
+                               {.variants = {GetParam()}, .targets = {}, .skipped = {}},
+                               ignore_diagnostics());
   ASSERT_TRUE(report.ok()) << report.error().to_string();
   for (const DepthCheck& depth : report->depth_checks) {
     EXPECT_TRUE(depth.pass) << "depth pass of " << to_string(depth.target) << " on " << depth.scene

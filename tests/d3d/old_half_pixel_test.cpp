@@ -27,7 +27,8 @@ Result<D3d9Results> verify_on_d3d9(const Library& library) {
   auto engine = Engine::create({.device = "", .validation = false}, ignore_diagnostics());
   if (!engine) return engine.error();
   auto report = verify_library(
-      library, **engine, {.variants = {}, .targets = {Target::hlsl_dx9}, .gl = false, .wine = true},
+      library, **engine,
+      {.variants = {}, .targets = {Target::hlsl_dx9}, .skipped = paths_skipped_by("--no-gl")},
       ignore_diagnostics());
   if (!report) return report.error();
   D3d9Results results;

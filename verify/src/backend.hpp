@@ -184,12 +184,13 @@ Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw
                                          const SceneFixture& fixture, PassProgram program,
                                          const SurfaceStageCompiler& compile);
 
-// Every path, in report order: Vulkan, the Direct3D bytecode through
-// `bytecode`, OpenGL (not executed unless `gl`) on the device `engine` runs
-// on, and the Direct3D 9, 10 and 11 runtimes under Wine (not executed unless
-// `wine`) (backend_list.cpp). A new path is a new backend file and a line there.
-std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine, BytecodeTranslator bytecode,
-                                                   bool gl, bool wine);
+// Every path's backend, in report order (the table in paths.cpp): the
+// bytecode paths through `bytecode`, each of `skipped` (paths with a skip
+// flag) reporting its runs not executed. A new path is a new backend file
+// and a row there.
+std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine,
+                                                   const BytecodeTranslator& bytecode,
+                                                   const std::vector<std::string>& skipped);
 
 // Every target on the Vulkan engine, on the maps (and min-max mips) the
 // scenes hold (vulkan_backend.cpp).
@@ -207,17 +208,21 @@ std::unique_ptr<Backend> bytecode_backend(Engine& engine, BytecodeTranslator tra
 
 // glsl330 and glsl450 through the OpenGL driver (penumbra::gl), on the
 // scenes' normalized depth (gl_backend.cpp). `device` selects the GL device
-// like GlEngineOptions; `requested` false reports every run not executed.
-std::unique_ptr<Backend> gl_backend(bool requested, const std::string& device);
+// like GlEngineOptions; a `not_requested` reason reports every run not
+// executed with it.
+std::unique_ptr<Backend> gl_backend(const std::string& not_requested, const std::string& device);
 
-// The Direct3D targets' bytecode on real Direct3D runtimes, Wine's under
+enum class D3dRuntime;  // penumbra/d3d/engine.hpp
+
+// The Direct3D targets' bytecode on a real Direct3D runtime, Wine's under
 // Xvfb (penumbra::d3d): hlsl_dx9 on d3d9, hlsl_dx10 on d3d10, hlsl_dx11 on
-// d3d11, one backend each, sharing one Wine session started on first use
-// (wine_backend.cpp). Each draws every scene's map with the target's own
-// depth pass and runs the queries on it. `requested` false reports every
-// run not executed.
+// d3d11. The runtimes' backends alive at once share one Wine session,
+// started on first use (wine_backend.cpp). Each draws every scene's map
+// with the target's own depth pass and runs the queries on it. A
+// `not_requested` reason reports every run not executed with it.
 // With `compiler`, each also draws the function form inside an engine's own
 // HLSL, compiled to bytecode by its vkd3d-compiler.
-std::vector<std::unique_ptr<Backend>> wine_backends(bool requested, BytecodeTranslator compiler);
+std::unique_ptr<Backend> wine_backend(D3dRuntime runtime, const std::string& not_requested,
+                                      BytecodeTranslator compiler);
 
 }  // namespace penumbra

@@ -216,8 +216,8 @@ class GlBackend final : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> gl_backend(bool requested, const std::string& device) {
-  if (!requested) return std::make_unique<MissingGlBackend>("not requested (--no-gl)");
+std::unique_ptr<Backend> gl_backend(const std::string& not_requested, const std::string& device) {
+  if (!not_requested.empty()) return std::make_unique<MissingGlBackend>(not_requested);
 #ifdef PENUMBRA_HAS_GL
   auto engine = GlEngine::create(GlEngineOptions{.device = device}, ignore_diagnostics());
   if (!engine) {

@@ -248,10 +248,13 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                         "no such variant in " + library.root.string());
     }
   }
-  for (const std::string& path : options.paths) {
-    if (!is_path_name(path)) {
-      return make_error(Error::Kind::bad_input, "path " + path,
-                        "no such execution path; allowed: " + std::string(kPathNames));
+  for (const auto& [kind, names] :
+       {std::pair{"path ", &options.paths}, std::pair{"skipped path ", &options.skipped}}) {
+    for (const std::string& path : *names) {
+      if (!is_path_name(path)) {
+        return make_error(Error::Kind::bad_input, kind + path,
+                          "no such execution path; allowed: " + path_names());
+      }
     }
   }
   if (options.shard.count < 1 || options.shard.index < 1 ||
@@ -266,8 +269,9 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
   Context ctx{library, engine, precision, {}, {}, {}, options.map_format};
-  // The paths, in report order: a new one is a new backend file and a line here.
-  ctx.backends = all_backends(engine, options.bytecode, options.gl, options.wine);
+  // The paths, in report order: a new one is a new backend file and a row
+  // in paths.cpp.
+  ctx.backends = all_backends(engine, options.bytecode, options.skipped);
   for (const auto& backend : ctx.backends) {
     if (backend->name() == "gl") report.gl_device = backend->device();
   }

@@ -8,6 +8,7 @@
 // cast, and the reference reads it.
 #include <map>
 #include <memory>
+#include <mutex>
 
 #include "backend.hpp"
 #include "engine_shaders.hpp"
@@ -246,24 +247,34 @@ class WineBackend final : public Backend {
 };
 
 // Why the runtimes cannot run here, or empty: checked without starting anything.
-std::string why_missing(bool requested) {
-  if (!requested) return "not requested (--no-wine)";
+std::string why_missing(const std::string& not_requested) {
+  if (!not_requested.empty()) return not_requested;
   if (std::string host = why_no_d3d_host(); !host.empty()) return host;
   const auto session = WineSession::options_from_environment();
   if (auto missing = WineSession::missing_programs(session); !missing.empty()) return missing;
   return {};
 }
 
+// The session of the runtimes' backends alive now, or a new one: one Wine
+// prefix and Xvfb for the three, however many times they are made.
+std::shared_ptr<SharedSession> shared_session() {
+  static std::mutex mutex;
+  static std::weak_ptr<SharedSession> current;
+  const std::lock_guard lock(mutex);
+  std::shared_ptr<SharedSession> session = current.lock();
+  if (!session) {
+    session = std::make_shared<SharedSession>();
+    current = session;
+  }
+  return session;
+}
+
 }  // namespace
 
-std::vector<std::unique_ptr<Backend>> wine_backends(bool requested, BytecodeTranslator compiler) {
-  auto session = std::make_shared<SharedSession>();
-  const std::string missing = why_missing(requested);
-  std::vector<std::unique_ptr<Backend>> backends;
-  for (D3dRuntime runtime : {D3dRuntime::d3d9, D3dRuntime::d3d10, D3dRuntime::d3d11}) {
-    backends.push_back(std::make_unique<WineBackend>(runtime, session, missing, compiler));
-  }
-  return backends;
+std::unique_ptr<Backend> wine_backend(D3dRuntime runtime, const std::string& not_requested,
+                                      BytecodeTranslator compiler) {
+  return std::make_unique<WineBackend>(runtime, shared_session(), why_missing(not_requested),
+                                       std::move(compiler));
 }
 
 }  // namespace penumbra

@@ -17,8 +17,7 @@ namespace penumbra {
 struct PictureOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
   std::vector<Target> targets;        // only these; empty = all the library has
-  bool gl = true;                     // also run glsl330/glsl450 through the OpenGL driver
-  bool wine = true;                   // also run the bytecode on Wine's d3d9, d3d10, d3d11
+  std::vector<std::string> skipped;   // paths not run, as VerifyOptions::skipped
   BytecodeTranslator bytecode = {};   // the Direct3D bytecode path; none: not executed
   int timed_runs = 3;                 // runs of the passes timed; the fastest is reported
   int jobs = 0;  // threads for the references and the sink, this one included; 0: every core

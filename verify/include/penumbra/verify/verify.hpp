@@ -14,25 +14,22 @@
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/support/shard.hpp"
 #include "penumbra/verify/function_form.hpp"
+#include "penumbra/verify/paths.hpp"
 #include "penumbra/verify/progress.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra {
 
-// Every execution path's name, in report order: verify.json's `backend`.
-inline constexpr std::string_view kPathNames = "vulkan, bytecode, gl, d3d9, d3d10, d3d11";
-bool is_path_name(std::string_view name);
-
 struct VerifyOptions {
   std::vector<std::string> variants;  // only these (by name); empty = all
   std::vector<Target> targets;        // only these; empty = all the library has
-  bool gl = true;  // also run glsl330/glsl450 through the OpenGL driver when built with GL
-  // also run the Direct3D bytecode on Wine's d3d9, d3d10 and d3d11 when the
-  // library has bytecode and Wine and the host are here (wine_backends())
-  bool wine = true;
-  // Only these paths (verify.json's backend names: "vulkan", "bytecode",
-  // "gl", "d3d9", "d3d10", "d3d11"); empty = every path.
+  // Paths whose runs are reported not executed, "not requested" (those with
+  // a skip flag, execution_paths(); paths_skipped_by("--no-wine") gives the
+  // Direct3D runtimes'); empty = every path runs where it can.
+  std::vector<std::string> skipped = {};
+  // Only these paths (verify.json's backend names, execution_paths());
+  // empty = every path.
   std::vector<std::string> paths = {};
   // The depth image of maps in a hardware encoding (perspective,
   // perspective_reversed) on the paths that read the Vulkan engine's maps
