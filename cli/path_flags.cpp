@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "penumbra/support/text.hpp"
 #include "penumbra/verify/paths.hpp"
 
 namespace penumbra::cli {
@@ -14,8 +15,7 @@ void add_skip_flags(CLI::App* cmd, std::vector<std::string>& skipped) {
     }
     added.push_back(path.skip_flag);
     const std::vector<std::string> paths = paths_skipped_by(path.skip_flag);
-    std::string names;
-    for (const std::string& name : paths) names += (names.empty() ? "" : ", ") + name;
+    const std::string names = join(std::vector<std::string_view>(paths.begin(), paths.end()), ", ");
     cmd->add_flag_callback(
         std::string(path.skip_flag),
         [&skipped, paths] { skipped.insert(skipped.end(), paths.begin(), paths.end()); },

@@ -6,6 +6,7 @@
 
 #include "backend.hpp"
 #include "penumbra/d3d/engine.hpp"
+#include "penumbra/support/text.hpp"
 
 namespace penumbra {
 namespace {
@@ -60,10 +61,9 @@ std::vector<ExecutionPath> execution_paths() {
 }
 
 std::string path_names() {
-  std::string names;
-  for (const PathRow& row : kPaths)
-    names += (names.empty() ? "" : ", ") + std::string(row.path.name);
-  return names;
+  std::vector<std::string_view> names;
+  for (const PathRow& row : kPaths) names.push_back(row.path.name);
+  return join(names, ", ");
 }
 
 bool is_path_name(std::string_view name) {
