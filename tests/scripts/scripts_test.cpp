@@ -5,7 +5,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_harness.hpp"
 #include "penumbra/support/file.hpp"
 
 namespace penumbra::testing {
@@ -39,25 +39,6 @@ ScriptRun run(const std::string& command) {
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
-
-// A fresh folder under the test temp dir, removed afterwards.
-class Scratch {
- public:
-  explicit Scratch(const std::string& name)
-      : path_(fs::path(::testing::TempDir()) /
-              ("penumbra-scripts-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 TEST(Repository, NoTrackedFileNamesAFolderBesideTheCheckout) {
   if (!fs::exists(kSourceDir / ".git")) GTEST_SKIP() << "not a git checkout";
@@ -103,7 +84,7 @@ TEST(SidTools, RefusesAnUnknownOption) {
 // No archive answers (nothing listens on that loopback port): one error
 // line, exit 1, and the earlier install in that folder is kept.
 TEST(SidTools, SaysWhenNoArchiveAnswersAndKeepsTheEarlierInstall) {
-  Scratch dir("sid-unreachable");
+  ScratchDir dir("sid-unreachable");
   fs::create_directories(dir.path() / "root");
   std::ofstream(dir.path() / "root" / "earlier") << "an earlier install";
   const ScriptRun failed =
@@ -117,7 +98,7 @@ TEST(SidTools, SaysWhenNoArchiveAnswersAndKeepsTheEarlierInstall) {
 }
 
 TEST(PackPortable, RefusesAFolderThatIsNotABuild) {
-  Scratch dir("pack");
+  ScratchDir dir("pack");
   const fs::path dest = dir.path() / "pack";
   fs::create_directories(dest);
   std::ofstream(dest / "earlier") << "an earlier pack";
@@ -137,7 +118,7 @@ TEST(PackPortable, RefusesAFolderThatIsNotABuild) {
 // The pack of this very build runs from its own folder: env.sh puts its
 // penumbra first on PATH, with the libraries packed beside it.
 TEST(PackPortable, PacksThisBuildSoThatItRunsFromThePack) {
-  Scratch dir("pack-build");
+  ScratchDir dir("pack-build");
   const fs::path dest = dir.path() / "pack";
   const ScriptRun packed = run("bash scripts/pack-portable.sh '" +
                                std::string(PENUMBRA_BINARY_DIR) + "' '" + dest.string() + "'");
