@@ -69,24 +69,7 @@ using bench::ChildRun;
 using bench::read_text;
 using bench::run_child;
 
-// An environment for child processes: this one's, with `overrides`.
-class Environment {
- public:
-  explicit Environment(const std::map<std::string, std::string>& overrides) {
-    for (char** entry = environ; *entry; ++entry) {
-      const std::string text = *entry;
-      if (!overrides.contains(text.substr(0, text.find('=')))) strings_.push_back(text);
-    }
-    for (const auto& [name, value] : overrides) strings_.push_back(name + "=" + value);
-    for (std::string& text : strings_) pointers_.push_back(text.data());
-    pointers_.push_back(nullptr);
-  }
-  char* const* get() const { return pointers_.data(); }
-
- private:
-  std::vector<std::string> strings_;
-  std::vector<char*> pointers_;
-};
+using bench::Environment;
 
 // A program on PATH, as a path (posix_spawn does not search).
 std::filesystem::path find_program(const std::string& name) {

@@ -4,12 +4,16 @@
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+
+extern char** environ;
 
 namespace penumbra::bench {
 
@@ -51,6 +55,42 @@ Result<ChildRun> run_child(const std::vector<std::string>& argv, char* const* en
   run.peak_rss_kb = usage.ru_maxrss;
   run.output = read_text(log);
   return run;
+}
+
+Result<double> seconds_to_succeed(const std::vector<std::string>& argv, char* const* env,
+                                  const std::filesystem::path& log) {
+  PENUMBRA_TRY_ASSIGN(const ChildRun run, run_child(argv, env, log));
+  if (run.exit_code != 0) {
+    return make_error(Error::Kind::io, argv[0] + " " + argv[1],
+                      "exited with " + std::to_string(run.exit_code) + ":\n" + run.output);
+  }
+  return run.seconds;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+Environment::Environment(const std::map<std::string, std::string>& overrides) {
+  for (char** entry = environ; *entry; ++entry) {
+    const std::string text = *entry;
+    if (!overrides.contains(text.substr(0, text.find('=')))) strings_.push_back(text);
+  }
+  for (const auto& [name, value] : overrides) strings_.push_back(name + "=" + value);
+  for (std::string& text : strings_) pointers_.push_back(text.data());
+  pointers_.push_back(nullptr);
+}
+
+ScratchRoot::ScratchRoot(const std::string& prefix)
+    : path_(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid()))) {
+  std::filesystem::create_directories(path_);
+}
+
+ScratchRoot::~ScratchRoot() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
 }
 
 }  // namespace penumbra::bench

@@ -3,8 +3,6 @@
 // (alternating, so that a change in the machine's load falls on both), and
 // a check that every N gives the same results: verify.json, and the report's
 // files less their timings (untimed_report_files()).
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -61,36 +59,17 @@ std::map<std::string, std::string> results(const fs::path& library, const fs::pa
 
 // The seconds `argv` takes to exit, its output into `log`.
 Result<double> timed(const std::vector<std::string>& argv, const fs::path& log) {
-  PENUMBRA_TRY_ASSIGN(const bench::ChildRun run, bench::run_child(argv, environ, log));
-  if (run.exit_code != 0) {
-    return make_error(Error::Kind::io, argv[0] + " " + argv[1],
-                      "exited with " + std::to_string(run.exit_code) + ":\n" + run.output);
-  }
-  return run.seconds;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  return bench::seconds_to_succeed(argv, environ, log);
 }
 
 Status run(const Options& options) {
   PENUMBRA_TRY_ASSIGN(const fs::path penumbra, bench::penumbra_executable());
   PENUMBRA_TRY_ASSIGN(const fs::path manifest, bench::default_manifest("default.json"));
   const int jobs = options.jobs > 0 ? options.jobs : int(std::thread::hardware_concurrency());
-  const fs::path root =
-      fs::temp_directory_path() / ("penumbra-bench-jobs-" + std::to_string(::getpid()));
-  struct Cleanup {
-    fs::path root;
-    ~Cleanup() {
-      std::error_code ignored;
-      fs::remove_all(root, ignored);
-    }
-  } cleanup{root};
+  const bench::ScratchRoot scratch("penumbra-bench-jobs-");
+  const fs::path& root = scratch.path();
   const fs::path library = root / "library";
   const fs::path log = root / "child.log";  // each child's output, read back when it fails
-  fs::create_directories(root);
   PENUMBRA_TRY_ASSIGN(
       const double build_seconds,
       timed({penumbra.string(), "build", manifest.string(), "-o", library.string()}, log));
@@ -149,8 +128,8 @@ Status run(const Options& options) {
       "\n| command | --jobs 1 (median s) | --jobs %d (median s) | speed-up |\n|---|---|---|---|\n",
       jobs);
   for (const auto& [command, by_jobs] : seconds) {
-    const double one = median(by_jobs.at(1));
-    const double many = median(by_jobs.at(jobs));
+    const double one = bench::median(by_jobs.at(1));
+    const double many = bench::median(by_jobs.at(jobs));
     std::printf("| %s | %.1f | %.1f | %.2fx |\n", command.c_str(), one, many, one / many);
   }
   std::printf("results identical for --jobs 1 and --jobs %d: %zu files compared\n", jobs,

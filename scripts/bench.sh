@@ -23,6 +23,12 @@
 #                                     against the device's fetch-only texel rate
 #                                     (penumbra_bench_gpu; --device D, --size WxH,
 #                                     --variant V...)
+#   scripts/bench.sh verify --baseline REV [ARGS]
+#                                     verify of the default library by commit REV's
+#                                     penumbra (built in build-baseline/) against
+#                                     this one's, side by side, verify.json
+#                                     compared (penumbra_bench_verify; --cold,
+#                                     --repeats R, --variant V...)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,15 +36,50 @@ source scripts/lib/setup.sh
 
 bench=minmax
 if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy ||
-  $1 == capped || $1 == jobs || $1 == gpu) ]]; then
+  $1 == capped || $1 == jobs || $1 == gpu || $1 == verify) ]]; then
   bench=$1
   shift
 fi
 install_missing_packages
-if [[ $bench == bytecode || $bench == jobs || ($bench == build && " $* " == *" --bytecode "*) ]]; then
+if [[ $bench == bytecode || $bench == jobs || $bench == verify ||
+  ($bench == build && " $* " == *" --bytecode "*) ]]; then
   install_hlsl_compiler
+fi
+
+# build_baseline REV: commit REV's penumbra, built as build/ is (the
+# benchmark compares like with like) in build-baseline/ from a worktree of
+# it there; prints the executable's path.
+build_baseline() {
+  local rev
+  if ! rev="$(git rev-parse --verify --quiet "$1^{commit}")"; then
+    echo "bench.sh: error: --baseline $1: no such commit in this checkout" >&2
+    exit 2
+  fi
+  local dir=build-baseline
+  if [ ! -e "$dir/source/.git" ]; then
+    rm -rf "$dir/source"
+    git worktree add --force --detach "$dir/source" "$rev" >&2
+  fi
+  git -C "$dir/source" checkout --quiet --detach "$rev"
+  (cd "$dir/source" && configure_and_build ../build penumbra_cli "${PENUMBRA_DEVELOPER_CONFIG[@]}" >&2)
+  echo "$PWD/$dir/build/penumbra"
+}
+
+args=("$@")
+if [[ $bench == verify ]]; then
+  args=()
+  while [[ $# -gt 0 ]]; do
+    if [[ $1 == --baseline && $# -gt 1 ]]; then
+      baseline="$(build_baseline "$2")" # exits here when it fails (set -e)
+      args+=(--baseline "$baseline")
+      shift 2
+    else
+      args+=("$1")
+      shift
+    fi
+  done
 fi
 configure_and_build build "penumbra_bench_$bench" "${PENUMBRA_DEVELOPER_CONFIG[@]}"
 # One Xvfb and Wine prefix for every verify and report the benchmark runs.
-if [[ $bench == jobs ]]; then start_wine_session; fi
-"build/bench/penumbra_bench_$bench" "$@"
+if [[ $bench == jobs || $bench == verify ]]; then start_wine_session; fi
+"build/bench/penumbra_bench_$bench" "${args[@]}"

@@ -146,8 +146,9 @@ class Backend {
 };
 
 // `entry`'s function form for `target` drawn on `backend`, the scene's map
-// drawn on `engine` by the target's depth pass (function_form.cpp).
-Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
+// drawn on `engine` by the target's depth pass, its ray casts from `truths`
+// (function_form.cpp).
+Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, SceneTruths& truths,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target, DepthFormat map_format);
 
@@ -158,8 +159,9 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
 
 // `entry`'s deferred pass for `target` run on `backend`, the scene's map
-// drawn on `engine` by the target's depth pass (deferred_mask.cpp).
-Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
+// drawn on `engine` by the target's depth pass, its ray casts from `truths`
+// (deferred_mask.cpp).
+Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, SceneTruths& truths,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target, DepthFormat map_format);
 

@@ -6,10 +6,11 @@
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/verify/shadow_params.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 
-Result<CameraStage> camera_stage(Engine& engine, const Library& library,
+Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Library& library,
                                  const LibraryVariant& entry, Target target,
                                  DepthFormat map_format) {
   CameraStage out;
@@ -17,11 +18,11 @@ Result<CameraStage> camera_stage(Engine& engine, const Library& library,
   out.stage.scene = reference::for_map_encoding(out.stage.scene, map_encoding(entry.variant.keys));
   out.width = out.stage.scene.receivers_width;
   out.height = out.stage.scene.receivers_height;
-  out.view = reference::view(out.stage, out.width, out.height);
+  out.view = truths.view(out.stage, out.width, out.height);
   PENUMBRA_TRY_ASSIGN(ExecutableProgram depth,
                       load_executable(library, entry, PassKind::depth, target));
-  PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, depth.program, target, out.stage.scene,
-                                                 out.view.receivers, map_format));
+  PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, truths, depth.program, target,
+                                                 out.stage.scene, out.view.receivers, map_format));
   out.depth = std::move(depth.program.reflection);
   return out;
 }

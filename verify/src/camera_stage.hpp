@@ -23,10 +23,11 @@ struct CameraStage {
   int height = 0;
 };
 
-// The report's stage for `entry`'s checks on `target`, its map drawn on
-// `engine` into a `map_format` depth image where prepare_scene() allows.
-// Errors: loading or running the depth pass.
-Result<CameraStage> camera_stage(Engine& engine, const Library& library,
+// The report's stage for `entry`'s checks on `target` (its view and ray
+// cast from `truths`), its map drawn on `engine` into a `map_format` depth
+// image where prepare_scene() allows. Errors: loading or running the depth
+// pass.
+Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Library& library,
                                  const LibraryVariant& entry, Target target,
                                  DepthFormat map_format);
 

@@ -13,6 +13,7 @@
 #include "camera_stage.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/target_traits.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -211,7 +212,7 @@ FloatImage rebuild_error_bound(const FloatImage& depth, const Matrix4& camera_in
 
 }  // namespace
 
-Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
+Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, SceneTruths& truths,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target, DepthFormat map_format) {
   const auto pass = entry.reflection.find(PassKind::deferred);
@@ -220,7 +221,8 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend,
         Error::Kind::bad_input, entry.variant.name,
         "the library has no deferred pass for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target, map_format));
+  PENUMBRA_TRY_ASSIGN(CameraStage camera,
+                      camera_stage(engine, truths, library, entry, target, map_format));
   EngineFormCheck check = started_check(entry, target, backend);
   const Matrix4 camera_matrix = camera_clip(camera.stage, camera.width, camera.height, target);
   const Matrix4 camera_inverse = inverse(camera_matrix);
@@ -276,7 +278,8 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& libra
                                             const LibraryVariant& entry, Target target,
                                             DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
-  return check_deferred_mask(engine, *vulkan, library, entry, target, map_format);
+  SceneTruths truths;
+  return check_deferred_mask(engine, *vulkan, truths, library, entry, target, map_format);
 }
 
 }  // namespace penumbra

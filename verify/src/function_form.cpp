@@ -8,6 +8,7 @@
 #include "engine_shaders.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/support/file.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -51,7 +52,7 @@ FloatImage clip_error_bound(const FloatImage& clip, int w_channel, const LightCl
 
 }  // namespace
 
-Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
+Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, SceneTruths& truths,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target, DepthFormat map_format) {
   const auto form = entry.function.find(target);
@@ -60,7 +61,8 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend,
         Error::Kind::bad_input, entry.variant.name,
         "the library has no function form for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(CameraStage camera, camera_stage(engine, library, entry, target, map_format));
+  PENUMBRA_TRY_ASSIGN(CameraStage camera,
+                      camera_stage(engine, truths, library, entry, target, map_format));
   EngineFormCheck check = started_check(entry, target, backend);
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
   SurfaceDraw draw;
@@ -101,7 +103,8 @@ Result<EngineFormCheck> check_function_form(Engine& engine, const Library& libra
                                             const LibraryVariant& entry, Target target,
                                             DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
-  return check_function_form(engine, *vulkan, library, entry, target, map_format);
+  SceneTruths truths;
+  return check_function_form(engine, *vulkan, truths, library, entry, target, map_format);
 }
 
 }  // namespace penumbra

@@ -9,6 +9,7 @@
 #include "penumbra/compiler/text_frontend.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 #include "scene_fixture.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -46,8 +47,9 @@ double mean(const FloatImage& image) {
 Result<SceneFixture> draw_scene(const Library& library, Engine& engine, const LibraryVariant& entry,
                                 const PictureScene& scene, int runs, double* depth_ms) {
   PENUMBRA_TRY_ASSIGN(auto depth, load_executable(library, entry, PassKind::depth, kTarget));
-  PENUMBRA_TRY_ASSIGN(SceneFixture fixture,
-                      prepare_scene(engine, depth.program, kTarget, scene.scene, scene.receivers));
+  SceneTruths truths;
+  PENUMBRA_TRY_ASSIGN(SceneFixture fixture, prepare_scene(engine, truths, depth.program, kTarget,
+                                                          scene.scene, scene.receivers));
   if (!depth_ms) return fixture;
   const reference::Scene& s = scene.scene;
   const auto triangles = reference::triangles(s);

@@ -15,6 +15,7 @@
 #include "penumbra/reference/techniques.hpp"
 #include "progress_counter.hpp"
 #include "scene_fixture.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -50,8 +51,8 @@ class TargetStages {
  private:
   Result<TargetScenes> prepare(const LibraryVariant& entry, Target target) {
     PENUMBRA_TRY_ASSIGN(auto depth, load_executable(library_, entry, PassKind::depth, target));
-    PENUMBRA_TRY_ASSIGN(auto fixture, prepare_scene(engine_, depth.program, target, scene_.scene,
-                                                    scene_.receivers));
+    PENUMBRA_TRY_ASSIGN(auto fixture, prepare_scene(engine_, truths_, depth.program, target,
+                                                    scene_.scene, scene_.receivers));
     TargetScenes scenes;
     scenes.scenes.push_back(std::move(fixture));
     return scenes;
@@ -68,6 +69,7 @@ class TargetStages {
   const Library& library_;
   Engine& engine_;
   const PictureScene& scene_;
+  SceneTruths truths_;  // the scene's ray cast, once for every target
   std::map<std::pair<Target, MapEncoding>, Result<TargetScenes>> prepared_;
 };
 

@@ -1,6 +1,11 @@
 #include "scene_checks.hpp"
 
+#include <cstring>
+#include <functional>
+#include <string_view>
+
 #include "chain_check.hpp"
+#include "memo.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 
@@ -35,7 +40,49 @@ Result<SceneRun> check_scene(const SceneOutput& gpu, const reference::ReferenceI
   return scene;
 }
 
+// An image in a key: equal when its values are, byte for byte (a NaN
+// equals itself, -0 does not equal 0), with a hash to tell most apart fast.
+struct ImageKey {
+  explicit ImageKey(const FloatImage& i)
+      : image(&i),
+        hash(std::hash<std::string_view>{}(
+            {reinterpret_cast<const char*>(i.data.data()), i.data.size() * sizeof(float)})) {}
+  bool operator==(const ImageKey& o) const {
+    return hash == o.hash && image->width == o.image->width && image->height == o.image->height &&
+           image->channels == o.image->channels &&
+           std::memcmp(image->data.data(), o.image->data.data(),
+                       image->data.size() * sizeof(float)) == 0;
+  }
+  const FloatImage* image;  // outlives the key: the fixture's, or a run's output
+  std::size_t hash;
+};
+
+// What reference_on_map() reads beside the variant and the precision.
+struct ReferenceKey {
+  reference::Scene scene;  // its light
+  reference::ShaderLimits limits;
+  std::optional<reference::EncodedDepth> encoded;
+  ImageKey map;  // as the reference reads it: as stored where encoded, else linear z
+  ImageKey receivers;
+  bool operator==(const ReferenceKey&) const = default;
+};
+
 }  // namespace
+
+class VariantReferences {
+ public:
+  const Result<reference::ReferenceImage>& get(
+      const ReferenceKey& key, const std::function<Result<reference::ReferenceImage>()>& make) {
+    return memo_.get(key, make);
+  }
+
+ private:
+  Memo<ReferenceKey, Result<reference::ReferenceImage>> memo_;
+};
+
+std::shared_ptr<VariantReferences> variant_references() {
+  return std::make_shared<VariantReferences>();
+}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -53,22 +100,21 @@ TargetRun failed_run(Target target, std::string backend, const Error& error) {
 void check_scene_of_runs(PendingTarget& target_runs, const Variant& variant, Target target,
                          std::size_t s, const SceneFixture& fixture,
                          const reference::SamplingPrecision& precision) {
-  const auto reference_on = [&](const FloatImage& stored, const FloatImage& linear) {
-    return reference_on_map(variant, fixture, stored, linear, precision,
-                            reference::shader_limits(target));
+  const reference::ShaderLimits limits = reference::shader_limits(target);
+  const auto reference_on = [&](const FloatImage& stored, const FloatImage& linear) -> const auto& {
+    const ReferenceKey key{fixture.scene, limits, fixture.encoded,
+                           ImageKey(fixture.encoded ? stored : linear),
+                           ImageKey(fixture.receivers)};
+    return target_runs.references->get(
+        key, [&] { return reference_on_map(variant, fixture, stored, linear, precision, limits); });
   };
-  std::optional<Result<reference::ReferenceImage>> on_fixture;
   for (PendingRun& pending : target_runs.runs) {
     if (pending.outputs.empty()) continue;
     const auto start = Clock::now();
     const SceneOutput& gpu = pending.outputs[s];
-    std::optional<Result<reference::ReferenceImage>> own;
-    if (gpu.own_linear_depth) {
-      own = reference_on(*gpu.own_stored_depth, *gpu.own_linear_depth);
-    } else if (!on_fixture) {
-      on_fixture = reference_on(fixture.normalized_depth, fixture.linear_depth);
-    }
-    const Result<reference::ReferenceImage>& expected = own ? *own : *on_fixture;
+    const Result<reference::ReferenceImage>& expected =
+        gpu.own_linear_depth ? reference_on(*gpu.own_stored_depth, *gpu.own_linear_depth)
+                             : reference_on(fixture.normalized_depth, fixture.linear_depth);
     pending.checked[s] = expected ? check_scene(gpu, *expected, variant, fixture, precision)
                                   : Result<SceneRun>(expected.error());
     pending.check_seconds[s] = seconds_since(start);

@@ -32,16 +32,27 @@ struct PendingRun {
   std::vector<double> check_seconds;   // per scene
 };
 
+// One variant's references, shared by the checks of all its targets and
+// paths: each computed once per distinct input (the scene, the target's
+// shader limits, the map's encoding and its content, byte for byte), by
+// whichever check asks first. The targets' maps are mostly the same
+// texels, so a variant's seven targets and Wine's own maps need only a few.
+class VariantReferences;
+std::shared_ptr<VariantReferences> variant_references();
+
 // Every path's run of one (variant, target).
 struct PendingTarget {
   std::vector<PendingRun> runs;
   std::atomic<std::size_t> unchecked{0};  // scenes whose checks have not finished
   std::string label;                      // "variant [target]", for the progress
+  // Its variant's, until its last check has finished (then the references
+  // are freed once every target of the variant is done).
+  std::shared_ptr<VariantReferences> references;
 };
 
 // Scene `s` (`fixture`) of every run in `target_runs` against the
-// reference of `target`'s shader, computed once for the runs on the
-// fixture's map (a path's own map gets its own). Reads no map the device
+// reference of `target`'s shader on the map the run read (the fixture's,
+// or a path's own), from `target_runs.references`. Reads no map the device
 // thread may change.
 void check_scene_of_runs(PendingTarget& target_runs, const Variant& variant, Target target,
                          std::size_t s, const SceneFixture& fixture,

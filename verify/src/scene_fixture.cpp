@@ -7,6 +7,7 @@
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/verify/shadow_params.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -26,15 +27,36 @@ bool same_surface(float a, float b) {
 
 }  // namespace
 
-DepthCheck check_depth(const reference::Scene& scene, Target target, const FloatImage& gpu,
-                       const std::string& backend,
-                       const std::optional<reference::EncodedDepth>& quantized) {
-  const FloatImage expected = reference::ray_cast_depth(scene, gpu.width, gpu.height, scene.far_z);
+DepthTruth depth_truth(const reference::Scene& scene, int width, int height) {
+  DepthTruth truth;
+  truth.surface = reference::ray_cast_depth(scene, width, height, scene.far_z);
   std::vector<FloatImage> near;
   for (const std::array<double, 2> within :
        {std::array{kClearance, 0.0}, std::array{-kClearance, 0.0}, std::array{0.0, kClearance},
         std::array{0.0, -kClearance}}) {
-    near.push_back(reference::ray_cast_depth(scene, gpu.width, gpu.height, scene.far_z, within));
+    near.push_back(reference::ray_cast_depth(scene, width, height, scene.far_z, within));
+  }
+  truth.clear.resize(truth.surface.data.size());
+  for (std::size_t k = 0; k < truth.clear.size(); ++k) {
+    truth.clear[k] = std::all_of(near.begin(), near.end(), [&](const FloatImage& n) {
+      return same_surface(truth.surface.data[k], n.data[k]);
+    });
+  }
+  return truth;
+}
+
+DepthCheck check_depth(const reference::Scene& scene, Target target, const FloatImage& gpu,
+                       const std::string& backend,
+                       const std::optional<reference::EncodedDepth>& quantized) {
+  return check_depth(depth_truth(scene, gpu.width, gpu.height), scene, target, gpu, backend,
+                     quantized);
+}
+
+DepthCheck check_depth(const DepthTruth& truth, const reference::Scene& scene, Target target,
+                       const FloatImage& gpu, const std::string& backend,
+                       const std::optional<reference::EncodedDepth>& quantized) {
+  if (truth.surface.width != gpu.width || truth.surface.height != gpu.height) {
+    return check_depth(scene, target, gpu, backend, quantized);
   }
   DepthCheck check;
   check.scene = scene.name;
@@ -43,11 +65,8 @@ DepthCheck check_depth(const reference::Scene& scene, Target target, const Float
   if (quantized) check.map_format = quantized->format;
   for (int j = 0; j < gpu.height; ++j) {
     for (int i = 0; i < gpu.width; ++i) {
-      const float centre = expected.at(i, j);
-      if (!std::all_of(near.begin(), near.end(),
-                       [&](const FloatImage& n) { return same_surface(centre, n.at(i, j)); })) {
-        continue;
-      }
+      if (!truth.clear[std::size_t(j) * gpu.width + i]) continue;
+      const float centre = truth.surface.at(i, j);
       ++check.texels;
       const double error = std::abs(double(gpu.at(i, j)) - centre);
       check.max_abs_error = std::max(check.max_abs_error, error);
@@ -64,9 +83,9 @@ DepthCheck check_depth(const reference::Scene& scene, Target target, const Float
   return check;
 }
 
-Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
-                                   const reference::Scene& scene, FloatImage receivers,
-                                   DepthFormat map_format) {
+Result<SceneFixture> prepare_scene(Engine& engine, SceneTruths& truths, const PassProgram& depth,
+                                   Target target, const reference::Scene& scene,
+                                   FloatImage receivers, DepthFormat map_format) {
   SceneFixture fixture;
   fixture.scene = scene;
   const float depth_scale = depth_scale_for(scene.far_z);
@@ -92,8 +111,9 @@ Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Tar
   fixture.normalized_depth = std::move(*stored);
   fixture.receivers = std::move(receivers);
   fixture.colour = reference::scene_colour(scene.receivers_width, scene.receivers_height);
+  fixture.depth_truth = truths.depth(scene, scene.map_width, scene.map_height);
   fixture.depth_check =
-      check_depth(scene, target, fixture.linear_depth, "vulkan",
+      check_depth(*fixture.depth_truth, scene, target, fixture.linear_depth, "vulkan",
                   fixture.map_format() != DepthFormat::d32_float ? fixture.encoded : std::nullopt);
   fixture.depth_check.map_encoding = encoding;
   return fixture;

@@ -15,6 +15,18 @@
 
 namespace penumbra {
 
+// What a depth check holds a map of a scene against: the ray cast at each
+// texel's centre, and whether that centre lies clear of every occluder's
+// edge. It depends on the scene and the map's size alone, so verify casts
+// it once per scene (SceneTruths), whatever target or path drew the map.
+struct DepthTruth {
+  FloatImage surface;       // 1 channel: the ray cast's linear z at each centre
+  std::vector<bool> clear;  // per texel, row 0 first
+};
+
+// `scene`'s truth for a `width` x `height` map.
+DepthTruth depth_truth(const reference::Scene& scene, int width, int height);
+
 struct SceneFixture {
   reference::Scene scene;
   ParamBlock params;
@@ -29,6 +41,9 @@ struct SceneFixture {
   FloatImage receivers;  // (u, v, z_r)
   FloatImage colour;     // what screen_blur's composite draws over (reference::scene_colour)
   DepthCheck depth_check;
+  // What a map of the scene is held against (a path that draws its own
+  // checks it against the same).
+  std::shared_ptr<const DepthTruth> depth_truth;
 
   // The depth image the map's readers sample: D32_SFLOAT unless encoded.
   DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }
@@ -53,13 +68,22 @@ DepthCheck check_depth(const reference::Scene& scene, Target target, const Float
                        const std::string& backend,
                        const std::optional<reference::EncodedDepth>& quantized = {});
 
+// The same against `truth`, `scene`'s depth_truth() for `linear`'s size.
+DepthCheck check_depth(const DepthTruth& truth, const reference::Scene& scene, Target target,
+                       const FloatImage& linear, const std::string& backend,
+                       const std::optional<reference::EncodedDepth>& quantized = {});
+
+class SceneTruths;  // scene_truths.hpp
+
 // `scene` rendered by `depth`, with `receivers` (u, v, z_r per pixel; the
-// scene's receivers_width x receivers_height). An encoded map is drawn into
-// a `map_format` depth image, as an engine's D24 or D16 map, on the targets
-// that compare (hlsl_dx9's map is its R32F target); a linear map, the
-// library's own depth pass, is always D32_SFLOAT.
-Result<SceneFixture> prepare_scene(Engine& engine, const PassProgram& depth, Target target,
-                                   const reference::Scene& scene, FloatImage receivers,
+// scene's receivers_width x receivers_height), its depth check against
+// `truths`' ray cast. An encoded map is drawn into a `map_format` depth
+// image, as an engine's D24 or D16 map, on the targets that compare
+// (hlsl_dx9's map is its R32F target); a linear map, the library's own depth
+// pass, is always D32_SFLOAT.
+Result<SceneFixture> prepare_scene(Engine& engine, SceneTruths& truths, const PassProgram& depth,
+                                   Target target, const reference::Scene& scene,
+                                   FloatImage receivers,
                                    DepthFormat map_format = DepthFormat::d32_float);
 
 // `stored` (a map in `encoded`'s encoding, or linear z * depth_scale when

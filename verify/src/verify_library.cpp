@@ -12,6 +12,7 @@
 #include "progress_counter.hpp"
 #include "scene_checks.hpp"
 #include "scene_fixture.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -33,16 +34,18 @@ struct Context {
   // Maps whose depth pass could not run: every run on them fails with this.
   std::map<MapKey, Error> broken_targets;
   DepthFormat map_format = DepthFormat::d32_float;  // VerifyOptions::map_format
+  SceneTruths truths;                               // every target's and check's ray casts
 };
 
 // `entry`'s function form or deferred pass (`check`) for `target` on
 // `backend`; one that cannot run fails with why.
-using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, const Library&,
-                                                      const LibraryVariant&, Target, DepthFormat);
+using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, SceneTruths&,
+                                                      const Library&, const LibraryVariant&, Target,
+                                                      DepthFormat);
 EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend& backend,
                                 const LibraryVariant& entry, Target target) {
   const auto start = Clock::now();
-  auto check = checker(ctx.engine, backend, ctx.library, entry, target, ctx.map_format);
+  auto check = checker(ctx.engine, backend, ctx.truths, ctx.library, entry, target, ctx.map_format);
   EngineFormCheck out = check ? std::move(*check) : EngineFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
@@ -112,7 +115,7 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
     const reference::Scene scene =
         reference::for_map_encoding(builtin, map_encoding(entry.variant.keys));
     auto fixture = prepare_scene(
-        ctx.engine, depth->program, target, scene,
+        ctx.engine, ctx.truths, depth->program, target, scene,
         reference::receivers(scene, scene.receivers_width, scene.receivers_height), ctx.map_format);
     if (!fixture) return fixture.error();
     report.depth_checks.push_back(fixture->depth_check);
@@ -268,7 +271,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   report.device = engine.device_info();
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
-  Context ctx{library, engine, precision, {}, {}, {}, options.map_format};
+  Context ctx{library, engine, precision, {}, {}, {}, options.map_format, {}};
   // The paths, in report order: a new one is a new backend file and a row
   // in paths.cpp.
   ctx.backends = all_backends(engine, options.bytecode, options.skipped);
@@ -292,6 +295,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
       const LibraryVariant& entry = library.variants[i];
       if (!wanted(options.variants, entry.variant.name)) continue;
       PendingVariant& variant = pending.emplace_back(PendingVariant{i, {}, false});
+      const std::shared_ptr<VariantReferences> references = variant_references();
       for (Target target : entry.variant.targets) {
         if (!wanted(options.targets, target)) continue;
         if (!in_shard(options.shard, i, target)) {
@@ -342,12 +346,16 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
           report.deferred_checks.push_back(
               run_engine_form(ctx, check_deferred_mask, *backend, entry, target));
         }
+        target_runs->references = references;
         target_runs->unchecked = scenes.scenes.size();
         for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {
           work.submit([&ctx, &runs = *target_runs, &entry, target, s, &fixture = scenes.scenes[s],
                        &progress] {
             check_scene_of_runs(runs, entry.variant, target, s, fixture, ctx.precision);
-            if (--runs.unchecked == 0) progress.finished(runs.label);
+            if (--runs.unchecked == 0) {
+              runs.references.reset();
+              progress.finished(runs.label);
+            }
           });
         }
         variant.targets.push_back(std::move(target_runs));

@@ -143,7 +143,7 @@ class WineBackend final : public Backend {
           if (!drawn->checked) {
             const DepthFormat format = fixture.map_format();
             output.own_depth_check =
-                check_depth(fixture.scene, target, *drawn->linear, name(),
+                check_depth(*fixture.depth_truth, fixture.scene, target, *drawn->linear, name(),
                             format != DepthFormat::d32_float ? fixture.encoded : std::nullopt);
             output.own_depth_check->map_encoding = fixture.depth_check.map_encoding;
             output.own_depth_check->map_format = format;

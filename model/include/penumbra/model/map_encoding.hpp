@@ -30,6 +30,8 @@ inline constexpr MapEncoding kAllMapEncodings[] = {MapEncoding::linear, MapEncod
 struct DepthRange {
   double near_plane = 9.5;
   double far_plane = 32.0;
+
+  bool operator==(const DepthRange&) const = default;
 };
 
 // The value an encoding stores for linear light-view z, and its inverse.

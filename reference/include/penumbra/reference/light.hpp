@@ -30,6 +30,8 @@ struct LightParams {
 
   // pcf_poisson's filter radius for a map `map_width` texels wide.
   double filter_radius(int map_width) const { return filter_radius_uv.value_or(2.0 / map_width); }
+
+  bool operator==(const LightParams&) const = default;
 };
 
 struct UV {

@@ -21,6 +21,8 @@ struct Rect {
   double x1 = 0.0;
   double y1 = 0.0;
   double z = 0.0;
+
+  bool operator==(const Rect&) const = default;
 };
 
 // A solid occluder: x in [x0, x1), y in [y0, y1), z in [z0, z1], its face
@@ -32,6 +34,8 @@ struct Box {
   double y1 = 0.0;
   double z0 = 0.0;
   double z1 = 0.0;
+
+  bool operator==(const Box&) const = default;
 };
 
 struct Scene {
@@ -50,6 +54,8 @@ struct Scene {
   int receivers_width = 200;
   int receivers_height = 168;
   double far_z = 32.0;  // the depth of an empty texel (a cleared map)
+
+  bool operator==(const Scene&) const = default;
 };
 
 // The project's scenes; names are unique and stable.

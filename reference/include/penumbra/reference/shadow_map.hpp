@@ -21,6 +21,8 @@ struct EncodedDepth {
   MapEncoding encoding = MapEncoding::perspective;
   DepthRange range;
   DepthFormat format = DepthFormat::d32_float;  // the depth texture holding it
+
+  bool operator==(const EncodedDepth&) const = default;
 };
 
 // How far from a texel's depth z a receiver's (biased) depth must lie for

@@ -17,6 +17,8 @@ struct Camera {
   std::array<double, 3> eye{0.5, 10.5, 4.5};      // light-view position
   std::array<double, 3> target{0.0, -0.6, 13.6};  // the point at the picture's centre
   double vertical_fov_degrees = 44.0;             // the picture's vertical field of view
+
+  bool operator==(const Camera&) const = default;
 };
 
 // The camera's frame for a `width` x `height` picture: pixel (i, j) sees
@@ -38,6 +40,8 @@ struct Stage {
   Scene scene;                     // the boxes, light and receiver plane (the ground)
   double ground_half_width = 4.2;  // the ground tile: |x|, |y| <= this, inside the map
   Camera camera;
+
+  bool operator==(const Stage&) const = default;
 };
 
 // What a camera pixel sees.

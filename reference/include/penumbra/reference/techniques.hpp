@@ -40,6 +40,8 @@ struct ShaderLimits {
   // traits(target).walk_step_limit: the cap on a min-max walk's steps
   // (0: none). A walk it stops returns what it reached (walk_step_bound()).
   int walk_steps = 0;
+
+  bool operator==(const ShaderLimits&) const = default;
 };
 
 // The limits of `target`'s shaders (its traits).
