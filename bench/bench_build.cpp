@@ -30,8 +30,8 @@
 #include "bench_child.hpp"
 #include "bench_files.hpp"
 #include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/model/target_traits.hpp"
 
 extern char** environ;

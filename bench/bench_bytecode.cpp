@@ -19,9 +19,9 @@
 
 #include "bench_files.hpp"
 #include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/support/process.hpp"
 
 namespace penumbra {

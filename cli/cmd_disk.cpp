@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "penumbra/compiler/disk.hpp"
+#include "penumbra/library/disk_json.hpp"
 #include "validators.hpp"
 
 namespace penumbra::cli {

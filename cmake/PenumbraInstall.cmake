@@ -3,7 +3,8 @@
 # find_package(Penumbra CONFIG [COMPONENTS shaders compiler runtime]) from
 # P/lib/cmake/Penumbra:
 #   shaders   Penumbra::shaders (the lookup over embedded shaders, with
-#             Penumbra::model and Penumbra::support), the executable
+#             Penumbra::model and Penumbra::support), Penumbra::library
+#             (load_library(): a built library's index.json), the executable
 #             Penumbra::penumbra and penumbra_add_shader_library(); always
 #             loaded; needs nlohmann_json only.
 #   compiler  Penumbra::compiler; loaded when no component is named, or
@@ -18,10 +19,10 @@ set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
 set(PENUMBRA_INSTALL_SHADERLIBDIR ${CMAKE_INSTALL_DATADIR}/penumbra/shaderlib)
 
 set_target_properties(penumbra_cli PROPERTIES EXPORT_NAME penumbra)
-install(TARGETS penumbra_support penumbra_model penumbra_shaders EXPORT PenumbraTargets
+install(TARGETS penumbra_support penumbra_model penumbra_library penumbra_shaders EXPORT PenumbraTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS penumbra_cli EXPORT PenumbraTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY support/include/ model/include/ shaders/include/
+install(DIRECTORY support/include/ model/include/ library/include/ shaders/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT PenumbraTargets NAMESPACE Penumbra:: DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 install(FILES cmake/PenumbraShaderLibrary.cmake DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})

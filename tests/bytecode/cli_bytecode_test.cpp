@@ -6,7 +6,7 @@
 
 #include "cli_harness.hpp"
 #include "hlsl_compiler.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 
 namespace penumbra::testing {
 namespace {

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "cli_harness.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/scene.hpp"

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_harness.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/screen_blur.hpp"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/model/model.hpp"
 
 namespace penumbra::testing {

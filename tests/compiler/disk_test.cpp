@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "penumbra/library/disk_json.hpp"
+
 namespace penumbra {
 namespace {
 

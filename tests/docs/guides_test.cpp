@@ -17,7 +17,7 @@
 
 #include "default_library.hpp"
 #include "guide_check.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 
 namespace penumbra::testing {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "embed_test/shaders.hpp"
 #include "embed_whole/shaders.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/support/file.hpp"
 
 namespace penumbra::testing {

@@ -68,6 +68,13 @@ run(${CMAKE_COMMAND} -S ${embedded_src} -B ${embedded} ${common_args}
 run(${CMAKE_COMMAND} --build ${embedded})
 run(${embedded}/embedded)
 message(STATUS "${run_output}")
+# index.json read back by a program linking Penumbra::library, built without glslang.
+run(${prefix}/bin/penumbra build ${embedded_src}/manifest.json -o ${WORK_DIR}/embedded_library)
+run(${embedded}/index_reader ${WORK_DIR}/embedded_library)
+if(NOT run_output MATCHES "index_reader: pcss[^:]*: [a-z]")
+  message(FATAL_ERROR "install test: index_reader listed no pcss variant:\n${run_output}")
+endif()
+message(STATUS "${run_output}")
 run(${CMAKE_COMMAND} --build ${embedded} --verbose)
 if(GENERATOR STREQUAL "Ninja" AND NOT run_output MATCHES "no work to do")
   message(FATAL_ERROR "install test: rebuilding the untouched embedded consumer ran:\n${run_output}")

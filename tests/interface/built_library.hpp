@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "proof.hpp"
 
 namespace penumbra::testing {

@@ -17,7 +17,7 @@
 #include <string>
 #include <string_view>
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 
 namespace penumbra::testing {
 

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 #include "test_programs.hpp"
 #include "vulkan_embedded/shaders.hpp"

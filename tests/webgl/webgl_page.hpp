@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 
 namespace penumbra::testing {
 

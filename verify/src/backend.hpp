@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine_shaders.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
 #include "penumbra/verify/function_form.hpp"

@@ -14,6 +14,7 @@
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/library/disk_json.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/support/content_hash.hpp"
 #include "reflect/reflect_target.hpp"

@@ -6,7 +6,8 @@
 #include "build/pass_plan.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/disk.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/disk_json.hpp"
+#include "penumbra/library/library.hpp"
 #include "reflect/reflect_target.hpp"
 
 namespace penumbra {

@@ -4,7 +4,7 @@
 
 #include "build/index_json.hpp"
 #include "penumbra/compiler/build.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/support/content_hash.hpp"
 #include "penumbra/support/file.hpp"

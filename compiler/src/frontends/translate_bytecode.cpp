@@ -1,8 +1,8 @@
 #include <string>
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
-#include "penumbra/compiler/library.hpp"
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/support/file.hpp"
 #include "penumbra/support/scratch_file.hpp"
 #include "spirv/descriptor_sets.hpp"

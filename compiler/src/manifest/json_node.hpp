@@ -11,17 +11,10 @@
 #include <utility>
 #include <vector>
 
+#include "penumbra/model/json_text.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra::manifest_detail {
-
-// A value for a message: a scalar as written (16.5 reads as 16.5), shortened;
-// a container by kind ("an object", "an array").
-std::string describe_json(const nlohmann::json& value);
-
-// nlohmann's what() without its "[json.exception.type_error.302] " tag, any
-// quoted input shortened.
-std::string json_exception_text(const nlohmann::json::exception& e);
 
 class JsonNode {
  public:

@@ -49,10 +49,9 @@ Result<Manifest> parse_manifest(std::string_view json_text, std::string_view sou
     if (manifest) manifest->source = source;
     return manifest;
   } catch (const nlohmann::json::parse_error& e) {
-    return make_error(Error::Kind::bad_input, source,
-                      "malformed JSON: " + manifest_detail::json_exception_text(e));
+    return make_error(Error::Kind::bad_input, source, "malformed JSON: " + json_exception_text(e));
   } catch (const nlohmann::json::exception& e) {
-    return make_error(Error::Kind::internal, source, manifest_detail::json_exception_text(e));
+    return make_error(Error::Kind::internal, source, json_exception_text(e));
   }
 }
 

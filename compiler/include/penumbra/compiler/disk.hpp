@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
 #include <string_view>
@@ -38,18 +37,6 @@ Disk whitepaper16();
 // unit disk, 4 for the square); 1.0 for fewer than 2.
 double normalized_min_distance(std::span<const Point2> points,
                                SampleShape shape = SampleShape::disk);
-
-// {"name", "method", "seed", "count", "normalized_min_distance", "points"};
-// points are [x, y] pairs that read back into float with the same bits.
-nlohmann::json disk_to_json(const Disk& disk);
-// The two halves of that object: the bare array of points, and everything
-// else.
-nlohmann::json disk_points_json(const Disk& disk);
-nlohmann::json disk_info_json(const Disk& disk);
-// The disk back from those halves (index.json's `disks` table passes a record
-// and its `points`); a member missing from `info` stays at its default. Throws
-// nlohmann::json::exception on a malformed point.
-Disk disk_from_json(const nlohmann::json& points, const nlohmann::json& info);
 
 // "best_candidate, sample_elimination, square_stratified, square_r2", for
 // messages and help text.

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {

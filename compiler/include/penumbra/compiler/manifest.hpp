@@ -19,10 +19,8 @@ namespace penumbra {
 inline constexpr std::string_view kWhitepaperDisk = "whitepaper16";
 
 // How many variants a manifest may expand to unless its "max_variants" says
-// otherwise, and the most it may say; a library's index.json holds at most
-// kMaxVariants too (docs/manifest.md, "Limits").
+// otherwise; the most it may say is kMaxVariants (penumbra/model/model.hpp).
 inline constexpr int kDefaultMaxVariants = 10000;
-inline constexpr int kMaxVariants = 1000000;
 
 // The longest disk family name: it ends variant names and file names.
 inline constexpr std::size_t kMaxDiskNameLength = 32;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "penumbra/compiler/reflection.hpp"
+#include "penumbra/library/library.hpp"  // BytecodeFile
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/pass.hpp"
@@ -21,15 +22,6 @@
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {
-
-// A Direct3D bytecode file compiled from a stage's HLSL text.
-struct BytecodeFile {
-  std::string path;        // relative to the library root, beside the text
-  std::string profile;     // "vs_3_0", "ps_3_0", "vs_4_0" or "ps_4_0"
-  std::uint64_t size = 0;  // in bytes
-  // Shader Model 3: the instruction slots of its disassembly; else 0.
-  int instruction_slots = 0;
-};
 
 // What a job emits: a pass's shader, or a variant's function form: the
 // includable source that declares penumbra_visibility() (docs/function-form.md).

@@ -51,6 +51,10 @@ bool uses_minmax_mip(Technique technique);
 // Largest sample count / kernel size any variant may use.
 inline constexpr int kMaxSamples = 128;
 
+// The most variants a manifest may expand to (its "max_variants" at most)
+// and a library's index.json may hold (docs/manifest.md, "Limits").
+inline constexpr int kMaxVariants = 1000000;
+
 // The one value of the `traversal` key: read every texel of the window
 // instead of descending the min-max mip (minmax_pcf, backprojection).
 inline constexpr std::string_view kBruteForceTraversal = "brute_force";

@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/verify/gpu_cost.hpp"
 #include "penumbra/verify/pictures.hpp"
 

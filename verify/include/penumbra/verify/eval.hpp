@@ -2,7 +2,7 @@
 // the device or with the CPU reference.
 #pragma once
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/reference/light.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/vulkan/engine.hpp"

@@ -6,7 +6,7 @@
 // reference on the receivers the GPU derived.
 #pragma once
 
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/model/depth_format.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/verify/stage_picture.hpp"

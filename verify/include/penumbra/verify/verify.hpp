@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/model/depth_format.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/compare.hpp"

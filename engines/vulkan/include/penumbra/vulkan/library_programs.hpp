@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
-#include "penumbra/compiler/library.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/program.hpp"
 

@@ -1,4 +1,6 @@
-// A built shader library read back from OUT/index.json.
+// A built shader library read back from OUT/index.json: what an engine or a
+// tool needs to find, bind and run its files, with no shader compiler (this
+// layer links none of glslang, SPIRV-Tools or SPIRV-Cross).
 #pragma once
 
 #include <cstdint>
@@ -9,12 +11,21 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
-#include "penumbra/compiler/stage.hpp"
 #include "penumbra/model/model.hpp"
+#include "penumbra/model/pass.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "penumbra/support/result.hpp"
 
 namespace penumbra {
+
+// A Direct3D bytecode file compiled from a stage's HLSL text.
+struct BytecodeFile {
+  std::string path;        // relative to the library root, beside the text
+  std::string profile;     // "vs_3_0", "ps_3_0", "vs_4_0" or "ps_4_0"
+  std::uint64_t size = 0;  // in bytes
+  // Shader Model 3: the instruction slots of its disassembly; else 0.
+  int instruction_slots = 0;
+};
 
 struct PassFiles {
   std::string vert;  // relative to the library root

@@ -1,8 +1,8 @@
+#include "penumbra/library/disk_json.hpp"
+
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
-
-#include "penumbra/compiler/disk.hpp"
 
 namespace penumbra {
 

@@ -6,11 +6,10 @@
 #include <type_traits>
 #include <vector>
 
-#include "manifest/json_node.hpp"
-#include "penumbra/compiler/disk.hpp"
-#include "penumbra/compiler/library.hpp"
-#include "penumbra/compiler/manifest.hpp"
+#include "penumbra/library/disk_json.hpp"
+#include "penumbra/library/library.hpp"
 #include "penumbra/model/json_number.hpp"
+#include "penumbra/model/json_text.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/support/file.hpp"
 #include "penumbra/support/text.hpp"
@@ -34,9 +33,8 @@ Error index_error(const std::filesystem::path& file, const std::string& path,
 // "expected a string, got 5", the value quoted shortly.
 Error type_error(const std::filesystem::path& file, const std::string& path,
                  std::string_view expected, const json& value) {
-  return index_error(
-      file, path,
-      "expected " + std::string(expected) + ", got " + manifest_detail::describe_json(value));
+  return index_error(file, path,
+                     "expected " + std::string(expected) + ", got " + describe_json(value));
 }
 
 // `j`'s member `key`, or an error naming the missing key.
@@ -163,9 +161,9 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
     try {
       out.pass_files.push_back(pass_files_from_json(pass_files[i]));
     } catch (const json::exception& e) {
-      return index_error(file, "/pass_files/" + std::to_string(i),
-                         "malformed pass files (docs/shader-interface.md): " +
-                             manifest_detail::json_exception_text(e));
+      return index_error(
+          file, "/pass_files/" + std::to_string(i),
+          "malformed pass files (docs/shader-interface.md): " + json_exception_text(e));
     }
   }
   // Each record's constant textures refer to texture_contents by position (a
@@ -191,9 +189,8 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
     try {
       out.reflections.push_back(record.get<PassReflection>());
     } catch (const json::exception& e) {
-      return index_error(file, at,
-                         "malformed reflection (docs/shader-interface.md): " +
-                             manifest_detail::json_exception_text(e));
+      return index_error(
+          file, at, "malformed reflection (docs/shader-interface.md): " + json_exception_text(e));
     }
   }
   const json& disks = j.at("disks");
@@ -209,8 +206,7 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
     try {
       out.disks.push_back(disk_from_json(raw_points, disks[i]));
     } catch (const json::exception& e) {
-      return index_error(
-          file, at, "malformed disk (docs/disks.md): " + manifest_detail::json_exception_text(e));
+      return index_error(file, at, "malformed disk (docs/disks.md): " + json_exception_text(e));
     }
     const std::vector<Point2>& points = out.disks.back().points;
     for (std::size_t p = 0; p < points.size(); ++p) {
@@ -392,7 +388,7 @@ Result<Library> parse_library(std::string_view text, const std::filesystem::path
     }
   } catch (const json::exception& e) {
     return make_error(Error::Kind::bad_input, file.string(),
-                      "malformed library index: " + manifest_detail::json_exception_text(e));
+                      "malformed library index: " + json_exception_text(e));
   }
   return library;
 }
