@@ -145,12 +145,14 @@ class Backend {
                                            Execution& execution) = 0;
 };
 
+class CameraStages;  // camera_stage.hpp
+
 // `entry`'s function form for `target` drawn on `backend`, the scene's map
-// drawn on `engine` by the target's depth pass, its ray casts from `truths`
+// drawn on `engine` by the target's depth pass, from `stages`
 // (function_form.cpp).
-Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, SceneTruths& truths,
+Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target, DepthFormat map_format);
+                                            Target target);
 
 // `entry`'s query (or screen_blur's four passes), each loaded by `load`,
 // run on `engine` over the maps (and min-max mips) the scenes hold: the
@@ -159,11 +161,11 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
 
 // `entry`'s deferred pass for `target` run on `backend`, the scene's map
-// drawn on `engine` by the target's depth pass, its ray casts from `truths`
+// drawn on `engine` by the target's depth pass, from `stages`
 // (deferred_mask.cpp).
-Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, SceneTruths& truths,
+Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target, DepthFormat map_format);
+                                            Target target);
 
 // `draw` on `engine` over `fixture`'s map with `program`, the deferred pass
 // loaded for the Vulkan engine (the paths that run on it). A technique that

@@ -27,6 +27,22 @@ Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Libr
   return out;
 }
 
+Result<const CameraStage*> CameraStages::get(const Library& library, const LibraryVariant& entry,
+                                             Target target) {
+  std::string key;  // stays empty without a depth pass: camera_stage() then errs
+  if (const auto depth = entry.passes.find(PassKind::depth); depth != entry.passes.end()) {
+    if (const auto files = depth->second.find(target); files != depth->second.end()) {
+      key = std::string(to_string(target)) + " " +
+            std::string(to_string(map_encoding(entry.variant.keys))) + " " + files->second.vert +
+            " " + files->second.frag;
+    }
+  }
+  if (const auto known = stages_.find(key); known != stages_.end()) return &known->second;
+  PENUMBRA_TRY_ASSIGN(CameraStage stage,
+                      camera_stage(engine_, truths_, library, entry, target, map_format_));
+  return &stages_.emplace(key, std::move(stage)).first->second;
+}
+
 EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend) {
   EngineFormCheck check;
   check.variant = entry.variant.name;

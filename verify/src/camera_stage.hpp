@@ -3,14 +3,17 @@
 // depth pass drew, and the judging of a picture of it.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "backend.hpp"
 #include "penumbra/reference/stage.hpp"
 #include "penumbra/verify/function_form.hpp"
 #include "scene_fixture.hpp"
+#include "scene_truths.hpp"
 
 namespace penumbra {
 
@@ -30,6 +33,29 @@ struct CameraStage {
 Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Library& library,
                                  const LibraryVariant& entry, Target target,
                                  DepthFormat map_format);
+
+// The report's stage per depth pass and encoding, drawn once for every
+// engine-form check that reads it (camera_stage() of the first entry that
+// asks), as the scenes are drawn once per target; used from the device
+// thread only. A stage that cannot be drawn is not kept: each check asking
+// for it gets the error.
+class CameraStages {
+ public:
+  // Maps drawn on `engine` into `map_format` depth images where
+  // prepare_scene() allows.
+  CameraStages(Engine& engine, DepthFormat map_format) : engine_(engine), map_format_(map_format) {}
+
+  // camera_stage(engine, truths, library, entry, target, map_format), or
+  // the one already drawn with the same depth pass files and encoding.
+  Result<const CameraStage*> get(const Library& library, const LibraryVariant& entry,
+                                 Target target);
+
+ private:
+  Engine& engine_;
+  DepthFormat map_format_;
+  SceneTruths truths_;
+  std::map<std::string, CameraStage> stages_;
+};
 
 // A check of `entry` on `target` by `backend`, its results to come.
 EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend);

@@ -13,7 +13,6 @@
 #include "camera_stage.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/target_traits.hpp"
-#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -212,17 +211,17 @@ FloatImage rebuild_error_bound(const FloatImage& depth, const Matrix4& camera_in
 
 }  // namespace
 
-Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, SceneTruths& truths,
+Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target, DepthFormat map_format) {
+                                            Target target) {
   const auto pass = entry.reflection.find(PassKind::deferred);
   if (pass == entry.reflection.end() || !pass->second.contains(target)) {
     return make_error(
         Error::Kind::bad_input, entry.variant.name,
         "the library has no deferred pass for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(CameraStage camera,
-                      camera_stage(engine, truths, library, entry, target, map_format));
+  PENUMBRA_TRY_ASSIGN(const CameraStage* stage, stages.get(library, entry, target));
+  const CameraStage& camera = *stage;
   EngineFormCheck check = started_check(entry, target, backend);
   const Matrix4 camera_matrix = camera_clip(camera.stage, camera.width, camera.height, target);
   const Matrix4 camera_inverse = inverse(camera_matrix);
@@ -278,8 +277,8 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& libra
                                             const LibraryVariant& entry, Target target,
                                             DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
-  SceneTruths truths;
-  return check_deferred_mask(engine, *vulkan, truths, library, entry, target, map_format);
+  CameraStages stages(engine, map_format);
+  return check_deferred_mask(engine, *vulkan, stages, library, entry, target);
 }
 
 }  // namespace penumbra

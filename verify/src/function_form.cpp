@@ -8,7 +8,6 @@
 #include "engine_shaders.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/support/file.hpp"
-#include "scene_truths.hpp"
 
 namespace penumbra {
 namespace {
@@ -52,17 +51,17 @@ FloatImage clip_error_bound(const FloatImage& clip, int w_channel, const LightCl
 
 }  // namespace
 
-Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, SceneTruths& truths,
+Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
                                             const Library& library, const LibraryVariant& entry,
-                                            Target target, DepthFormat map_format) {
+                                            Target target) {
   const auto form = entry.function.find(target);
   if (form == entry.function.end()) {
     return make_error(
         Error::Kind::bad_input, entry.variant.name,
         "the library has no function form for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(CameraStage camera,
-                      camera_stage(engine, truths, library, entry, target, map_format));
+  PENUMBRA_TRY_ASSIGN(const CameraStage* stage, stages.get(library, entry, target));
+  const CameraStage& camera = *stage;
   EngineFormCheck check = started_check(entry, target, backend);
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
   SurfaceDraw draw;
@@ -103,8 +102,8 @@ Result<EngineFormCheck> check_function_form(Engine& engine, const Library& libra
                                             const LibraryVariant& entry, Target target,
                                             DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
-  SceneTruths truths;
-  return check_function_form(engine, *vulkan, truths, library, entry, target, map_format);
+  CameraStages stages(engine, map_format);
+  return check_function_form(engine, *vulkan, stages, library, entry, target);
 }
 
 }  // namespace penumbra

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "backend.hpp"
+#include "camera_stage.hpp"
 #include "cpu_work.hpp"
 #include "minmax_check.hpp"
 #include "penumbra/model/map_encoding.hpp"
@@ -34,18 +35,19 @@ struct Context {
   // Maps whose depth pass could not run: every run on them fails with this.
   std::map<MapKey, Error> broken_targets;
   DepthFormat map_format = DepthFormat::d32_float;  // VerifyOptions::map_format
-  SceneTruths truths;                               // every target's and check's ray casts
+  SceneTruths truths;                               // every target's ray casts
+  CameraStages cameras;                             // the engine-form checks' stage, per depth pass
 };
 
 // `entry`'s function form or deferred pass (`check`) for `target` on
 // `backend`; one that cannot run fails with why.
-using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, SceneTruths&,
-                                                      const Library&, const LibraryVariant&, Target,
-                                                      DepthFormat);
+using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, CameraStages&,
+                                                      const Library&, const LibraryVariant&,
+                                                      Target);
 EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend& backend,
                                 const LibraryVariant& entry, Target target) {
   const auto start = Clock::now();
-  auto check = checker(ctx.engine, backend, ctx.truths, ctx.library, entry, target, ctx.map_format);
+  auto check = checker(ctx.engine, backend, ctx.cameras, ctx.library, entry, target);
   EngineFormCheck out = check ? std::move(*check) : EngineFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
@@ -271,7 +273,15 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   report.device = engine.device_info();
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
-  Context ctx{library, engine, precision, {}, {}, {}, options.map_format, {}};
+  Context ctx{library,
+              engine,
+              precision,
+              {},
+              {},
+              {},
+              options.map_format,
+              {},
+              CameraStages(engine, options.map_format)};
   // The paths, in report order: a new one is a new backend file and a row
   // in paths.cpp.
   ctx.backends = all_backends(engine, options.bytecode, options.skipped);
