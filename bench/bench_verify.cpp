@@ -92,8 +92,9 @@ Status run(const Options& options) {
       std::printf("  repeat %d, %s: %.1f s\n", r + 1, build.name.c_str(), build.seconds.back());
       std::fflush(stdout);
     }
-    const std::string before = bench::read_text(builds[0].library / "verify.json");
-    if (before.empty() || before != bench::read_text(builds[1].library / "verify.json")) {
+    const std::string baseline_json = bench::read_text(builds[0].library / "verify.json");
+    if (baseline_json.empty() ||
+        baseline_json != bench::read_text(builds[1].library / "verify.json")) {
       return make_error(
           Error::Kind::internal, "verify.json",
           "differs between the baseline and this build (repeat " + std::to_string(r + 1) + ")");

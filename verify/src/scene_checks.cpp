@@ -1,7 +1,6 @@
 #include "scene_checks.hpp"
 
 #include <cstring>
-#include <functional>
 #include <string_view>
 
 #include "chain_check.hpp"
@@ -69,15 +68,9 @@ struct ReferenceKey {
 
 }  // namespace
 
-class VariantReferences {
- public:
-  const Result<reference::ReferenceImage>& get(
-      const ReferenceKey& key, const std::function<Result<reference::ReferenceImage>()>& make) {
-    return memo_.get(key, make);
-  }
-
- private:
-  Memo<ReferenceKey, Result<reference::ReferenceImage>> memo_;
+// Opaque to the header, whose users only share and free it.
+struct VariantReferences {
+  Memo<ReferenceKey, Result<reference::ReferenceImage>> memo;
 };
 
 std::shared_ptr<VariantReferences> variant_references() {
@@ -105,7 +98,7 @@ void check_scene_of_runs(PendingTarget& target_runs, const Variant& variant, Tar
     const ReferenceKey key{fixture.scene, limits, fixture.encoded,
                            ImageKey(fixture.encoded ? stored : linear),
                            ImageKey(fixture.receivers)};
-    return target_runs.references->get(
+    return target_runs.references->memo.get(
         key, [&] { return reference_on_map(variant, fixture, stored, linear, precision, limits); });
   };
   for (PendingRun& pending : target_runs.runs) {

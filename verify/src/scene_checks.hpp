@@ -37,7 +37,7 @@ struct PendingRun {
 // shader limits, the map's encoding and its content, byte for byte), by
 // whichever check asks first. The targets' maps are mostly the same
 // texels, so a variant's seven targets and Wine's own maps need only a few.
-class VariantReferences;
+struct VariantReferences;
 std::shared_ptr<VariantReferences> variant_references();
 
 // Every path's run of one (variant, target).

@@ -30,12 +30,12 @@ struct Context {
   Engine& engine;  // prepares every target's scenes
   reference::SamplingPrecision precision;
   // The paths every run goes through, in report order.
-  std::vector<std::unique_ptr<Backend>> backends;
-  std::map<MapKey, TargetScenes> scenes;
+  std::vector<std::unique_ptr<Backend>> backends{};
+  std::map<MapKey, TargetScenes> scenes{};
   // Maps whose depth pass could not run: every run on them fails with this.
-  std::map<MapKey, Error> broken_targets;
+  std::map<MapKey, Error> broken_targets{};
   DepthFormat map_format = DepthFormat::d32_float;  // VerifyOptions::map_format
-  SceneTruths truths;                               // every target's ray casts
+  SceneTruths truths{};                             // every target's ray casts
   CameraStages cameras;                             // the engine-form checks' stage, per depth pass
 };
 
@@ -273,15 +273,11 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   report.device = engine.device_info();
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
-  Context ctx{library,
-              engine,
-              precision,
-              {},
-              {},
-              {},
-              options.map_format,
-              {},
-              CameraStages(engine, options.map_format)};
+  Context ctx{.library = library,
+              .engine = engine,
+              .precision = precision,
+              .map_format = options.map_format,
+              .cameras = CameraStages(engine, options.map_format)};
   // The paths, in report order: a new one is a new backend file and a row
   // in paths.cpp.
   ctx.backends = all_backends(engine, options.bytecode, options.skipped);
