@@ -4,7 +4,9 @@
 # P/lib/cmake/Penumbra:
 #   shaders   Penumbra::shaders (the lookup over embedded shaders, with
 #             Penumbra::model and Penumbra::support), Penumbra::library
-#             (load_library(): a built library's index.json), the executable
+#             (load_library(): a built library's index.json),
+#             Penumbra::device (the runtime's device interface and pass
+#             driver, penumbra/runtime/), the executable
 #             Penumbra::penumbra and penumbra_add_shader_library(); always
 #             loaded; needs nlohmann_json only.
 #   compiler  Penumbra::compiler; loaded when no component is named, or
@@ -19,10 +21,12 @@ set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
 set(PENUMBRA_INSTALL_SHADERLIBDIR ${CMAKE_INSTALL_DATADIR}/penumbra/shaderlib)
 
 set_target_properties(penumbra_cli PROPERTIES EXPORT_NAME penumbra)
-install(TARGETS penumbra_support penumbra_model penumbra_library penumbra_shaders EXPORT PenumbraTargets
+install(TARGETS penumbra_support penumbra_model penumbra_library penumbra_device penumbra_shaders
+        EXPORT PenumbraTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS penumbra_cli EXPORT PenumbraTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY support/include/ model/include/ library/include/ shaders/include/
+install(DIRECTORY support/include/ model/include/ library/include/ runtime/device/include/
+                  shaders/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT PenumbraTargets NAMESPACE Penumbra:: DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 install(FILES cmake/PenumbraShaderLibrary.cmake DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
@@ -56,12 +60,12 @@ if(PENUMBRA_BUILD_RUNTIME)
                                                    penumbra_reference)
   set(_runtime_targets penumbra_runtime penumbra_vulkan penumbra_verify penumbra_reference
                        penumbra_d3d)
-  set(_runtime_headers engines/vulkan/include/ verify/include/ reference/include/
-                       engines/d3d/include/)
+  set(_runtime_headers runtime/vulkan/include/ verify/include/ reference/include/
+                       runtime/d3d/include/)
   if(PENUMBRA_BUILD_GL)
     target_link_libraries(penumbra_runtime INTERFACE penumbra_gl)
     list(APPEND _runtime_targets penumbra_gl)
-    list(APPEND _runtime_headers engines/gl/include/)
+    list(APPEND _runtime_headers runtime/gl/include/)
   endif()
   install(TARGETS ${_runtime_targets} EXPORT PenumbraRuntimeTargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -1,5 +1,5 @@
 // The Direct3D guides' code against penumbra_d3d_host.exe, the engine that
-// verify's d3d9, d3d10 and d3d11 paths run (engines/d3d/host): every
+// verify's d3d9, d3d10 and d3d11 paths run (runtime/d3d/host): every
 // Direct3D constant and every method the guides' C++ snippets use is one the
 // host uses too, so a guide never tells an engine to do what no verified run
 // did. The few calls the host has no need of are listed with why.
@@ -79,7 +79,7 @@ TEST_P(GuideHostTest, TheGuidesCodeIsWhatTheVerifiedHostDoes) {
   ASSERT_FALSE(code.empty()) << GetParam().guide << ".md has no C++ snippet";
   std::string host;
   for (const std::string& file : GetParam().files) {
-    host += read(kSourceDir / "engines" / "d3d" / "host" / file);
+    host += read(kSourceDir / "runtime" / "d3d" / "host" / file);
   }
   ASSERT_FALSE(host.empty());
   static const std::regex constant(R"(\b(D3D[A-Z0-9]*_[A-Z0-9_]+|DXGI_FORMAT_[A-Z0-9_]+)\b)");
