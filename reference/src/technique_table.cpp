@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <optional>
 
+#include "penumbra/reference/screen_blur.hpp"
 #include "technique_parts.hpp"
 
 namespace penumbra::reference::detail {
@@ -136,7 +137,7 @@ constexpr TechniqueReference kReferences[] = {
      [](const ReceiverInputs& in) {
        return screen_blur_factor(in.map, in.query, in.z_ref, in.precision);
      },
-     point_tolerance},
+     point_tolerance, screen_blur},
     {Technique::bitmask_backprojection, true,
      [](const Variant& v) -> Status {
        PENUMBRA_TRY(check_light_bits(v));

@@ -1,10 +1,12 @@
 // Each technique's CPU reference in one row: what its variant must carry,
-// how one receiver is evaluated, whether that reads the min-max mip, and the
-// tolerance a GPU result is held to (docs/verification.md). A new technique
+// how one receiver is evaluated, whether that reads the min-max mip, the
+// tolerance a GPU result is held to (docs/verification.md), and what its
+// screen passes after the query do. A new technique
 // adds a row here, beside its TechniqueDescription (model/) and its shader.
 #pragma once
 
 #include "penumbra/reference/techniques.hpp"
+#include "penumbra/support/image.hpp"
 
 namespace penumbra::reference::detail {
 
@@ -26,6 +28,10 @@ struct TechniqueReference {
   Status (*check)(const Variant& variant);        // check_variant()
   Sample (*evaluate)(const ReceiverInputs&);      // evaluate()
   double (*tolerance)(const SamplingPrecision&);  // tolerance()
+  // What the technique's screen passes after the query do to its image
+  // (screen_visibility()); none where the query's image is the result.
+  FloatImage (*screen_filter)(const Variant&, const FloatImage& visibility,
+                              const FloatImage& receivers) = nullptr;
 };
 
 const TechniqueReference& reference_for(Technique technique);

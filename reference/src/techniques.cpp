@@ -111,6 +111,16 @@ ShaderLimits shader_limits(Target target) {
   return {traits(target).walk_step_limit};
 }
 
+FloatImage screen_visibility(const Variant& variant, FloatImage visibility,
+                             const FloatImage& receivers) {
+  const auto filter = detail::reference_for(variant.technique).screen_filter;
+  return filter ? filter(variant, visibility, receivers) : visibility;
+}
+
+bool filters_screen(Technique technique) {
+  return detail::reference_for(technique).screen_filter != nullptr;
+}
+
 bool reference_reads_mip(Technique technique) {
   return detail::reference_for(technique).reads_mip;
 }

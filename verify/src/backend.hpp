@@ -13,12 +13,14 @@
 
 #include "engine_shaders.hpp"
 #include "penumbra/library/library.hpp"
+#include "penumbra/runtime/pass_driver.hpp"
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
 #include "penumbra/verify/function_form.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 #include "scene_fixture.hpp"
+#include "scene_passes.hpp"
 
 namespace penumbra {
 
@@ -52,6 +54,11 @@ inline SceneOutput scene_output(FloatImage visibility, FloatImage texel_reads,
   out.chain = std::move(chain);
   return out;
 }
+
+// What the passes wrote, from their targets: the first screen pass's .x and
+// .y (the visibility, or the factor a blur then filters, and the texel
+// reads), and where they ran blur_v and the composite, the chain.
+SceneOutput scene_output(runtime::PassOutputs outputs);
 
 // An engine's own draw of the report's stage around a function form
 // (function_form.cpp): the variant, the engine's camera and the light's

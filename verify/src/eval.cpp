@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
+#include "scene_passes.hpp"
 
 namespace penumbra {
 namespace {
@@ -75,21 +77,6 @@ Status check_range(const char* name, double value, double low, double high) {
                     std::string("out of range; allowed: a number from ") + range);
 }
 
-// screen_blur's chain: the receivers image is the screen; the blurred factor
-// is the visibility, the factor pass's reads the texel reads. The composite
-// is drawn over reference::scene_colour but not returned.
-Result<QueryOutput> eval_screen_blur(const Library& library, const LibraryVariant& variant,
-                                     Target target, const EvalInputs& inputs, const ShadowMap& map,
-                                     const ParamBlock& params, Engine& engine) {
-  auto programs = load_screen_blur(library, variant, target);
-  if (!programs) return programs.error();
-  const FloatImage colour =
-      reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
-  auto chain = engine.run_screen_blur(programs->programs(), map, inputs.receivers, colour, params);
-  if (!chain) return chain.error();
-  return QueryOutput{std::move(chain->blurred), std::move(chain->texel_reads), chain->gpu_ms};
-}
-
 }  // namespace
 
 Status check_eval_inputs(const EvalInputs& inputs) {
@@ -130,15 +117,26 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
                                           {inputs.shadow_map.width, inputs.shadow_map.height,
                                            inputs.receivers.width, inputs.receivers.height},
                                           depth_scale);
-  if (variant.variant.technique == Technique::screen_blur) {
-    return eval_screen_blur(library, variant, target, inputs, **map, params, engine);
+  // The receivers image is the screen; a composite is drawn over
+  // reference::scene_colour but not returned.
+  const std::vector<PassKind> passes = scene_passes(variant, /*builds_mip=*/false);
+  std::map<PassKind, ExecutableProgram> loaded;
+  for (PassKind pass : passes) {
+    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load_executable(library, variant, pass, target));
+    loaded.emplace(pass, std::move(program));
   }
-  auto program = load_executable(library, variant, PassKind::query, target);
-  if (!program) return program.error();
   if (uses_minmax_mip(variant.variant.technique)) {
     PENUMBRA_TRY(build_library_minmax(engine, library, variant, target, **map, params));
   }
-  return engine.run_query_output(program->program, **map, inputs.receivers, params);
+  PassProgramMap programs;
+  for (const auto& [pass, program] : loaded) programs.emplace(pass, &program.program);
+  const FloatImage colour =
+      reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
+  PENUMBRA_TRY_ASSIGN(
+      runtime::PassOutputs outputs,
+      engine.run_passes(passes, programs, **map,
+                        {.receivers = &inputs.receivers, .scene_colour = &colour}, params));
+  return final_visibility(outputs);
 }
 
 Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, Target target,
@@ -159,10 +157,8 @@ Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, 
               : reference::evaluate_image(variant.variant, inputs.shadow_map, light,
                                           inputs.receivers, {}, reference::shader_limits(target));
   if (!image) return image.error();
-  if (variant.variant.technique == Technique::screen_blur) {
-    image->visibility =
-        reference::screen_blur(variant.variant, image->visibility, inputs.receivers);
-  }
+  image->visibility =
+      reference::screen_visibility(variant.variant, std::move(image->visibility), inputs.receivers);
   return image;
 }
 

@@ -4,7 +4,10 @@
 // normalized depth (the GL engine builds the min-max mip with the target's
 // own passes when the query reads it). Present when the project is built
 // with PENUMBRA_BUILD_GL; otherwise every run says why not.
+#include <map>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "backend.hpp"
 
@@ -56,20 +59,6 @@ struct GlMinmaxTexts {
   GlPassTexts reduce;  // minmax_reduce
 };
 
-struct GlQueryTexts {
-  GlPassTexts query;
-  // Present when the query reads shadow_minmax.
-  std::optional<GlMinmaxTexts> minmax;
-};
-
-// screen_blur's chain.
-struct GlScreenBlurTexts {
-  GlPassTexts query;
-  GlPassTexts blur_h;
-  GlPassTexts blur_v;
-  GlPassTexts composite;
-};
-
 Result<GlPassTexts> read_pass(const Library& library, const LibraryVariant& entry, PassKind pass,
                               Target target) {
   const auto by_pass = entry.reflection.find(pass);
@@ -96,40 +85,27 @@ Result<std::optional<GlMinmaxTexts>> read_gl_minmax(const Library& library,
   return std::optional<GlMinmaxTexts>(GlMinmaxTexts{std::move(init), std::move(reduce)});
 }
 
-// `entry`'s query pass for `target` and, for a technique that reads the
-// min-max mip, the passes that build it. Errors: a file that cannot be read,
-// a pass without a reflection for `target`.
-Result<GlQueryTexts> read_gl_query(const Library& library, const LibraryVariant& entry,
-                                   Target target) {
-  auto query = read_pass(library, entry, PassKind::query, target);
-  if (!query) return query.error();
-  PENUMBRA_TRY_ASSIGN(std::optional<GlMinmaxTexts> minmax, read_gl_minmax(library, entry, target));
-  return GlQueryTexts{std::move(*query), std::move(minmax)};
-}
-
-Result<GlScreenBlurTexts> read_gl_screen_blur(const Library& library, const LibraryVariant& entry,
-                                              Target target) {
-  GlScreenBlurTexts texts;
-  for (const auto& [kind, pass] :
-       {std::pair{PassKind::query, &texts.query}, std::pair{PassKind::blur_h, &texts.blur_h},
-        std::pair{PassKind::blur_v, &texts.blur_v},
-        std::pair{PassKind::composite, &texts.composite}}) {
-    auto read = read_pass(library, entry, kind, target);
-    if (!read) return read.error();
-    *pass = std::move(*read);
+// Each of `passes` of `entry` for `target`. Errors as read_pass's.
+Result<std::map<PassKind, GlPassTexts>> read_passes(const Library& library,
+                                                    const LibraryVariant& entry, Target target,
+                                                    std::span<const PassKind> passes) {
+  std::map<PassKind, GlPassTexts> texts;
+  for (PassKind pass : passes) {
+    PENUMBRA_TRY_ASSIGN(GlPassTexts read, read_pass(library, entry, pass, target));
+    texts.insert_or_assign(pass, std::move(read));
   }
   return texts;
 }
 
 // The engine reads the texts and reflection through references; the
 // caller's outlive the call.
-GlPass pass(const GlPassTexts& texts) {
+GlPass pass_of(const GlPassTexts& texts) {
   return {texts.vert, texts.frag, texts.reflection};
 }
 
 std::optional<GlMinmaxPasses> passes(const std::optional<GlMinmaxTexts>& texts) {
   if (!texts) return std::nullopt;
-  return GlMinmaxPasses{pass(texts->init), pass(texts->reduce)};
+  return GlMinmaxPasses{pass_of(texts->init), pass_of(texts->reduce)};
 }
 
 class GlBackend final : public Backend {
@@ -143,19 +119,23 @@ class GlBackend final : public Backend {
 
   Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
                             const TargetScenes& /*scenes*/) override {
-    if (entry.variant.technique == Technique::screen_blur) {
-      auto chain = read_gl_screen_blur(library, entry, target);
-      if (!chain) return chain.error();
-      return LoadedPasses{execution(), [this, texts = std::make_shared<GlScreenBlurTexts>(
-                                                  std::move(*chain))](const SceneFixture& fixture) {
-                            return run_screen_blur(*texts, fixture);
-                          }};
-    }
-    auto query = read_gl_query(library, entry, target);
-    if (!query) return query.error();
-    return LoadedPasses{execution(),
-                        [this, texts = std::make_shared<GlQueryTexts>(std::move(*query))](
-                            const SceneFixture& fixture) { return run_query(*texts, fixture); }};
+    // The GL engine builds the mip of the scene's map itself.
+    std::vector<PassKind> passes = scene_passes(entry, /*builds_mip=*/true);
+    PENUMBRA_TRY_ASSIGN(auto texts, read_passes(library, entry, target, passes));
+    return LoadedPasses{
+        execution(),
+        [this, passes = std::move(passes),
+         texts = std::make_shared<std::map<PassKind, GlPassTexts>>(std::move(texts))](
+            const SceneFixture& fixture) -> Result<SceneOutput> {
+          std::map<PassKind, GlPass> programs;
+          for (const auto& [pass, text] : *texts) programs.emplace(pass, pass_of(text));
+          PENUMBRA_TRY_ASSIGN(runtime::PassOutputs outputs,
+                              engine_->run_passes(passes, programs, fixture.normalized_depth,
+                                                  {.receivers = &fixture.receivers,
+                                                   .scene_colour = &fixture.colour},
+                                                  fixture.params, fixture.map_format()));
+          return scene_output(std::move(outputs));
+        }};
   }
 
   bool draws_surfaces(Target target) const override { return glsl(target); }
@@ -182,32 +162,14 @@ class GlBackend final : public Backend {
                         read_pass(*draw.library, *draw.entry, PassKind::deferred, draw.target));
     PENUMBRA_TRY_ASSIGN(const std::optional<GlMinmaxTexts> minmax,
                         read_gl_minmax(*draw.library, *draw.entry, draw.target));
-    PENUMBRA_TRY_ASSIGN(
-        auto output, engine_->run_deferred(pass(texts), fixture.normalized_depth, draw.camera_depth,
-                                           draw.params, fixture.map_format(), passes(minmax)));
+    PENUMBRA_TRY_ASSIGN(auto output, engine_->run_deferred(pass_of(texts), fixture.normalized_depth,
+                                                           draw.camera_depth, draw.params,
+                                                           fixture.map_format(), passes(minmax)));
     return scene_output(std::move(output.visibility), std::move(output.texel_reads));
   }
 
  private:
   static Execution execution() { return {"the OpenGL driver's GLSL compiler", {}}; }
-
-  // Builds the min-max mip when the query reads it, then runs the query.
-  Result<SceneOutput> run_query(const GlQueryTexts& texts, const SceneFixture& fixture) {
-    auto output =
-        engine_->run_query({pass(texts.query), passes(texts.minmax)}, fixture.normalized_depth,
-                           fixture.receivers, fixture.params, fixture.map_format());
-    if (!output) return output.error();
-    return scene_output(std::move(output->visibility), std::move(output->texel_reads));
-  }
-
-  Result<SceneOutput> run_screen_blur(const GlScreenBlurTexts& texts, const SceneFixture& fixture) {
-    auto output = engine_->run_screen_blur(
-        {pass(texts.query), pass(texts.blur_h), pass(texts.blur_v), pass(texts.composite)},
-        fixture.normalized_depth, fixture.receivers, fixture.colour, fixture.params);
-    if (!output) return output.error();
-    return scene_output(std::move(output->factor), std::move(output->texel_reads),
-                        ChainOutput{std::move(output->blurred), std::move(output->composite)});
-  }
 
   std::unique_ptr<GlEngine> engine_;
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +11,7 @@
 #include "penumbra/compiler/text_frontend.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 #include "scene_fixture.hpp"
+#include "scene_passes.hpp"
 #include "scene_truths.hpp"
 
 namespace penumbra {
@@ -166,27 +169,27 @@ Result<GpuCost> measure_gpu_cost(const Library& library, Engine& engine,
                                }));
   }
 
-  TimedRun query;
-  if (variant.technique == Technique::screen_blur) {
-    PENUMBRA_TRY_ASSIGN(auto chain, load_screen_blur(library, entry, kTarget));
-    query = [&engine, &fixture, &cost, chain]() -> Result<std::optional<double>> {
-      PENUMBRA_TRY_ASSIGN(auto out,
-                          engine.run_screen_blur(chain.programs(), *fixture.map, fixture.receivers,
-                                                 fixture.colour, fixture.params));
-      cost.visibility = std::move(out.blurred);
-      cost.texel_reads = std::move(out.texel_reads);
-      return out.gpu_ms;
-    };
-  } else {
-    PENUMBRA_TRY_ASSIGN(auto program, load_executable(library, entry, PassKind::query, kTarget));
-    query = [&engine, &fixture, &cost, program]() -> Result<std::optional<double>> {
-      PENUMBRA_TRY_ASSIGN(auto out, engine.run_query_output(program.program, *fixture.map,
-                                                            fixture.receivers, fixture.params));
-      cost.visibility = std::move(out.visibility);
-      cost.texel_reads = std::move(out.texel_reads);
-      return out.gpu_ms;
-    };
+  // The passes after the mip, timed together (screen_blur: its chain).
+  const std::vector<PassKind> passes = scene_passes(entry, /*builds_mip=*/false);
+  auto loaded = std::make_shared<std::map<PassKind, ExecutableProgram>>();
+  for (PassKind pass : passes) {
+    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load_executable(library, entry, pass, kTarget));
+    loaded->emplace(pass, std::move(program));
   }
+  const TimedRun query = [&engine, &fixture, &cost, &passes,
+                          loaded]() -> Result<std::optional<double>> {
+    PassProgramMap programs;
+    for (const auto& [pass, program] : *loaded) programs.emplace(pass, &program.program);
+    PENUMBRA_TRY_ASSIGN(
+        runtime::PassOutputs outputs,
+        engine.run_passes(passes, programs, *fixture.map,
+                          {.receivers = &fixture.receivers, .scene_colour = &fixture.colour},
+                          fixture.params));
+    QueryOutput out = final_visibility(outputs);
+    cost.visibility = std::move(out.visibility);
+    cost.texel_reads = std::move(out.texel_reads);
+    return out.gpu_ms;
+  };
   PENUMBRA_TRY_ASSIGN(cost.query_ms, median_ms(variant.name + " query pass", options.runs, query));
   cost.texel_reads_per_pixel = mean(cost.texel_reads);
   return cost;

@@ -11,7 +11,6 @@
 #include "cpu_work.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
-#include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "progress_counter.hpp"
 #include "scene_fixture.hpp"
@@ -79,8 +78,8 @@ struct OwnMap {
   std::shared_ptr<const FloatImage> linear;
 };
 
-// The CPU reference of what the run shows (screen_blur: the reference
-// factor blurred, every pixel decided), on the map the target's own depth
+// The CPU reference of what the run shows (after screen passes that filter
+// it, the reference factor filtered, every pixel decided), on the map the target's own depth
 // pass rendered (the fixture's, or the path's own), as stored and linear.
 Result<reference::ReferenceImage> reference_image(const Variant& variant, Target target,
                                                   const SceneFixture& fixture,
@@ -89,8 +88,9 @@ Result<reference::ReferenceImage> reference_image(const Variant& variant, Target
                                                   const reference::SamplingPrecision& precision) {
   PENUMBRA_TRY_ASSIGN(auto expected, reference_on_map(variant, fixture, stored, linear, precision,
                                                       reference::shader_limits(target)));
-  if (variant.technique != Technique::screen_blur) return expected;
-  FloatImage blurred = reference::screen_blur(variant, expected.visibility, fixture.receivers);
+  if (!reference::filters_screen(variant.technique)) return expected;
+  FloatImage blurred =
+      reference::screen_visibility(variant, std::move(expected.visibility), fixture.receivers);
   FloatImage none(blurred.width, blurred.height, 1);
   return reference::ReferenceImage{blurred, std::move(none), blurred, blurred};
 }

@@ -2,7 +2,9 @@
 // through glslang's front ends) on the Vulkan engine that prepared the
 // scenes, on their maps as rendered; load_on_engine() runs them, for the
 // bytecode path too.
+#include <map>
 #include <memory>
+#include <vector>
 
 #include "backend.hpp"
 #include "penumbra/model/target_traits.hpp"
@@ -52,18 +54,6 @@ class VulkanBackend final : public Backend {
   Engine& engine_;
 };
 
-LoadedPasses screen_blur_on_engine(Engine& engine, ScreenBlurExecutables loaded) {
-  auto chain = std::make_shared<ScreenBlurExecutables>(std::move(loaded));
-  return LoadedPasses{
-      chain->query.execution, [&engine, chain](const SceneFixture& fixture) -> Result<SceneOutput> {
-        auto gpu = engine.run_screen_blur(chain->programs(), *fixture.map, fixture.receivers,
-                                          fixture.colour, fixture.params);
-        if (!gpu) return gpu.error();
-        return scene_output(std::move(gpu->factor), std::move(gpu->texel_reads),
-                            ChainOutput{std::move(gpu->blurred), std::move(gpu->composite)});
-      }};
-}
-
 // The mip an engine builds of its map before it draws, for a technique that
 // reads it: on the fixture's map, with the target's own build passes (the
 // OpenGL and Wine paths build theirs on their own maps).
@@ -106,25 +96,27 @@ Result<SceneOutput> deferred_on_engine(Engine& engine, const DeferredDraw& draw,
 
 Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load) {
-  // The query reads the mip the target's own passes built on each map.
+  // The passes read the mip the target's own passes built on each map.
   if (uses_minmax_mip(entry.variant.technique) && scenes.minmax && !*scenes.minmax) {
     return scenes.minmax->error();
   }
-  if (entry.variant.technique == Technique::screen_blur) {
-    auto chain = load_screen_blur(load);
-    if (!chain) return chain.error();
-    return screen_blur_on_engine(engine, std::move(*chain));
+  const std::vector<PassKind> passes = scene_passes(entry, /*builds_mip=*/false);
+  auto loaded = std::make_shared<std::map<PassKind, ExecutableProgram>>();
+  for (PassKind pass : passes) {
+    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load(pass));
+    loaded->emplace(pass, std::move(program));
   }
-  auto query = load(PassKind::query);
-  if (!query) return query.error();
-  auto program = std::make_shared<PassProgram>(std::move(query->program));
   return LoadedPasses{
-      std::move(query->execution),
-      [&engine, program](const SceneFixture& fixture) -> Result<SceneOutput> {
-        auto gpu =
-            engine.run_query_output(*program, *fixture.map, fixture.receivers, fixture.params);
-        if (!gpu) return gpu.error();
-        return scene_output(std::move(gpu->visibility), std::move(gpu->texel_reads));
+      loaded->at(passes.front()).execution,
+      [&engine, loaded, passes](const SceneFixture& fixture) -> Result<SceneOutput> {
+        PassProgramMap programs;
+        for (const auto& [pass, program] : *loaded) programs.emplace(pass, &program.program);
+        PENUMBRA_TRY_ASSIGN(
+            runtime::PassOutputs outputs,
+            engine.run_passes(passes, programs, *fixture.map,
+                              {.receivers = &fixture.receivers, .scene_colour = &fixture.colour},
+                              fixture.params));
+        return scene_output(std::move(outputs));
       }};
 }
 

@@ -71,28 +71,23 @@ Result<std::optional<D3dMinmaxPasses>> minmax_passes(const Library& library,
   return std::optional<D3dMinmaxPasses>(D3dMinmaxPasses{init, reduce});
 }
 
-// The passes a run needs, with the records they point into.
+// The passes a run needs, with the records they point into: the depth
+// pass that draws the runtime's own map, and the scene's passes on it.
 struct RuntimePasses {
   D3dPass depth;
-  std::optional<D3dQueryPasses> query;
-  std::optional<D3dScreenBlurPasses> screen_blur;
+  std::vector<PassKind> scene;
+  std::map<PassKind, D3dPass> programs;
 };
 
 Result<RuntimePasses> runtime_passes(const Library& library, const LibraryVariant& entry,
                                      Target target) {
-  const auto pass = [&](PassKind kind) { return bytecode_pass(library, entry, kind, target); };
-  PENUMBRA_TRY_ASSIGN(D3dPass depth, pass(PassKind::depth));
-  PENUMBRA_TRY_ASSIGN(D3dPass query, pass(PassKind::query));
-  RuntimePasses passes{depth, std::nullopt, std::nullopt};
-  if (entry.variant.technique == Technique::screen_blur) {
-    PENUMBRA_TRY_ASSIGN(D3dPass blur_h, pass(PassKind::blur_h));
-    PENUMBRA_TRY_ASSIGN(D3dPass blur_v, pass(PassKind::blur_v));
-    PENUMBRA_TRY_ASSIGN(D3dPass composite, pass(PassKind::composite));
-    passes.screen_blur.emplace(D3dScreenBlurPasses{query, blur_h, blur_v, composite});
-    return passes;
+  PENUMBRA_TRY_ASSIGN(D3dPass depth, bytecode_pass(library, entry, PassKind::depth, target));
+  // The runtime builds the mip of its own map.
+  RuntimePasses passes{depth, scene_passes(entry, /*builds_mip=*/true), {}};
+  for (PassKind pass : passes.scene) {
+    PENUMBRA_TRY_ASSIGN(D3dPass program, bytecode_pass(library, entry, pass, target));
+    passes.programs.emplace(pass, program);
   }
-  PENUMBRA_TRY_ASSIGN(auto minmax, minmax_passes(library, entry, target));
-  passes.query.emplace(D3dQueryPasses{query, std::move(minmax)});
   return passes;
 }
 
@@ -124,20 +119,12 @@ class WineBackend final : public Backend {
         Execution{"the " + name() + " runtime (Wine) loading the bytecode", {}},
         [this, shared, target](const SceneFixture& fixture) -> Result<SceneOutput> {
           PENUMBRA_TRY_ASSIGN(RuntimeMap * drawn, map_of(shared->depth, fixture));
-          SceneOutput output;
-          if (shared->screen_blur) {
-            PENUMBRA_TRY_ASSIGN(auto chain, engine_->run_screen_blur(
-                                                *shared->screen_blur, drawn->map, fixture.receivers,
-                                                fixture.colour, fixture.params));
-            output.visibility = std::move(chain.factor);
-            output.texel_reads = std::move(chain.texel_reads);
-            output.chain = ChainOutput{std::move(chain.blurred), std::move(chain.composite)};
-          } else {
-            PENUMBRA_TRY_ASSIGN(auto query, engine_->run_query(*shared->query, drawn->map,
-                                                               fixture.receivers, fixture.params));
-            output.visibility = std::move(query.visibility);
-            output.texel_reads = std::move(query.texel_reads);
-          }
+          PENUMBRA_TRY_ASSIGN(runtime::PassOutputs outputs,
+                              engine_->run_passes(shared->scene, shared->programs, drawn->map,
+                                                  {.receivers = &fixture.receivers,
+                                                   .scene_colour = &fixture.colour},
+                                                  fixture.params));
+          SceneOutput output = scene_output(std::move(outputs));
           output.own_stored_depth = drawn->stored;
           output.own_linear_depth = drawn->linear;
           if (!drawn->checked) {

@@ -133,6 +133,15 @@ struct Sample {
 // as many points as the sample-count keys, traversal and max_nodes in range).
 Status check_variant(const Variant& variant);
 
+// The visibility `variant`'s passes end in, from `visibility`, the image
+// its query gives (evaluate_image()'s) over `receivers`: its technique's
+// screen passes applied (screen_blur's blur), or `visibility` itself where
+// the query's image is the result.
+FloatImage screen_visibility(const Variant& variant, FloatImage visibility,
+                             const FloatImage& receivers);
+// Whether screen_visibility() changes `technique`'s image.
+bool filters_screen(Technique technique);
+
 // Whether the reference of `technique` reads the min-max mip: minmax_pcf
 // (for a capped walk; uncapped it counts texel by texel), backprojection
 // and pcss_minmax.
