@@ -111,18 +111,11 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
                                        int width, int height, const ParamBlock& params,
                                        DepthFormat map_format) {
   D3dDevice device(*this);
-  runtime::PassInputs inputs;
-  inputs.casters = triangles;
-  inputs.map_width = width;
-  inputs.map_height = height;
-  inputs.depth_format = map_format;
-  inputs.params = params;
-  const PassKind passes[] = {PassKind::depth};
   PENUMBRA_TRY_ASSIGN(
-      runtime::PassResults results,
-      runtime::run_passes(device, passes, {{PassKind::depth, device.load(depth)}}, inputs));
-  D3dMap map = device.map(*results.map);
-  auto texels = device.read(*results.map);
+      const runtime::Texture drawn,
+      runtime::draw_map(device, device.load(depth), triangles, width, height, map_format, params));
+  D3dMap map = device.map(drawn);
+  auto texels = device.read(drawn);
   if (!texels) {
     release(map);
     return texels.error();

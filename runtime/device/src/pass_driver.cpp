@@ -254,6 +254,21 @@ Result<PassOutputs> run_and_read(Device& device, std::span<const PassKind> passe
   return out;
 }
 
+Result<Texture> draw_map(Device& device, Program depth,
+                         std::span<const std::array<float, 3>> casters, int width, int height,
+                         DepthFormat format, const ParamBlock& params) {
+  PassInputs inputs;
+  inputs.casters = casters;
+  inputs.map_width = width;
+  inputs.map_height = height;
+  inputs.depth_format = format;
+  inputs.params = params;
+  const PassKind passes[] = {PassKind::depth};
+  PENUMBRA_TRY_ASSIGN(PassResults results,
+                      run_passes(device, passes, {{PassKind::depth, depth}}, inputs));
+  return *results.map;
+}
+
 Result<Drawn> draw_surface(Device& device, Program program,
                            std::span<const std::array<float, 3>> triangles, int width, int height,
                            Texture map, std::optional<Texture> mip, const ParamBlock& params) {

@@ -105,17 +105,10 @@ Result<std::shared_ptr<ShadowMap>> Engine::render_depth(
     int height, const ParamBlock& params, DepthFormat depth_format) {
   return detail::run_validated(*context_->validation, [&]() -> Result<std::shared_ptr<ShadowMap>> {
     detail::VulkanDevice device(*context_);
-    runtime::PassInputs inputs;
-    inputs.casters = triangles;
-    inputs.map_width = width;
-    inputs.map_height = height;
-    inputs.depth_format = depth_format;
-    inputs.params = params;
-    const PassKind passes[] = {PassKind::depth};
-    PENUMBRA_TRY_ASSIGN(
-        runtime::PassResults results,
-        runtime::run_passes(device, passes, {{PassKind::depth, device.load(depth)}}, inputs));
-    return std::shared_ptr<ShadowMap>(new ShadowMap(device.take_map(*results.map)));
+    PENUMBRA_TRY_ASSIGN(const runtime::Texture drawn,
+                        runtime::draw_map(device, device.load(depth), triangles, width, height,
+                                          depth_format, params));
+    return std::shared_ptr<ShadowMap>(new ShadowMap(device.take_map(drawn)));
   });
 }
 

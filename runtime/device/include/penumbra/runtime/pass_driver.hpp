@@ -98,6 +98,12 @@ Status upload_screen(Device& device, const ScreenImages& images, std::span<const
 Result<PassOutputs> run_and_read(Device& device, std::span<const PassKind> passes,
                                  const PassPrograms& programs, const PassInputs& inputs);
 
+// The depth pass alone: `casters` (light-view xyz, a triangle list) drawn
+// by `depth` into a new width x height map of `format`.
+Result<Texture> draw_map(Device& device, Program depth,
+                         std::span<const std::array<float, 3>> casters, int width, int height,
+                         DepthFormat format, const ParamBlock& params);
+
 // An engine's own program around a function form (docs/function-form.md):
 // `triangles` drawn into a width x height target with a depth buffer,
 // offered the map as the function form's textures and its mip where given.
