@@ -7,8 +7,8 @@
 #include <mutex>
 
 #include "default_library.hpp"
+#include "penumbra/library/pass_files.hpp"
 #include "penumbra/verify/shadow_params.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra::testing {
 namespace {

@@ -1,8 +1,5 @@
 #include "proof.hpp"
 
-#include <fstream>
-#include <sstream>
-
 namespace penumbra::testing {
 namespace {
 
@@ -107,21 +104,6 @@ Result<const PassReflection*> reflection_of(const LibraryVariant& variant, PassK
     if (by_target != by_pass->second.end()) return &by_target->second;
   }
   return proof_error(variant, pass, target, "index.json has no reflection of this pass");
-}
-
-Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
-                                   PassKind pass, Target target, ShaderStage stage) {
-  const auto by_pass = variant.passes.find(pass);
-  if (by_pass == variant.passes.end() || !by_pass->second.contains(target)) {
-    return proof_error(variant, pass, target, "index.json lists no files for this pass");
-  }
-  const PassFiles& files = by_pass->second.at(target);
-  const auto path = library.root / (stage == ShaderStage::vertex ? files.vert : files.frag);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(Error::Kind::io, path.string(), "cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace penumbra::testing

@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "penumbra/library/library.hpp"
+#include "penumbra/library/pass_files.hpp"
 
 namespace penumbra::testing {
 
@@ -65,10 +66,6 @@ Error proof_error(const LibraryVariant& variant, PassKind pass, Target target, s
 // The reflection of `pass` for `target`, or an error naming what is absent.
 Result<const PassReflection*> reflection_of(const LibraryVariant& variant, PassKind pass,
                                             Target target);
-
-// One emitted file of the pass, read whole (text or SPIR-V bytes).
-Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
-                                   PassKind pass, Target target, ShaderStage stage);
 
 // Every prover has this shape; each names the targets it proves.
 using Prover = Status (*)(const Library& library, const LibraryVariant& variant, PassKind pass,

@@ -13,6 +13,7 @@
 
 #ifdef PENUMBRA_HAS_GL
 #include "penumbra/gl/engine.hpp"
+#include "penumbra/library/pass_files.hpp"
 #endif
 
 namespace penumbra {

@@ -4,6 +4,7 @@
 
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/library/pass_files.hpp"
 #include "penumbra/support/file.hpp"
 
 namespace penumbra {
@@ -15,54 +16,17 @@ Result<StageCode> reflected(std::vector<std::uint32_t> spirv, const std::string&
   return StageCode{std::move(spirv), std::move(*iface)};
 }
 
-Result<const PassFiles*> pass_files(const LibraryVariant& variant, PassKind pass, Target target) {
-  const auto by_pass = variant.passes.find(pass);
-  if (by_pass == variant.passes.end() || !by_pass->second.contains(target)) {
-    return make_error(Error::Kind::bad_input, variant.variant.name,
-                      "the library has no " + std::string(to_string(pass)) + " pass for target " +
-                          std::string(to_string(target)));
-  }
-  return &by_pass->second.at(target);
-}
-
-// Where one stage of a pass lives in the library.
-Result<std::filesystem::path> stage_path(const Library& library, const LibraryVariant& variant,
-                                         PassKind pass, Target target, ShaderStage stage) {
-  auto files = pass_files(variant, pass, target);
-  if (!files) return files.error();
-  return library.root / (stage == ShaderStage::vertex ? (*files)->vert : (*files)->frag);
-}
-
 // Compiles one stage's emitted text with the target's front end.
 Result<StageCode> text_stage(const Library& library, const LibraryVariant& variant, PassKind pass,
                              Target target, ShaderStage stage, Execution& execution) {
-  auto path = stage_path(library, variant, pass, target, stage);
+  auto path = pass_stage_path(library, variant, pass, target, stage);
   if (!path) return path.error();
   auto text = read_file(*path);
   if (!text) return text.error();
   return compile_text_stage(target, stage, *text, path->string(), execution);
 }
 
-// index.json's reflection.<pass>.<target>: what the engine binds.
-Result<PassReflection> pass_reflection(const LibraryVariant& variant, PassKind pass,
-                                       Target target) {
-  const auto by_pass = variant.reflection.find(pass);
-  if (by_pass == variant.reflection.end() || !by_pass->second.contains(target)) {
-    return make_error(Error::Kind::bad_input, variant.variant.name,
-                      "index.json has no reflection." + std::string(to_string(pass)) + "." +
-                          std::string(to_string(target)) + " to bind the pass by");
-  }
-  return by_pass->second.at(target);
-}
-
 }  // namespace
-
-Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
-                                   PassKind pass, Target target, ShaderStage stage) {
-  auto path = stage_path(library, variant, pass, target, stage);
-  if (!path) return path.error();
-  return read_file(*path);
-}
 
 Result<StageCode> compile_text_stage(Target target, ShaderStage stage, std::string_view text,
                                      const std::string& name, Execution& execution) {
@@ -93,7 +57,7 @@ Result<ExecutableProgram> load_executable(const Library& library, const LibraryV
   PENUMBRA_TRY_ASSIGN(out.program.reflection, pass_reflection(variant, pass, target));
   if (target == Target::spirv) {
     for (ShaderStage stage : {ShaderStage::vertex, ShaderStage::fragment}) {
-      auto path = stage_path(library, variant, pass, target, stage);
+      auto path = pass_stage_path(library, variant, pass, target, stage);
       if (!path) return path.error();
       auto words = read_spirv_file(*path);
       if (!words) return words.error();

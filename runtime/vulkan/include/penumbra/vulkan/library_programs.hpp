@@ -77,8 +77,4 @@ Result<MinmaxBuild> build_library_minmax(Engine& engine, const Library& library,
                                          const LibraryVariant& variant, Target target,
                                          ShadowMap& map, const ParamBlock& params);
 
-// The emitted text (or .spv bytes) of one stage of a pass.
-Result<std::string> read_pass_file(const Library& library, const LibraryVariant& variant,
-                                   PassKind pass, Target target, ShaderStage stage);
-
 }  // namespace penumbra
