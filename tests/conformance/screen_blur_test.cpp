@@ -1,5 +1,6 @@
-// screen_blur's chain on the device (Engine::run_screen_blur) with every
-// target's own query, blur_h, blur_v and composite passes: a constant factor
+// screen_blur's chain on the device: the technique's pass list from the
+// model (query, blur_h, blur_v, composite) run by Engine::run_passes with
+// every target's own programs, as verify runs it: a constant factor
 // stays constant after the blur, edges included (clamp-to-edge repeats the
 // edge pixel); a step in the factor keeps its edge values and matches the
 // CPU blur of the GPU's own factor (plain and depth-aware); the composite is
@@ -14,7 +15,10 @@
 #include <string>
 
 #include "default_library.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/reference/scene.hpp"
+#include "penumbra/runtime/pass_driver.hpp"
+#include "penumbra/support/image_checks.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/library_programs.hpp"
 
@@ -68,6 +72,32 @@ FloatImage row_split_receivers(float top, float bottom) {
   return receivers;
 }
 
+// What the chain's passes wrote, each the receivers' size.
+struct ChainImages {
+  FloatImage factor;       // the query's .x
+  FloatImage texel_reads;  // the query's .y
+  FloatImage blurred_h;    // blur_h's .x
+  FloatImage blurred;      // blur_v's .x: the blurred factor
+  FloatImage composite;    // the composite's four channels
+};
+
+// The chain's images from run_passes' targets; an error names a pass that
+// did not run.
+Result<ChainImages> chain_images(const runtime::PassOutputs& outputs) {
+  const PassKind kinds[] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
+                            PassKind::composite};
+  for (PassKind pass : kinds) {
+    if (outputs.target(pass) == nullptr) {
+      return make_error(Error::Kind::internal, std::string(to_string(pass)),
+                        "the pass did not run");
+    }
+  }
+  const FloatImage& query = *outputs.target(PassKind::query);
+  return ChainImages{
+      channel(query, 0), channel(query, 1), channel(*outputs.target(PassKind::blur_h), 0),
+      channel(*outputs.target(PassKind::blur_v), 0), *outputs.target(PassKind::composite)};
+}
+
 double max_difference(const FloatImage& a, const FloatImage& b) {
   double worst = 0.0;
   for (std::size_t i = 0; i < a.data.size(); ++i) {
@@ -95,14 +125,20 @@ class ScreenBlurChain : public ::testing::TestWithParam<std::string> {
     const FloatImage colour = reference::scene_colour(kWidth, kHeight);
     const ParamBlock params = shadow_params(reference::builtin_scenes().front().light,
                                             {kWidth, kHeight, kWidth, kHeight}, 1.0f);
+    const std::vector<PassKind> passes = runtime::select_passes(
+        describe(variant->variant.technique).passes, /*draw_depth=*/false, /*deferred=*/false);
     for (Target target : variant->variant.targets) {
       SCOPED_TRACE(to_string(target));
-      auto programs = load_screen_blur(library, *variant, target);
+      auto programs = load_passes(
+          passes, [&](PassKind pass) { return load_executable(library, *variant, pass, target); });
       ASSERT_TRUE(programs.ok()) << programs.error().to_string();
       auto shadow_map = (*engine)->upload_shadow_map(map);
       ASSERT_TRUE(shadow_map.ok()) << shadow_map.error().to_string();
-      auto output =
-          (*engine)->run_screen_blur(programs->programs(), **shadow_map, receivers, colour, params);
+      auto outputs =
+          (*engine)->run_passes(passes, program_map(*programs), **shadow_map,
+                                {.receivers = &receivers, .scene_colour = &colour}, params);
+      ASSERT_TRUE(outputs.ok()) << outputs.error().to_string();
+      auto output = chain_images(*outputs);
       ASSERT_TRUE(output.ok()) << output.error().to_string();
       ASSERT_EQ(output->blurred.width, kWidth);
       ASSERT_EQ(output->blurred.height, kHeight);
@@ -122,7 +158,7 @@ class ScreenBlurChain : public ::testing::TestWithParam<std::string> {
 // edge read the edge pixel.
 TEST_P(ScreenBlurChain, ConstantFactorStaysConstantUpToTheEdges) {
   run_every_target(split_map(1.0f, 1.0f), split_receivers(0.5f, 0.5f),
-                   [](const Variant&, const ScreenBlurOutput& output) {
+                   [](const Variant&, const ChainImages& output) {
                      for (float f : output.factor.data) ASSERT_NEAR(f, 1.0f, 1e-6);
                      for (int y = 0; y < kHeight; ++y) {
                        for (int x = 0; x < kWidth; ++x) {
@@ -140,7 +176,7 @@ TEST_P(ScreenBlurChain, ConstantFactorStaysConstantUpToTheEdges) {
 TEST_P(ScreenBlurChain, StepMatchesTheCpuBlurOfTheGpuFactor) {
   run_every_target(
       split_map(0.0f, 1.0f), split_receivers(0.5f, 0.6f),
-      [](const Variant& variant, const ScreenBlurOutput& output) {
+      [](const Variant& variant, const ChainImages& output) {
         const FloatImage receivers = split_receivers(0.5f, 0.6f);
         const bool depth_aware = variant.keys.depth_aware.value_or(false);
         const FloatImage expected_h = reference::blur_horizontal(
@@ -162,7 +198,7 @@ TEST_P(ScreenBlurChain, StepMatchesTheCpuBlurOfTheGpuFactor) {
 TEST_P(ScreenBlurChain, CheckerMatchesTheCpuBlurOfTheGpuFactorAlongBothAxes) {
   run_every_target(
       checker_map(), row_split_receivers(0.5f, 0.6f),
-      [](const Variant& variant, const ScreenBlurOutput& output) {
+      [](const Variant& variant, const ChainImages& output) {
         const FloatImage receivers = row_split_receivers(0.5f, 0.6f);
         const bool depth_aware = variant.keys.depth_aware.value_or(false);
         // The factor really varies down a column (3x3 compares across blocks).

@@ -9,14 +9,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "default_library.hpp"
 #include "gl_fixture.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
+#include "penumbra/runtime/pass_driver.hpp"
+#include "penumbra/support/image_checks.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -37,6 +42,14 @@ double max_abs_error(const FloatImage& gpu, const FloatImage& cpu) {
   return worst;
 }
 
+// What the chain's passes wrote, each the receivers' size.
+struct Chain {
+  FloatImage factor;     // the query's .x
+  FloatImage blurred_h;  // blur_h's .x
+  FloatImage blurred;    // blur_v's .x
+  FloatImage composite;  // the composite's four channels
+};
+
 using Case = std::tuple<std::string, Target>;
 
 class GlScreenBlur : public ::testing::TestWithParam<Case> {};
@@ -45,14 +58,17 @@ TEST_P(GlScreenBlur, EveryPassMatchesTheReferenceOnEveryScene) {
   const auto& [name, target] = GetParam();
   auto variant = find_default_variant(name);
   ASSERT_NE(variant, nullptr);
-  PassText passes[4];
-  const PassKind kinds[4] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
-                             PassKind::composite};
-  for (int p = 0; p < 4; ++p) {
-    auto text = emitted_pass(*variant, target, kinds[p]);
+  // The technique's pass list from the model, as verify's GL path runs it.
+  const std::vector<PassKind> passes = runtime::select_passes(
+      describe(variant->technique).passes, /*draw_depth=*/false, /*deferred=*/false);
+  std::map<PassKind, PassText> texts;
+  for (PassKind pass : passes) {
+    auto text = emitted_pass(*variant, target, pass);
     ASSERT_TRUE(text.ok()) << text.error().to_string();
-    passes[p] = std::move(*text);
+    texts.emplace(pass, std::move(*text));
   }
+  std::map<PassKind, GlPass> programs;
+  for (const auto& [pass, text] : texts) programs.emplace(pass, text.view());
   auto engine = make_gl_engine();
   ASSERT_NE(engine, nullptr);
   const bool depth_aware = variant->keys.depth_aware.value_or(false);
@@ -60,15 +76,21 @@ TEST_P(GlScreenBlur, EveryPassMatchesTheReferenceOnEveryScene) {
     const SceneInputs inputs = scene_inputs(scene);
     const FloatImage colour =
         reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
-    auto gpu = engine->run_screen_blur(
-        {passes[0].view(), passes[1].view(), passes[2].view(), passes[3].view()},
-        inputs.normalized_depth, inputs.receivers, colour, inputs.params);
-    ASSERT_TRUE(gpu.ok()) << scene.name << ": " << gpu.error().to_string();
+    auto outputs = engine->run_passes(passes, programs, inputs.normalized_depth,
+                                      {.receivers = &inputs.receivers, .scene_colour = &colour},
+                                      inputs.params);
+    ASSERT_TRUE(outputs.ok()) << scene.name << ": " << outputs.error().to_string();
+    const FloatImage* const written[] = {
+        outputs->target(PassKind::query), outputs->target(PassKind::blur_h),
+        outputs->target(PassKind::blur_v), outputs->target(PassKind::composite)};
+    for (const FloatImage* image : written) ASSERT_NE(image, nullptr) << scene.name;
+    const Chain chain{channel(*written[0], 0), channel(*written[1], 0), channel(*written[2], 0),
+                      *written[3]};
 
     auto expected = reference::evaluate_image(*variant, inputs.linear_depth, scene.light,
                                               inputs.receivers, kLlvmpipePrecision);
     ASSERT_TRUE(expected.ok()) << expected.error().to_string();
-    auto factor = reference::compare(gpu->factor, expected->visibility, expected->ambiguous,
+    auto factor = reference::compare(chain.factor, expected->visibility, expected->ambiguous,
                                      reference::tolerance(variant->technique, kLlvmpipePrecision));
     ASSERT_TRUE(factor.ok()) << factor.error().to_string();
     EXPECT_TRUE(factor->pass) << scene.name << ": factor max error " << factor->max_abs_error;
@@ -76,18 +98,18 @@ TEST_P(GlScreenBlur, EveryPassMatchesTheReferenceOnEveryScene) {
 
     const FloatImage* receivers = depth_aware ? &inputs.receivers : nullptr;
     const FloatImage blurred_h =
-        reference::blur_horizontal(gpu->factor, variant->blur_weights, receivers);
-    EXPECT_LE(max_abs_error(gpu->blurred_h, blurred_h), reference::kBlurTolerance) << scene.name;
+        reference::blur_horizontal(chain.factor, variant->blur_weights, receivers);
+    EXPECT_LE(max_abs_error(chain.blurred_h, blurred_h), reference::kBlurTolerance) << scene.name;
     const FloatImage blurred_v =
-        reference::blur_vertical(gpu->blurred_h, variant->blur_weights, receivers);
-    EXPECT_LE(max_abs_error(gpu->blurred, blurred_v), reference::kBlurTolerance) << scene.name;
-    EXPECT_LE(max_abs_error(gpu->blurred,
-                            reference::screen_blur(*variant, gpu->factor, inputs.receivers)),
+        reference::blur_vertical(chain.blurred_h, variant->blur_weights, receivers);
+    EXPECT_LE(max_abs_error(chain.blurred, blurred_v), reference::kBlurTolerance) << scene.name;
+    EXPECT_LE(max_abs_error(chain.blurred,
+                            reference::screen_blur(*variant, chain.factor, inputs.receivers)),
               reference::kBlurTolerance)
         << scene.name;
     // The blur does blur: a penumbra's factor changes.
-    EXPECT_GT(max_abs_error(gpu->blurred, gpu->factor), 1e-3) << scene.name;
-    EXPECT_LE(max_abs_error(gpu->composite, reference::composite(colour, gpu->blurred)),
+    EXPECT_GT(max_abs_error(chain.blurred, chain.factor), 1e-3) << scene.name;
+    EXPECT_LE(max_abs_error(chain.composite, reference::composite(colour, chain.blurred)),
               reference::kCompositeTolerance)
         << scene.name;
   }

@@ -120,21 +120,17 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
   // The receivers image is the screen; a composite is drawn over
   // reference::scene_colour but not returned.
   const std::vector<PassKind> passes = scene_passes(variant, /*builds_mip=*/false);
-  std::map<PassKind, ExecutableProgram> loaded;
-  for (PassKind pass : passes) {
-    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load_executable(library, variant, pass, target));
-    loaded.emplace(pass, std::move(program));
-  }
+  PENUMBRA_TRY_ASSIGN(const LoadedPrograms loaded, load_passes(passes, [&](PassKind pass) {
+                        return load_executable(library, variant, pass, target);
+                      }));
   if (uses_minmax_mip(variant.variant.technique)) {
     PENUMBRA_TRY(build_library_minmax(engine, library, variant, target, **map, params));
   }
-  PassProgramMap programs;
-  for (const auto& [pass, program] : loaded) programs.emplace(pass, &program.program);
   const FloatImage colour =
       reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
   PENUMBRA_TRY_ASSIGN(
       runtime::PassOutputs outputs,
-      engine.run_passes(passes, programs, **map,
+      engine.run_passes(passes, program_map(loaded), **map,
                         {.receivers = &inputs.receivers, .scene_colour = &colour}, params));
   return final_visibility(outputs);
 }

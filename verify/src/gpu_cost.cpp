@@ -169,20 +169,17 @@ Result<GpuCost> measure_gpu_cost(const Library& library, Engine& engine,
                                }));
   }
 
-  // The passes after the mip, timed together (screen_blur: its chain).
+  // The passes after the mip, timed together (a chain such as screen_blur's too).
   const std::vector<PassKind> passes = scene_passes(entry, /*builds_mip=*/false);
-  auto loaded = std::make_shared<std::map<PassKind, ExecutableProgram>>();
-  for (PassKind pass : passes) {
-    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load_executable(library, entry, pass, kTarget));
-    loaded->emplace(pass, std::move(program));
-  }
+  PENUMBRA_TRY_ASSIGN(LoadedPrograms programs, load_passes(passes, [&](PassKind pass) {
+                        return load_executable(library, entry, pass, kTarget);
+                      }));
+  auto loaded = std::make_shared<const LoadedPrograms>(std::move(programs));
   const TimedRun query = [&engine, &fixture, &cost, &passes,
                           loaded]() -> Result<std::optional<double>> {
-    PassProgramMap programs;
-    for (const auto& [pass, program] : *loaded) programs.emplace(pass, &program.program);
     PENUMBRA_TRY_ASSIGN(
         runtime::PassOutputs outputs,
-        engine.run_passes(passes, programs, *fixture.map,
+        engine.run_passes(passes, program_map(*loaded), *fixture.map,
                           {.receivers = &fixture.receivers, .scene_colour = &fixture.colour},
                           fixture.params));
     QueryOutput out = final_visibility(outputs);

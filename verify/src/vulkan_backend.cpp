@@ -101,19 +101,14 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
     return scenes.minmax->error();
   }
   const std::vector<PassKind> passes = scene_passes(entry, /*builds_mip=*/false);
-  auto loaded = std::make_shared<std::map<PassKind, ExecutableProgram>>();
-  for (PassKind pass : passes) {
-    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load(pass));
-    loaded->emplace(pass, std::move(program));
-  }
+  PENUMBRA_TRY_ASSIGN(LoadedPrograms programs, load_passes(passes, load));
+  auto loaded = std::make_shared<const LoadedPrograms>(std::move(programs));
   return LoadedPasses{
       loaded->at(passes.front()).execution,
       [&engine, loaded, passes](const SceneFixture& fixture) -> Result<SceneOutput> {
-        PassProgramMap programs;
-        for (const auto& [pass, program] : *loaded) programs.emplace(pass, &program.program);
         PENUMBRA_TRY_ASSIGN(
             runtime::PassOutputs outputs,
-            engine.run_passes(passes, programs, *fixture.map,
+            engine.run_passes(passes, program_map(*loaded), *fixture.map,
                               {.receivers = &fixture.receivers, .scene_colour = &fixture.colour},
                               fixture.params));
         return scene_output(std::move(outputs));

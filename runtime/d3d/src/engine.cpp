@@ -203,27 +203,6 @@ Result<D3dQueryOutput> D3dEngine::run_deferred(const D3dPass& deferred, const D3
   return visibility_of(outputs);
 }
 
-Result<D3dScreenBlurOutput> D3dEngine::run_screen_blur(const D3dScreenBlurPasses& passes,
-                                                       const D3dMap& map,
-                                                       const FloatImage& receivers,
-                                                       const FloatImage& scene_colour,
-                                                       const ParamBlock& params) {
-  const std::map<PassKind, D3dPass> programs = {{PassKind::query, passes.query},
-                                                {PassKind::blur_h, passes.blur_h},
-                                                {PassKind::blur_v, passes.blur_v},
-                                                {PassKind::composite, passes.composite}};
-  const PassKind list[] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
-                           PassKind::composite};
-  PENUMBRA_TRY_ASSIGN(runtime::PassOutputs outputs,
-                      run_passes(list, programs, map,
-                                 {.receivers = &receivers, .scene_colour = &scene_colour}, params));
-  D3dQueryOutput factor = visibility_of(outputs);
-  return D3dScreenBlurOutput{std::move(factor.visibility), std::move(factor.texel_reads),
-                             channel(*outputs.target(PassKind::blur_h), 0),
-                             channel(*outputs.target(PassKind::blur_v), 0),
-                             std::move(outputs.targets.back().second)};
-}
-
 std::filesystem::path default_d3d_host() {
   if (const char* given = std::getenv("PENUMBRA_D3D_HOST"); given && *given) return given;
   std::vector<std::filesystem::path> candidates;

@@ -203,27 +203,6 @@ Result<std::vector<FloatImage>> GlEngine::build_minmax(const GlMinmaxPasses& pas
   return levels;
 }
 
-Result<GlScreenBlurOutput> GlEngine::run_screen_blur(const GlScreenBlurPasses& passes,
-                                                     const FloatImage& normalized_depth,
-                                                     const FloatImage& receivers,
-                                                     const FloatImage& scene_colour,
-                                                     const ParamBlock& params) {
-  const PassKind list[] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
-                           PassKind::composite};
-  const std::map<PassKind, GlPass> programs = {{PassKind::query, passes.query},
-                                               {PassKind::blur_h, passes.blur_h},
-                                               {PassKind::blur_v, passes.blur_v},
-                                               {PassKind::composite, passes.composite}};
-  PENUMBRA_TRY_ASSIGN(runtime::PassOutputs outputs,
-                      run_passes(list, programs, normalized_depth,
-                                 {.receivers = &receivers, .scene_colour = &scene_colour}, params));
-  GlQueryOutput factor = gl::visibility_of(outputs);
-  return GlScreenBlurOutput{std::move(factor.visibility), std::move(factor.texel_reads),
-                            channel(*outputs.target(PassKind::blur_h), 0),
-                            channel(*outputs.target(PassKind::blur_v), 0),
-                            std::move(outputs.targets.back().second)};
-}
-
 Result<runtime::PassOutputs> GlEngine::run_passes(std::span<const PassKind> passes,
                                                   const std::map<PassKind, GlPass>& programs,
                                                   const FloatImage& normalized_depth,

@@ -199,34 +199,6 @@ Result<FloatImage> Engine::run_surface(const PassProgram& surface,
   });
 }
 
-Result<ScreenBlurOutput> Engine::run_screen_blur(const ScreenBlurPrograms& programs,
-                                                 const ShadowMap& map, const FloatImage& receivers,
-                                                 const FloatImage& scene_colour,
-                                                 const ParamBlock& params) {
-  return detail::run_validated(*context_->validation, [&]() -> Result<ScreenBlurOutput> {
-    PENUMBRA_TRY(check_owner(*map.images_, *context_));
-    const PassKind passes[] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
-                               PassKind::composite};
-    const PassProgramMap loaded = {{PassKind::query, &programs.query},
-                                   {PassKind::blur_h, &programs.blur_h},
-                                   {PassKind::blur_v, &programs.blur_v},
-                                   {PassKind::composite, &programs.composite}};
-    PENUMBRA_TRY_ASSIGN(
-        runtime::PassOutputs outputs,
-        passes_on(*context_, *map.images_, passes, loaded,
-                  {.receivers = &receivers, .scene_colour = &scene_colour}, params));
-    QueryOutput factor = visibility_of(outputs);
-    ScreenBlurOutput output;
-    output.factor = std::move(factor.visibility);
-    output.texel_reads = std::move(factor.texel_reads);
-    output.blurred_h = channel(*outputs.target(PassKind::blur_h), 0);
-    output.blurred = channel(*outputs.target(PassKind::blur_v), 0);
-    output.composite = std::move(outputs.targets.back().second);
-    output.gpu_ms = outputs.gpu_ms;
-    return output;
-  });
-}
-
 Result<runtime::PassOutputs> Engine::run_passes(std::span<const PassKind> passes,
                                                 const PassProgramMap& programs, ShadowMap& map,
                                                 const runtime::ScreenImages& images,

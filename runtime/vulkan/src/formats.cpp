@@ -52,7 +52,7 @@ constexpr Requirement kRequirements[] = {
     {kReceiversFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT, "TRANSFER_DST",
      "receiver and scene colour uploads"},
     {kCompositeFormat, false, VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT",
-     "the screen_blur composite pass"},
+     "composite passes"},
     {kCompositeFormat, false, VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT, "TRANSFER_SRC",
      "composite readbacks"},
     {kDepthPositionFormat, true, VK_FORMAT_FEATURE_2_VERTEX_BUFFER_BIT, "VERTEX_BUFFER",

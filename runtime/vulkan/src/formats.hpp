@@ -22,8 +22,9 @@ inline constexpr VkFormat kReceiversFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 inline constexpr VkFormat kVisibilityFormat = VK_FORMAT_R32G32_SFLOAT;
 // The min-max mip's levels: (min, max) of normalized depth.
 inline constexpr VkFormat kMinmaxFormat = VK_FORMAT_R32G32_SFLOAT;
-// The screen_blur chain: the factor and blur targets (factor, texel reads or
-// 0), read by the next pass as screen_factor; scene_colour in; the composite out.
+// A chain of screen passes: the factor and blur targets (factor, texel
+// reads or 0), read by the next pass as screen_factor; scene_colour in; the
+// composite out.
 inline constexpr VkFormat kScreenFactorFormat = VK_FORMAT_R32G32_SFLOAT;
 inline constexpr VkFormat kSceneColourFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 inline constexpr VkFormat kCompositeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -117,12 +117,6 @@ Result<ExecutableProgram> load_bytecode_executable(const Library& library,
   return out;
 }
 
-Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
-                                               const LibraryVariant& variant, Target target) {
-  return load_screen_blur(
-      [&](PassKind pass) { return load_executable(library, variant, pass, target); });
-}
-
 Result<MinmaxBuild> build_library_minmax(Engine& engine, const Library& library,
                                          const LibraryVariant& variant, Target target,
                                          ShadowMap& map, const ParamBlock& params) {
@@ -133,17 +127,19 @@ Result<MinmaxBuild> build_library_minmax(Engine& engine, const Library& library,
   return engine.build_minmax(map, init.program, reduce.program, params);
 }
 
-Result<ScreenBlurExecutables> load_screen_blur(const PassLoader& load) {
-  auto query = load(PassKind::query);
-  if (!query) return query.error();
-  auto blur_h = load(PassKind::blur_h);
-  if (!blur_h) return blur_h.error();
-  auto blur_v = load(PassKind::blur_v);
-  if (!blur_v) return blur_v.error();
-  auto composite = load(PassKind::composite);
-  if (!composite) return composite.error();
-  return ScreenBlurExecutables{std::move(*query), std::move(*blur_h), std::move(*blur_v),
-                               std::move(*composite)};
+Result<LoadedPrograms> load_passes(std::span<const PassKind> passes, const PassLoader& load) {
+  LoadedPrograms loaded;
+  for (PassKind pass : passes) {
+    PENUMBRA_TRY_ASSIGN(ExecutableProgram program, load(pass));
+    loaded.emplace(pass, std::move(program));
+  }
+  return loaded;
+}
+
+PassProgramMap program_map(const LoadedPrograms& loaded) {
+  PassProgramMap programs;
+  for (const auto& [pass, program] : loaded) programs.emplace(pass, &program.program);
+  return programs;
 }
 
 }  // namespace penumbra

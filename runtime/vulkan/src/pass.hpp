@@ -33,8 +33,8 @@ struct PassDraw {
 };
 
 // A colour target that the next pass samples and a transfer may copy or read
-// back: left in SHADER_READ_ONLY_OPTIMAL (the min-max levels, the screen_blur
-// chain's buffers).
+// back: left in SHADER_READ_ONLY_OPTIMAL (the min-max levels, a chain's
+// screen buffers).
 PassTarget sampled_target(const vk::Image& colour);
 
 // Binds the program's resources by reflection, draws the positions as a

@@ -33,7 +33,8 @@ Status check_eval_inputs(const EvalInputs& inputs);
 // A technique that reads the min-max mip gets it built first by the target's
 // own minmax_init and minmax_reduce passes. For screen_blur (the receivers
 // image is the screen) the visibility is the blurred factor from the chain
-// (Engine::run_screen_blur) and the texel reads the factor pass's...
+// (its pass list run by Engine::run_passes) and the texel reads the factor
+// pass's...
 Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
                                    Target target, const EvalInputs& inputs, Engine& engine);
 

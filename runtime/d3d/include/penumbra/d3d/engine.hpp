@@ -5,8 +5,9 @@
 // engine that drops the library in does: registers, formats, sampler states
 // and input layouts come from the record alone, and D3D9's gl_HalfPixel is
 // set as docs/engines/d3d9.md says. The engine draws the depth pass, the
-// min-max chain, the query and screen_blur's chain, and an engine's own
-// geometry around a function form, and reads targets back.
+// min-max chain, the query, a variant's whole pass list (run_passes: a
+// chain such as screen_blur's), and an engine's own geometry around a
+// function form, and reads targets back; no call names a technique.
 //
 // Lifecycle: create() starts one host process for the runtime in `session`;
 // every later call is one run of the pass driver (penumbra/runtime/
@@ -86,13 +87,6 @@ struct D3dQueryPasses {
   std::optional<D3dMinmaxPasses> minmax = std::nullopt;  // when the query reads shadow_minmax
 };
 
-struct D3dScreenBlurPasses {
-  D3dPass query;
-  D3dPass blur_h;
-  D3dPass blur_v;
-  D3dPass composite;
-};
-
 // A shadow map the depth pass drew, kept on the host until release().
 struct D3dMap {
   int id = 0;
@@ -109,14 +103,6 @@ struct D3dMap {
 struct D3dQueryOutput {
   FloatImage visibility;   // .x
   FloatImage texel_reads;  // .y
-};
-
-struct D3dScreenBlurOutput {
-  FloatImage factor;       // the query's .x
-  FloatImage texel_reads;  // the query's .y
-  FloatImage blurred_h;    // blur_h's .x
-  FloatImage blurred;      // blur_v's .x
-  FloatImage composite;    // the composite's four channels
 };
 
 class D3dEngine {
@@ -178,13 +164,6 @@ class D3dEngine {
                                           const std::map<PassKind, D3dPass>& programs,
                                           const D3dMap& map, const runtime::ScreenImages& images,
                                           const ParamBlock& params);
-
-  // screen_blur's chain on `map`: the query, blur_h, blur_v and the
-  // composite over `scene_colour` (RGBA, the receivers' size).
-  Result<D3dScreenBlurOutput> run_screen_blur(const D3dScreenBlurPasses& passes, const D3dMap& map,
-                                              const FloatImage& receivers,
-                                              const FloatImage& scene_colour,
-                                              const ParamBlock& params);
 
   // Draws `triangles` (a triangle list in whatever space the vertex
   // shader takes, at the reflection's vertex input) with `surface`, an

@@ -3,11 +3,12 @@
 // llvmpipe (docs/gl.md). Every pass is bound by its reflection, index.json's
 // `reflection.<pass>.<target>`, as a GL engine that drops the library in
 // does: the query (after the shadow map's min-max mip when the query reads
-// it) and screen_blur's chain; and an engine's own program drawing its own
-// geometry around a function form. It is the GL counterpart of the Vulkan
-// Engine's build_minmax, run_query, run_screen_blur and run_surface, and
-// like them each call is one run of the pass driver (penumbra/runtime/
-// pass_driver.hpp) on the engine's GL device.
+// it), a variant's whole pass list (run_passes: a chain such as
+// screen_blur's), and an engine's own program drawing its own geometry
+// around a function form. It is the GL counterpart of the Vulkan Engine's
+// build_minmax, run_query, run_passes and run_surface, and like them each
+// call is one run of the pass driver (penumbra/runtime/pass_driver.hpp) on
+// the engine's GL device; no call names a technique.
 //
 // Lifecycle: GlEngine::create() opens an EGL display and a context; then any
 // number of calls, from one thread at a time (each call makes the context
@@ -75,28 +76,11 @@ struct GlQueryPasses {
   std::optional<GlMinmaxPasses> minmax = std::nullopt;
 };
 
-// screen_blur's chain (docs/shader-interface.md, "The screen_blur chain").
-struct GlScreenBlurPasses {
-  GlPass query;      // the unblurred shadow factor per screen pixel: (factor, reads)
-  GlPass blur_h;     // reads screen_factor (and receivers when depth-aware)
-  GlPass blur_v;     // the same, on blur_h's output
-  GlPass composite;  // reads scene_colour and screen_factor (the blurred factor)
-};
-
 // The query pass's output, each channel one image of the receivers' size,
 // row 0 first.
 struct GlQueryOutput {
   FloatImage visibility;   // .x
   FloatImage texel_reads;  // .y: the texels the pass counted as read per pixel
-};
-
-// What GlEngine::run_screen_blur's passes wrote, each the receivers' size.
-struct GlScreenBlurOutput {
-  FloatImage factor;       // the query pass's .x, one channel
-  FloatImage texel_reads;  // the query pass's .y, one channel
-  FloatImage blurred_h;    // blur_h's .x, one channel
-  FloatImage blurred;      // blur_v's .x, one channel: the blurred factor
-  FloatImage composite;    // the composite pass's four channels
 };
 
 class GlEngine {
@@ -152,18 +136,6 @@ class GlEngine {
   Result<std::vector<FloatImage>> build_minmax(const GlMinmaxPasses& passes,
                                                const FloatImage& normalized_depth,
                                                const ParamBlock& params);
-
-  // screen_blur's chain: the query into a screen-sized factor target, blur_h
-  // and blur_v each reading the previous target as screen_factor, and the
-  // composite of `scene_colour` (RGBA, the receivers' size) and the blurred
-  // factor. Every pass gets `params` with screen_size set to the receivers'
-  // size. Errors as run_query's, and bad_input for a scene colour of
-  // another size or channel count.
-  Result<GlScreenBlurOutput> run_screen_blur(const GlScreenBlurPasses& passes,
-                                             const FloatImage& normalized_depth,
-                                             const FloatImage& receivers,
-                                             const FloatImage& scene_colour,
-                                             const ParamBlock& params);
 
   // Runs `passes`, a variant's pass list without its depth pass, on the
   // pass driver (penumbra/runtime/pass_driver.hpp): each pass with its text

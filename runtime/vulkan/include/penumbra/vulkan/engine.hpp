@@ -2,10 +2,12 @@
 //
 // Lifecycle: Engine::create() opens and checks a device; then any number of
 // render_depth / upload_shadow_map / read_shadow_map / build_minmax /
-// read_minmax / run_query / run_screen_blur / run_surface calls, in any order, from one thread at a
-// time (every call waits for its GPU work; each is one run of the pass driver,
-// penumbra/runtime/pass_driver.hpp, on the engine's device); then destroy the Engine. Every failure
-// is a returned Error, never an exception.
+// read_minmax / run_query / run_passes / run_surface calls, in any order,
+// from one thread at a time (every call waits for its GPU work; each is one
+// run of the pass driver, penumbra/runtime/pass_driver.hpp, on the engine's
+// device); then destroy the Engine. Every failure is a returned Error, never
+// an exception. No call names a technique: a variant's passes are its
+// model's pass list (TechniqueDescription::passes) run by run_passes.
 #pragma once
 
 #include <array>
@@ -66,26 +68,6 @@ struct MinmaxBuild {
   int levels = 0;  // N: levels 1..N, level N 1x1
   // The level passes' GPU time summed (timestamps around each draw; the
   // copies into the mip are not included); absent without timestamps.
-  std::optional<double> gpu_ms;
-};
-
-// A screen_blur variant's four passes for one target (docs/runtime.md,
-// "The screen_blur chain").
-struct ScreenBlurPrograms {
-  const PassProgram& query;      // the shadow factor per screen pixel: (factor, reads)
-  const PassProgram& blur_h;     // reads screen_factor (and receivers when depth-aware)
-  const PassProgram& blur_v;     // the same, on blur_h's output
-  const PassProgram& composite;  // reads scene_colour and screen_factor (the blurred factor)
-};
-
-// What Engine::run_screen_blur's passes wrote, each the receivers' size.
-struct ScreenBlurOutput {
-  FloatImage factor;       // the query pass's .x, one channel
-  FloatImage texel_reads;  // the query pass's .y, one channel
-  FloatImage blurred_h;    // blur_h's .x, one channel
-  FloatImage blurred;      // blur_v's .x, one channel: the blurred factor
-  FloatImage composite;    // the composite pass's RGBA, four channels
-  // The four draws' GPU time summed; absent without timestamps.
   std::optional<double> gpu_ms;
 };
 
@@ -160,20 +142,6 @@ class Engine {
   // shadow_minmax needs a map whose min-max mip is built.
   Result<QueryOutput> run_deferred(const PassProgram& deferred, const ShadowMap& map,
                                    const FloatImage& camera_depth, const ParamBlock& params);
-
-  // Runs screen_blur's chain over the screen `receivers` describes, each
-  // pass a full-screen triangle into a target of its own, the receivers'
-  // size: the query into an R32G32_SFLOAT target (factor, texel reads);
-  // blur_h reading it as screen_factor, into an R32G32_SFLOAT target; blur_v
-  // reading that, into another; composite reading blur_v's target as
-  // screen_factor and `scene_colour` (four channels, the receivers' size) as
-  // scene_colour, into an R32G32B32A32_SFLOAT target. The blur passes may
-  // read receivers too (depth-aware). Every pass gets `params` with
-  // screen_size set to the receivers' size.
-  Result<ScreenBlurOutput> run_screen_blur(const ScreenBlurPrograms& programs, const ShadowMap& map,
-                                           const FloatImage& receivers,
-                                           const FloatImage& scene_colour,
-                                           const ParamBlock& params);
 
   // Runs `passes`, a variant's pass list without its depth pass (the map
   // is `map`), on the pass driver (penumbra/runtime/pass_driver.hpp): each

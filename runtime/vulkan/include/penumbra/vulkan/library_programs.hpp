@@ -2,6 +2,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -53,23 +55,16 @@ Result<ExecutableProgram> load_bytecode_executable(const Library& library,
                                                    Target target,
                                                    const BytecodeTranslator& translator);
 
-// A screen_blur variant's four passes for `target` (Engine::run_screen_blur).
-struct ScreenBlurExecutables {
-  ExecutableProgram query;
-  ExecutableProgram blur_h;
-  ExecutableProgram blur_v;
-  ExecutableProgram composite;
-
-  ScreenBlurPrograms programs() const {
-    return {query.program, blur_h.program, blur_v.program, composite.program};
-  }
-};
-
-Result<ScreenBlurExecutables> load_screen_blur(const Library& library,
-                                               const LibraryVariant& variant, Target target);
-// The same, each pass loaded by `load` (load_executable, load_bytecode_executable).
+// A variant's programs for a list of its passes, by pass.
+using LoadedPrograms = std::map<PassKind, ExecutableProgram>;
+// How one pass is loaded (load_executable, load_bytecode_executable).
 using PassLoader = std::function<Result<ExecutableProgram>(PassKind pass)>;
-Result<ScreenBlurExecutables> load_screen_blur(const PassLoader& load);
+
+// Every pass of `passes` loaded by `load`; the first error stops it.
+Result<LoadedPrograms> load_passes(std::span<const PassKind> passes, const PassLoader& load);
+
+// `loaded`'s programs for Engine::run_passes; `loaded` must outlive the map.
+PassProgramMap program_map(const LoadedPrograms& loaded);
 
 // The min-max mip of `map` built by `variant`'s minmax_init and
 // minmax_reduce passes for `target` (load_executable, Engine::build_minmax).
