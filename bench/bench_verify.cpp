@@ -2,7 +2,9 @@
 // penumbra, an earlier one (--baseline, as scripts/bench.sh verify
 // --baseline REV builds it) and this one, side by side in one run
 // (alternating, so that a change in the machine's load falls on both), and
-// a check that both write the same verify.json, byte for byte.
+// a check that both write the same verify.json, byte for byte. Without
+// --baseline the baseline is this build run with --baseline-arg's arguments
+// (e.g. --optimized-jit): a default of verify's against the old one.
 //
 // Each verify runs with Mesa's shader cache in a folder of the benchmark's
 // own: --cold empties it before every run (a CI runner that starts bare);
@@ -27,18 +29,20 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Options {
-  std::string baseline;               // the earlier build's `penumbra`
-  int repeats = 1;                    // timed runs of each build
-  std::vector<std::string> variants;  // empty: the whole default library
-  bool cold = false;                  // an empty shader cache for every run
-  bool no_wine = false;               // skip the Direct3D runtimes under Wine
+  std::string baseline;                    // the earlier build's `penumbra`; empty: this one
+  std::vector<std::string> baseline_args;  // more arguments of the baseline's verify
+  int repeats = 1;                         // timed runs of each build
+  std::vector<std::string> variants;       // empty: the whole default library
+  bool cold = false;                       // an empty shader cache for every run
+  bool no_wine = false;                    // skip the Direct3D runtimes under Wine
 };
 
 struct Build {
   std::string name;  // "baseline", "this build"
   fs::path penumbra;
-  fs::path library;  // its own copy, where its verify writes verify.json
-  fs::path cache;    // its own shader cache
+  std::vector<std::string> args;  // after verify's own
+  fs::path library;               // its own copy, where its verify writes verify.json
+  fs::path cache;                 // its own shader cache
   std::vector<double> seconds;
 };
 
@@ -46,6 +50,7 @@ Result<double> verify(const Build& build, const std::vector<std::string>& select
                       const fs::path& log) {
   std::vector<std::string> argv = {build.penumbra.string(), "verify", build.library.string(), "-q"};
   argv.insert(argv.end(), selection.begin(), selection.end());
+  argv.insert(argv.end(), build.args.begin(), build.args.end());
   const bench::Environment env(
       {{"MESA_SHADER_CACHE_DIR", build.cache.string()}, {"MESA_SHADER_CACHE_DISABLE", "false"}});
   return bench::seconds_to_succeed(argv, env.get(), log);
@@ -62,8 +67,9 @@ Status run(const Options& options) {
       const double build_seconds,
       bench::seconds_to_succeed(
           {penumbra.string(), "build", manifest.string(), "-o", library.string()}, environ, log));
-  std::vector<Build> builds = {{"baseline", fs::absolute(options.baseline), {}, {}, {}},
-                               {"this build", penumbra, {}, {}, {}}};
+  const fs::path baseline = options.baseline.empty() ? penumbra : fs::absolute(options.baseline);
+  std::vector<Build> builds = {{"baseline", baseline, options.baseline_args, {}, {}, {}},
+                               {"this build", penumbra, {}, {}, {}, {}}};
   for (std::size_t b = 0; b < builds.size(); ++b) {
     builds[b].library = root / ("library-" + std::to_string(b));
     builds[b].cache = root / ("shader-cache-" + std::to_string(b));
@@ -81,7 +87,9 @@ Status run(const Options& options) {
                            : "the shader cache filled by an untimed run of each",
               options.repeats);
   for (const Build& build : builds) {
-    std::printf("  %s: %s\n", build.name.c_str(), build.penumbra.c_str());
+    std::string args;
+    for (const std::string& a : build.args) args += " " + a;
+    std::printf("  %s: %s verify%s\n", build.name.c_str(), build.penumbra.c_str(), args.c_str());
     if (!options.cold) PENUMBRA_TRY(verify(build, selection, log));
   }
   std::fflush(stdout);
@@ -116,9 +124,12 @@ Status run(const Options& options) {
 int main(int argc, char** argv) {
   penumbra::Options options;
   CLI::App app{"penumbra_bench_verify: penumbra verify by an earlier build and by this one"};
-  app.add_option("--baseline", options.baseline, "the earlier build's penumbra executable")
-      ->required()
+  app.add_option("--baseline", options.baseline,
+                 "the earlier build's penumbra executable (default: this build's)")
       ->check(CLI::ExistingFile);
+  app.add_option("--baseline-arg", options.baseline_args,
+                 "an argument the baseline's verify gets too (repeatable; "
+                 "--baseline-arg=--optimized-jit)");
   app.add_option("--repeats", options.repeats, "timed runs of each; the median is printed")
       ->check(CLI::Range(1, 99));
   app.add_option("--variant", options.variants,

@@ -27,6 +27,7 @@ struct VerifyArgs {
   std::vector<std::string> paths;
   std::string map_format = "d32_float";
   bool validation = false;
+  bool optimized_jit = false;  // let Mesa's software rasterizers optimize the shaders they compile
   bool verbose = false;
   bool quiet = false;  // only failures and the totals
   int jobs = 0;        // 0: every core
@@ -196,6 +197,7 @@ Result<int> run_verify(const VerifyArgs& args) {
   PENUMBRA_TRY_ASSIGN(const Library library, load_library(args.library));
   PENUMBRA_TRY_ASSIGN(const std::filesystem::path results, results_file(args, library));
   limit_software_rasterizers(args.jobs);
+  if (!args.optimized_jit) skip_software_jit_optimization();
   PENUMBRA_TRY_ASSIGN(const auto engine,
                       Engine::create({.device = args.device, .validation = args.validation},
                                      stderr_diagnostics(args.verbose)));
@@ -241,6 +243,10 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                       allowed_depth_formats());
   add_skip_flags(cmd, args->skipped);
   cmd->add_flag("--validation", args->validation, "Enable the Vulkan validation layer");
+  cmd->add_flag("--optimized-jit", args->optimized_jit,
+                "Let Mesa's software rasterizers (lavapipe, llvmpipe) optimize the shaders they "
+                "compile, as they do by default; without it verify asks them not to "
+                "(GALLIVM_PERF=nopt, unless set), which compiles faster with the same results");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes");
   cmd->add_flag("-q,--quiet", args->quiet,
                 "Print no progress and only the failed checks, then the totals");

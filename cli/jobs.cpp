@@ -21,6 +21,12 @@ void limit_software_rasterizers(int jobs) {
   setenv("LP_NUM_THREADS", std::to_string(jobs).c_str(), 0);
 }
 
+void skip_software_jit_optimization() {
+  // lavapipe and llvmpipe (Wine's runtimes draw through it too) read it when
+  // their first screen is made; a device that is not Mesa's ignores it.
+  setenv("GALLIVM_PERF", "nopt", 0);
+}
+
 ProgressConsumer stderr_progress(bool quiet) {
   if (quiet) return {};
   return [](const Progress& p) {

@@ -1,5 +1,6 @@
 // `-j/--jobs` and `-q/--quiet` of verify and report: how many cores they
-// use, and the progress they print.
+// use, how Mesa's software rasterizers compile for them, and the progress
+// they print.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,13 @@ void add_jobs_option(CLI::App* cmd, int& jobs);
 // `jobs` threads too, unless the user set that, so that --jobs bounds the
 // cores the whole run uses. Before the first device is created.
 void limit_software_rasterizers(int jobs);
+
+// Makes Mesa's software rasterizers compile shaders without LLVM's
+// optimizations (GALLIVM_PERF=nopt), unless the user set GALLIVM_PERF: the
+// same results from shaders compiled in a fraction of the time, but slower
+// draws (docs/performance.md, "The shader JIT unoptimized"). For verify, not
+// for report, whose GPU costs time the draws. Before the first device.
+void skip_software_jit_optimization();
 
 // Prints "[done/total] elapsed unit" lines to stderr; none when `quiet`.
 ProgressConsumer stderr_progress(bool quiet);

@@ -23,9 +23,10 @@
 #                                     against the device's fetch-only texel rate
 #                                     (penumbra_bench_gpu; --device D, --size WxH,
 #                                     --variant V...)
-#   scripts/bench.sh verify --baseline REV [ARGS]
+#   scripts/bench.sh verify [--baseline REV] [ARGS]
 #                                     verify of the default library by commit REV's
-#                                     penumbra (built in build-baseline/) against
+#                                     penumbra (built in build-baseline/; default:
+#                                     this one run with --baseline-arg=ARG's) against
 #                                     this one's, side by side, verify.json
 #                                     compared (penumbra_bench_verify; --cold,
 #                                     --repeats R, --variant V...)

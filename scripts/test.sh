@@ -19,6 +19,11 @@ esac
 
 install_missing_packages
 install_hlsl_compiler
+# Mesa's software rasterizers compile the suite's shaders without LLVM's
+# optimizations, as penumbra verify has them do (docs/verification.md, "On
+# every core"): the same results, most of the compile time saved. One test
+# (cli_jobs_test.cpp) runs verify with the optimizations too.
+export GALLIVM_PERF="${GALLIVM_PERF:-nopt}"
 if [ "$sanitize" -eq 1 ]; then
   configure_and_build build-sanitize all "${PENUMBRA_DEVELOPER_CONFIG[@]}" -DPENUMBRA_SANITIZE=ON
   start_wine_session  # before LD_PRELOAD: Wine is not ours to sanitize

@@ -1,6 +1,7 @@
 // `penumbra verify` and `penumbra report` with --jobs: the same results for
 // every N (verify.json byte for byte, the report's files less their timings),
-// progress on stderr as each unit finishes, and none with -q.
+// progress on stderr as each unit finishes, and none with -q; and verify's
+// results the same whether Mesa's shader JIT optimizes or not.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -82,6 +83,20 @@ TEST_F(Jobs, VerifyGivesTheSameResultsForAnyNumberOfJobs) {
   EXPECT_THAT(quiet.err, Not(HasSubstr("[1/")));
   EXPECT_THAT(quiet.out, Not(HasSubstr("PASS")));
   EXPECT_THAT(quiet.out, HasSubstr(" passed, 0 failed\n"));
+}
+
+// verify's default (GALLIVM_PERF=nopt on lavapipe and llvmpipe) against
+// --optimized-jit, the drivers' own default: byte for byte the same.
+TEST_F(Jobs, VerifyGivesTheSameResultsWithTheShaderJitOptimizedOrNot) {
+  const std::string unset = "env -u GALLIVM_PERF";  // whatever the suite's environment sets
+  const CliRun fast = run_penumbra("verify '" + lib().string() + "' -q", unset);
+  ASSERT_EQ(fast.exit_code, 0) << fast.out << fast.err;
+  const std::string unoptimized = verify_json();
+  const CliRun optimized =
+      run_penumbra("verify '" + lib().string() + "' -q --optimized-jit", unset);
+  ASSERT_EQ(optimized.exit_code, 0) << optimized.out << optimized.err;
+  EXPECT_EQ(verify_json(), unoptimized);
+  EXPECT_EQ(optimized.out, fast.out);
 }
 
 TEST_F(Jobs, ReportWritesTheSameFilesForAnyNumberOfJobs) {
