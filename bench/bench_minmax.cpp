@@ -19,9 +19,9 @@
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/reference/scene.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/engine.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra {
 namespace {

@@ -9,8 +9,9 @@
 #             driver, penumbra/runtime/), the executable
 #             Penumbra::penumbra and penumbra_add_shader_library(); always
 #             loaded; needs nlohmann_json only.
-#   compiler  Penumbra::compiler; loaded when no component is named, or
-#             compiler or runtime is; needs glslang, SPIRV-Tools and
+#   compiler  Penumbra::compiler and Penumbra::spirv (SPIR-V reflection,
+#             SPIRV-Cross's core only); loaded when no component is named,
+#             or compiler or runtime is; needs glslang, SPIRV-Tools and
 #             SPIRV-Cross.
 #   runtime   Penumbra::runtime: Penumbra::vulkan, Penumbra::verify,
 #             Penumbra::reference and Penumbra::gl where built; needs Vulkan
@@ -30,6 +31,10 @@ install(DIRECTORY support/include/ model/include/ library/include/ runtime/devic
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT PenumbraTargets NAMESPACE Penumbra:: DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 install(FILES cmake/PenumbraShaderLibrary.cmake DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
+
+install(TARGETS penumbra_spirv EXPORT PenumbraSpirvTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY spirv/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT PenumbraSpirvTargets NAMESPACE Penumbra:: DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 
 install(TARGETS penumbra_shaderlib_sources penumbra_compiler EXPORT PenumbraCompilerTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -19,8 +19,8 @@
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/runtime/pass_driver.hpp"
 #include "penumbra/support/image_checks.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "penumbra/verify/shadow_params.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra::testing {
 namespace {

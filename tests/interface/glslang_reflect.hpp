@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra::testing {

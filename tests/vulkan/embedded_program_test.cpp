@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "penumbra/library/library.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "test_programs.hpp"
 #include "vulkan_embedded/shaders.hpp"
 

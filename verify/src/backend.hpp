@@ -17,8 +17,8 @@
 #include "penumbra/support/image.hpp"
 #include "penumbra/support/result.hpp"
 #include "penumbra/verify/function_form.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "penumbra/vulkan/engine.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 #include "scene_fixture.hpp"
 #include "scene_passes.hpp"
 

@@ -10,8 +10,8 @@
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "penumbra/verify/shadow_params.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 #include "scene_passes.hpp"
 
 namespace penumbra {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "penumbra/compiler/text_frontend.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "scene_fixture.hpp"
 #include "scene_passes.hpp"
 #include "scene_truths.hpp"

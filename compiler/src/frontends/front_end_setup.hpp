@@ -8,8 +8,8 @@
 
 #include <string>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/model.hpp"
+#include "penumbra/spirv/reflection.hpp"
 
 namespace penumbra {
 

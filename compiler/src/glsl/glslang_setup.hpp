@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/shaderlib_source.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {

@@ -7,7 +7,7 @@
 #include <spirv/unified1/spirv.hpp>
 #include <string>
 
-#include "spirv/module.hpp"
+#include "penumbra/spirv/module.hpp"
 
 namespace penumbra {
 namespace {

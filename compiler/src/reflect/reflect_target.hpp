@@ -5,9 +5,9 @@
 // parsers of its own (tests/interface/).
 #pragma once
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {

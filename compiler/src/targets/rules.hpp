@@ -4,7 +4,7 @@
 #pragma once
 
 #include "penumbra/compiler/stage.hpp"
-#include "spirv/module.hpp"
+#include "penumbra/spirv/module.hpp"
 
 namespace penumbra {
 

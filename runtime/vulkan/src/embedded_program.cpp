@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 
 namespace penumbra {
 namespace {

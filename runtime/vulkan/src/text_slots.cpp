@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
-#include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/spirv/text_bindings.hpp"
 
 namespace penumbra::detail {
 namespace {

@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/target_reflection.hpp"
 #include "penumbra/model/target_traits.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "reflection_binding.hpp"
 
 namespace penumbra::detail {

@@ -12,11 +12,11 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/compiler/shaderlib_source.hpp"
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 
 namespace penumbra {

@@ -11,13 +11,13 @@
 #include <string_view>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/library/library.hpp"  // BytecodeFile
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/pass.hpp"
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "penumbra/support/diagnostics.hpp"
 #include "penumbra/support/result.hpp"
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/model/target_traits.hpp"
+#include "penumbra/spirv/reflection.hpp"
 
 namespace penumbra {
 

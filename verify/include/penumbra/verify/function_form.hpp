@@ -9,9 +9,9 @@
 #include "penumbra/library/library.hpp"
 #include "penumbra/model/depth_format.hpp"
 #include "penumbra/reference/compare.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "penumbra/verify/stage_picture.hpp"
 #include "penumbra/vulkan/engine.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra {
 

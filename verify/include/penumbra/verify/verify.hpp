@@ -14,10 +14,10 @@
 #include "penumbra/reference/compare.hpp"
 #include "penumbra/support/shard.hpp"
 #include "penumbra/verify/function_form.hpp"
+#include "penumbra/verify/library_programs.hpp"
 #include "penumbra/verify/paths.hpp"
 #include "penumbra/verify/progress.hpp"
 #include "penumbra/vulkan/engine.hpp"
-#include "penumbra/vulkan/library_programs.hpp"
 
 namespace penumbra {
 

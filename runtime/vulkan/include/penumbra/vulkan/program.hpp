@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "penumbra/compiler/reflection.hpp"
 #include "penumbra/model/target_reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 #include "penumbra/support/param_block.hpp"  // ParamBlock, param_block_key
 
 namespace penumbra {

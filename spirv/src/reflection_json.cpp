@@ -1,6 +1,6 @@
 #include <nlohmann/json.hpp>
 
-#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 
 namespace penumbra {
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <tuple>
 
+#include "penumbra/spirv/module.hpp"
 #include "reflect_parts.hpp"
-#include "spirv/module.hpp"
 
 namespace penumbra {
 

@@ -1,7 +1,7 @@
 // spirv.hpp's HasResultAndType() tells where each opcode keeps its ids; it is
 // compiled only with the utility code enabled, before the first include.
 #define SPV_ENABLE_UTILITY_CODE
-#include "spirv/module.hpp"
+#include "penumbra/spirv/module.hpp"
 
 #include <algorithm>
 #include <cstring>

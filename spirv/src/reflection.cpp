@@ -1,4 +1,4 @@
-#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 
 #include <algorithm>
 #include <spirv_cross/spirv_cross.hpp>

@@ -6,7 +6,7 @@
 #include <span>
 #include <spirv_cross/spirv_cross.hpp>
 
-#include "penumbra/compiler/reflection.hpp"
+#include "penumbra/spirv/reflection.hpp"
 
 namespace penumbra::detail {
 

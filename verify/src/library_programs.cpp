@@ -1,4 +1,4 @@
-#include "penumbra/vulkan/library_programs.hpp"
+#include "penumbra/verify/library_programs.hpp"
 
 #include <algorithm>
 
