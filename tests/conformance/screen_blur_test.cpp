@@ -18,9 +18,9 @@
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/runtime/pass_driver.hpp"
-#include "penumbra/support/image_checks.hpp"
 #include "penumbra/verify/library_programs.hpp"
 #include "penumbra/verify/shadow_params.hpp"
+#include "screen_chain.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -72,32 +72,6 @@ FloatImage row_split_receivers(float top, float bottom) {
   return receivers;
 }
 
-// What the chain's passes wrote, each the receivers' size.
-struct ChainImages {
-  FloatImage factor;       // the query's .x
-  FloatImage texel_reads;  // the query's .y
-  FloatImage blurred_h;    // blur_h's .x
-  FloatImage blurred;      // blur_v's .x: the blurred factor
-  FloatImage composite;    // the composite's four channels
-};
-
-// The chain's images from run_passes' targets; an error names a pass that
-// did not run.
-Result<ChainImages> chain_images(const runtime::PassOutputs& outputs) {
-  const PassKind kinds[] = {PassKind::query, PassKind::blur_h, PassKind::blur_v,
-                            PassKind::composite};
-  for (PassKind pass : kinds) {
-    if (outputs.target(pass) == nullptr) {
-      return make_error(Error::Kind::internal, std::string(to_string(pass)),
-                        "the pass did not run");
-    }
-  }
-  const FloatImage& query = *outputs.target(PassKind::query);
-  return ChainImages{
-      channel(query, 0), channel(query, 1), channel(*outputs.target(PassKind::blur_h), 0),
-      channel(*outputs.target(PassKind::blur_v), 0), *outputs.target(PassKind::composite)};
-}
-
 double max_difference(const FloatImage& a, const FloatImage& b) {
   double worst = 0.0;
   for (std::size_t i = 0; i < a.data.size(); ++i) {
@@ -138,7 +112,7 @@ class ScreenBlurChain : public ::testing::TestWithParam<std::string> {
           (*engine)->run_passes(passes, program_map(*programs), **shadow_map,
                                 {.receivers = &receivers, .scene_colour = &colour}, params);
       ASSERT_TRUE(outputs.ok()) << outputs.error().to_string();
-      auto output = chain_images(*outputs);
+      auto output = screen_chain(*outputs);
       ASSERT_TRUE(output.ok()) << output.error().to_string();
       ASSERT_EQ(output->blurred.width, kWidth);
       ASSERT_EQ(output->blurred.height, kHeight);
@@ -158,7 +132,7 @@ class ScreenBlurChain : public ::testing::TestWithParam<std::string> {
 // edge read the edge pixel.
 TEST_P(ScreenBlurChain, ConstantFactorStaysConstantUpToTheEdges) {
   run_every_target(split_map(1.0f, 1.0f), split_receivers(0.5f, 0.5f),
-                   [](const Variant&, const ChainImages& output) {
+                   [](const Variant&, const ScreenChain& output) {
                      for (float f : output.factor.data) ASSERT_NEAR(f, 1.0f, 1e-6);
                      for (int y = 0; y < kHeight; ++y) {
                        for (int x = 0; x < kWidth; ++x) {
@@ -176,7 +150,7 @@ TEST_P(ScreenBlurChain, ConstantFactorStaysConstantUpToTheEdges) {
 TEST_P(ScreenBlurChain, StepMatchesTheCpuBlurOfTheGpuFactor) {
   run_every_target(
       split_map(0.0f, 1.0f), split_receivers(0.5f, 0.6f),
-      [](const Variant& variant, const ChainImages& output) {
+      [](const Variant& variant, const ScreenChain& output) {
         const FloatImage receivers = split_receivers(0.5f, 0.6f);
         const bool depth_aware = variant.keys.depth_aware.value_or(false);
         const FloatImage expected_h = reference::blur_horizontal(
@@ -198,7 +172,7 @@ TEST_P(ScreenBlurChain, StepMatchesTheCpuBlurOfTheGpuFactor) {
 TEST_P(ScreenBlurChain, CheckerMatchesTheCpuBlurOfTheGpuFactorAlongBothAxes) {
   run_every_target(
       checker_map(), row_split_receivers(0.5f, 0.6f),
-      [](const Variant& variant, const ChainImages& output) {
+      [](const Variant& variant, const ScreenChain& output) {
         const FloatImage receivers = row_split_receivers(0.5f, 0.6f);
         const bool depth_aware = variant.keys.depth_aware.value_or(false);
         // The factor really varies down a column (3x3 compares across blocks).

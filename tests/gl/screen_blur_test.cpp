@@ -21,7 +21,7 @@
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/runtime/pass_driver.hpp"
-#include "penumbra/support/image_checks.hpp"
+#include "screen_chain.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -41,14 +41,6 @@ double max_abs_error(const FloatImage& gpu, const FloatImage& cpu) {
   }
   return worst;
 }
-
-// What the chain's passes wrote, each the receivers' size.
-struct Chain {
-  FloatImage factor;     // the query's .x
-  FloatImage blurred_h;  // blur_h's .x
-  FloatImage blurred;    // blur_v's .x
-  FloatImage composite;  // the composite's four channels
-};
 
 using Case = std::tuple<std::string, Target>;
 
@@ -80,12 +72,9 @@ TEST_P(GlScreenBlur, EveryPassMatchesTheReferenceOnEveryScene) {
                                       {.receivers = &inputs.receivers, .scene_colour = &colour},
                                       inputs.params);
     ASSERT_TRUE(outputs.ok()) << scene.name << ": " << outputs.error().to_string();
-    const FloatImage* const written[] = {
-        outputs->target(PassKind::query), outputs->target(PassKind::blur_h),
-        outputs->target(PassKind::blur_v), outputs->target(PassKind::composite)};
-    for (const FloatImage* image : written) ASSERT_NE(image, nullptr) << scene.name;
-    const Chain chain{channel(*written[0], 0), channel(*written[1], 0), channel(*written[2], 0),
-                      *written[3]};
+    auto read = screen_chain(*outputs);
+    ASSERT_TRUE(read.ok()) << scene.name << ": " << read.error().to_string();
+    const ScreenChain& chain = *read;
 
     auto expected = reference::evaluate_image(*variant, inputs.linear_depth, scene.light,
                                               inputs.receivers, kLlvmpipePrecision);
