@@ -50,7 +50,7 @@ struct Errors {
 
 // hlsl_dx9's reference and the uncapped one over `receivers`; `exact` and
 // `measured` (the stage) add the penumbra error of each against the truth.
-int measure(const std::string& name, const FloatImage& map, const reference::LightParams& light,
+int measure(const std::string& name, const FloatImage& map, const LightParams& light,
             const FloatImage& receivers, const FloatImage* exact = nullptr,
             const std::vector<bool>* measured = nullptr) {
   const Variant variant{"backprojection", Technique::backprojection, {}, {}, {}, {}, {}};
@@ -90,7 +90,7 @@ int run() {
   reference::Scene plane;
   plane.plane_z0 = 16.0;
   const FloatImage receivers = reference::receivers(plane, 128, 128);
-  const reference::LightParams& light = stage.scene.light;
+  const LightParams& light = stage.scene.light;
   int failed =
       measure("boxes", random_occluders(512, 400, 4, 48, 8.0, 15.5, 16.0, 1), light, receivers);
   failed |=

@@ -18,9 +18,9 @@
 
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/library_programs.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/engine.hpp"
 
 namespace penumbra {

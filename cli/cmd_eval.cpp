@@ -30,7 +30,7 @@ struct EvalArgs {
   std::string ambiguous;    // optional Pf of the reference's ambiguity mask
   std::string device;
   bool reference = false;
-  reference::LightParams light;
+  LightParams light;
   std::optional<double> filter_radius;  // none: the default, 2 texels
 };
 

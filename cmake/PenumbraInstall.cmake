@@ -1,7 +1,7 @@
 # `cmake --install build --prefix P`: bin/penumbra, the headers, the static
 # libraries, share/penumbra/shaderlib and a relocatable CMake package,
-# find_package(Penumbra CONFIG [COMPONENTS shaders compiler runtime]) from
-# P/lib/cmake/Penumbra:
+# find_package(Penumbra CONFIG [COMPONENTS shaders compiler runtime verify])
+# from P/lib/cmake/Penumbra:
 #   shaders   Penumbra::shaders (the lookup over embedded shaders, with
 #             Penumbra::model and Penumbra::support), Penumbra::library
 #             (load_library(): a built library's index.json),
@@ -9,13 +9,18 @@
 #             driver, penumbra/runtime/), the executable
 #             Penumbra::penumbra and penumbra_add_shader_library(); always
 #             loaded; needs nlohmann_json only.
-#   compiler  Penumbra::compiler and Penumbra::spirv (SPIR-V reflection,
-#             SPIRV-Cross's core only); loaded when no component is named,
-#             or compiler or runtime is; needs glslang, SPIRV-Tools and
-#             SPIRV-Cross.
-#   runtime   Penumbra::runtime: Penumbra::vulkan, Penumbra::verify,
-#             Penumbra::reference and Penumbra::gl where built; needs Vulkan
-#             and oneTBB (and OpenGL/EGL with gl), looked up only when requested.
+#   compiler  Penumbra::compiler and Penumbra::spirv; loaded when no
+#             component is named, or compiler or verify is; needs glslang,
+#             SPIRV-Tools and SPIRV-Cross.
+#   runtime   Penumbra::runtime: Penumbra::vulkan, Penumbra::d3d (and its
+#             host, libexec/penumbra/penumbra_d3d_host.exe, where built) and
+#             Penumbra::gl where built, with Penumbra::spirv; needs Vulkan,
+#             SPIRV-Cross's core (and OpenGL/EGL with gl), no compiler.
+#   verify    Penumbra::verify and Penumbra::reference, the conformance
+#             harness over the runtime and the compiler (both loaded with
+#             it); needs oneTBB too.
+# runtime and verify are built with PENUMBRA_BUILD_RUNTIME and looked up only
+# when requested.
 include(CMakePackageConfigHelpers)
 
 set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
@@ -61,12 +66,9 @@ if(PENUMBRA_BUILD_RUNTIME)
   add_library(penumbra_runtime INTERFACE)
   add_library(penumbra::runtime ALIAS penumbra_runtime)
   set_target_properties(penumbra_runtime PROPERTIES EXPORT_NAME runtime)
-  target_link_libraries(penumbra_runtime INTERFACE penumbra_vulkan penumbra_verify
-                                                   penumbra_reference)
-  set(_runtime_targets penumbra_runtime penumbra_vulkan penumbra_verify penumbra_reference
-                       penumbra_d3d)
-  set(_runtime_headers runtime/vulkan/include/ verify/include/ reference/include/
-                       runtime/d3d/include/)
+  target_link_libraries(penumbra_runtime INTERFACE penumbra_device penumbra_vulkan penumbra_d3d)
+  set(_runtime_targets penumbra_runtime penumbra_vulkan penumbra_d3d)
+  set(_runtime_headers runtime/vulkan/include/ runtime/d3d/include/)
   if(PENUMBRA_BUILD_GL)
     target_link_libraries(penumbra_runtime INTERFACE penumbra_gl)
     list(APPEND _runtime_targets penumbra_gl)
@@ -76,6 +78,12 @@ if(PENUMBRA_BUILD_RUNTIME)
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(DIRECTORY ${_runtime_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT PenumbraRuntimeTargets NAMESPACE Penumbra::
+          DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
+
+  install(TARGETS penumbra_verify penumbra_reference EXPORT PenumbraVerifyTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(DIRECTORY verify/include/ reference/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT PenumbraVerifyTargets NAMESPACE Penumbra::
           DESTINATION ${PENUMBRA_INSTALL_CMAKEDIR})
 endif()
 

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "engine_shadows/shaders.hpp"
-#include "penumbra/reference/light.hpp"
-#include "penumbra/verify/shadow_params.hpp"
+#include "penumbra/model/light.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/vulkan/embedded_program.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "scene.hpp"
@@ -28,7 +28,7 @@ using namespace scene;
 // What the query pass reads per pixel: the point the pixel shows as (u, v)
 // in the shadow map and its light-view depth z. An engine computes it from
 // each pixel's position; here the picture looks straight down at the ground.
-penumbra::FloatImage ground_receivers(const penumbra::reference::LightParams& light) {
+penumbra::FloatImage ground_receivers(const penumbra::LightParams& light) {
   // The ground x (or y) at the centre of pixel column i (or row j).
   const auto at = [](int pixel) {
     return (2.0 * (pixel + 0.5) / kImageSize - 1.0) * kGroundHalfWidth;
@@ -36,7 +36,7 @@ penumbra::FloatImage ground_receivers(const penumbra::reference::LightParams& li
   penumbra::FloatImage receivers(kImageSize, kImageSize, 3);
   for (int j = 0; j < kImageSize; ++j) {
     for (int i = 0; i < kImageSize; ++i) {
-      const auto uv = penumbra::reference::project(light, at(i), at(j), kGroundZ);
+      const auto uv = penumbra::project(light, at(i), at(j), kGroundZ);
       receivers.at(i, j, 0) = static_cast<float>(uv.u);
       receivers.at(i, j, 1) = static_cast<float>(uv.v);
       receivers.at(i, j, 2) = kGroundZ;
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
   // The light and the shadow map's frustum. Depths up to z = 32 are stored
   // in [0, 1], scaled by a power of two (exact). Every pass takes its values
   // from this one block.
-  penumbra::reference::LightParams light;
+  penumbra::LightParams light;
   light.light_world_size = kLightSize;
   light.frustum_width = kFrustumWidth;
   light.near_plane = kNear;

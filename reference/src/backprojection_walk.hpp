@@ -9,9 +9,9 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "penumbra/model/light.hpp"
 #include "penumbra/model/model.hpp"
 #include "penumbra/reference/backprojection.hpp"
-#include "penumbra/reference/light.hpp"
 #include "penumbra/reference/minmax_cursor.hpp"
 #include "penumbra/reference/sampling.hpp"
 #include "penumbra/reference/techniques.hpp"

@@ -3,10 +3,17 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
 namespace penumbra::reference {
+
+std::optional<EncodedDepth> encoded_depth(MapEncoding encoding, const LightParams& light,
+                                          float depth_scale) {
+  if (encoding == MapEncoding::linear) return std::nullopt;
+  return EncodedDepth{encoding, {light.near_plane, 1.0 / depth_scale}};
+}
 
 double tie_margin(const EncodedDepth& encoded, double z) {
   constexpr double kStoredReach = 0x1p-20;    // 16 ulp of 1

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "penumbra/reference/light.hpp"
+#include "penumbra/model/light.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/sample_rotation.hpp"

@@ -56,7 +56,7 @@ class EvalReference : public EvalFixture {
   // What verify_library holds `target`'s runs of `name` to on this scene.
   static reference::ReferenceImage verify_reference(const std::string& name, Target target) {
     auto image =
-        reference::evaluate_image(variant(name), map_, reference::LightParams{}, receivers_,
+        reference::evaluate_image(variant(name), map_, LightParams{}, receivers_,
                                   reference::SamplingPrecision{}, reference::shader_limits(target));
     EXPECT_TRUE(image.ok()) << image.error().to_string();
     return image.ok() ? *image : reference::ReferenceImage{};
@@ -104,7 +104,7 @@ TEST_F(EvalReference, WalksAsTheTargetsShaderDoes) {
 }
 
 // `light` as eval's options.
-std::string light_args(const reference::LightParams& light) {
+std::string light_args(const LightParams& light) {
   std::ostringstream args;
   args.precision(17);
   args << "--light-size " << light.light_world_size << " --frustum-width " << light.frustum_width
@@ -218,7 +218,7 @@ TEST_F(EvalReference, AmbiguousBadUsageIsExit2AndLeavesTheOutputsIntact) {
 TEST_F(EvalReference, DefaultLightIsTheIndexDefaults) {
   std::ifstream in(lib() / "index.json");
   const nlohmann::json defaults = nlohmann::json::parse(in).at("defaults");
-  const reference::LightParams light;
+  const LightParams light;
   EXPECT_EQ(defaults.at("light_world_size").get<double>(), light.light_world_size);
   EXPECT_EQ(defaults.at("light_frustum_width").get<double>(), light.frustum_width);
   EXPECT_EQ(defaults.at("near_plane").get<double>(), light.near_plane);

@@ -48,7 +48,7 @@ TEST_F(EvalCommand, PcssWhitepaper16AgreesWithTheWhitepapersCode) {
   ASSERT_TRUE(library.ok());
   const reference::SamplingPrecision precision;
   auto ref = reference::evaluate_image(library->find("pcss_b16_p16_whitepaper16")->variant, map_,
-                                       reference::LightParams{}, receivers_, precision);
+                                       LightParams{}, receivers_, precision);
   ASSERT_TRUE(ref.ok());
   const reference::ShadowMapView view(map_);
   const double tolerance = reference::tolerance(Technique::pcss, precision);
@@ -260,8 +260,7 @@ TEST_F(EvalCommand, EvalRunsEachTargetsOwnTextAgainstTheReference) {
   ASSERT_TRUE(library.ok());
   const Variant& variant = library->find("pcss_b16_p16_whitepaper16")->variant;
   const reference::SamplingPrecision precision;
-  auto ref =
-      reference::evaluate_image(variant, map_, reference::LightParams{}, receivers_, precision);
+  auto ref = reference::evaluate_image(variant, map_, LightParams{}, receivers_, precision);
   ASSERT_TRUE(ref.ok());
   for (const std::string target : {"spirv", "glsl450", "hlsl_dx9"}) {
     const CliRun run =

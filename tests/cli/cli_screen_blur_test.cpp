@@ -57,7 +57,7 @@ void expect_device_matches_reference(const std::string& name, const FloatImage& 
   ASSERT_EQ(device.height, receivers.height);
   ASSERT_EQ(device.channels, 1);
   ASSERT_EQ(cpu.width, receivers.width);
-  auto factor = reference::evaluate_image(variant, map, reference::LightParams{}, receivers,
+  auto factor = reference::evaluate_image(variant, map, LightParams{}, receivers,
                                           reference::SamplingPrecision{});
   ASSERT_TRUE(factor.ok()) << factor.error().to_string();
   const int radius = *variant.keys.blur_radius;
@@ -92,9 +92,8 @@ TEST_F(ScreenBlurCommand, DeviceChainAgreesWithTheReferenceChain) {
     const FloatImage cpu = eval(name, name + "_cpu.pfm", "--reference");
     expect_device_matches_reference(name, device, cpu, map_, receivers_, *library);
     // The blur changes the factor: the outputs are not the unblurred factor.
-    auto factor =
-        reference::evaluate_image(library->find(name)->variant, map_, reference::LightParams{},
-                                  receivers_, reference::SamplingPrecision{});
+    auto factor = reference::evaluate_image(library->find(name)->variant, map_, LightParams{},
+                                            receivers_, reference::SamplingPrecision{});
     ASSERT_TRUE(factor.ok());
     double changed = 0.0;
     for (std::size_t p = 0; p < cpu.pixel_count(); ++p) {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/reference/light.hpp"
+#include "penumbra/model/light.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/support/image.hpp"
 
@@ -25,7 +25,7 @@ struct EdgeMap {
 
 struct EdgeLight {
   std::string name;
-  reference::LightParams light;
+  LightParams light;
 };
 
 inline constexpr int kEdgeMapSize = 16;
@@ -53,9 +53,9 @@ inline std::vector<EdgeMap> edge_maps() {
 }
 
 inline std::vector<EdgeLight> edge_lights() {
-  reference::LightParams point;
+  LightParams point;
   point.light_world_size = 0.0;
-  reference::LightParams huge;
+  LightParams huge;
   huge.light_world_size = 1e6;
   return {{"default", {}}, {"point", point}, {"huge", huge}};
 }
@@ -68,7 +68,7 @@ inline std::vector<std::array<double, 2>> edge_uvs() {
 // Receiver depths: behind the light, just in front of it, before, at and
 // just past the near plane, ordinary, and far beyond float range; NaN and
 // infinities.
-inline std::vector<double> edge_depths(const reference::LightParams& light) {
+inline std::vector<double> edge_depths(const LightParams& light) {
   const double n = light.near_plane;
   return {std::numeric_limits<double>::quiet_NaN(),
           -std::numeric_limits<double>::infinity(),
@@ -84,7 +84,7 @@ inline std::vector<double> edge_depths(const reference::LightParams& light) {
           std::numeric_limits<double>::infinity()};
 }
 
-inline std::vector<reference::Query> edge_queries(const reference::LightParams& light) {
+inline std::vector<reference::Query> edge_queries(const LightParams& light) {
   std::vector<reference::Query> queries;
   for (double z : edge_depths(light)) {
     for (const auto& uv : edge_uvs()) queries.push_back({uv[0], uv[1], z});

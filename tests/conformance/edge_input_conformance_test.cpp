@@ -20,7 +20,7 @@ namespace penumbra::testing {
 namespace {
 
 // One pixel per query: columns edge_uvs(), rows edge_depths().
-FloatImage edge_receivers(const reference::LightParams& light) {
+FloatImage edge_receivers(const LightParams& light) {
   const auto uvs = edge_uvs();
   const auto depths = edge_depths(light);
   FloatImage receivers(int(uvs.size()), int(depths.size()), 3);

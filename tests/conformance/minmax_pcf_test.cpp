@@ -17,10 +17,10 @@
 
 #include "default_library.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/library_programs.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/vulkan/engine.hpp"
 #include "validation_messages.hpp"
 

@@ -16,10 +16,10 @@
 
 #include "default_library.hpp"
 #include "penumbra/model/shader_contract.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/runtime/pass_driver.hpp"
 #include "penumbra/verify/library_programs.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "screen_chain.hpp"
 
 namespace penumbra::testing {

@@ -8,7 +8,7 @@
 
 #include "default_library.hpp"
 #include "penumbra/library/pass_files.hpp"
-#include "penumbra/verify/shadow_params.hpp"
+#include "penumbra/model/shadow_params.hpp"
 
 namespace penumbra::testing {
 namespace {

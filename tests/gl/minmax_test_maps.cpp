@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "default_library.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 
 namespace penumbra::testing {
 

@@ -2,7 +2,7 @@
 # build into a prefix, moves the prefix (the package must be relocatable),
 # then configures, builds and runs consumer/ against the moved package with
 # Vulkan and OpenGL disabled (the compiler component must not need them), and
-# probes the runtime component with runtime_probe/.
+# probes the runtime and verify components with runtime_probe/.
 # Inputs: BUILD_DIR SOURCE_DIR TEST_DIR WORK_DIR GENERATOR CXX_COMPILER CONFIG
 # EXPECT_RUNTIME SANITIZE.
 
@@ -173,9 +173,16 @@ if(GENERATOR STREQUAL "Ninja")
   endif()
 endif()
 
-# The runtime component: missing without Vulkan, found with it when built.
+# The runtime and verify components: both missing without Vulkan; with it,
+# found when built. The runtime needs no compiler library and no oneTBB
+# (finding glslang, SPIRV-Tools or oneTBB disabled), which verify needs.
 run(${CMAKE_COMMAND} -S ${TEST_DIR}/runtime_probe -B ${WORK_DIR}/probe_without_vulkan
-    ${common_args} -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DEXPECT_RUNTIME=OFF)
+    ${common_args} -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON -DEXPECT_RUNTIME=OFF
+    -DEXPECT_VERIFY=OFF)
+run(${CMAKE_COMMAND} -S ${TEST_DIR}/runtime_probe -B ${WORK_DIR}/probe_without_compiler
+    ${common_args} -DCMAKE_DISABLE_FIND_PACKAGE_glslang=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_SPIRV-Tools-opt=ON -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON
+    -DEXPECT_RUNTIME=${EXPECT_RUNTIME} -DEXPECT_VERIFY=OFF)
 run(${CMAKE_COMMAND} -S ${TEST_DIR}/runtime_probe -B ${WORK_DIR}/probe ${common_args}
-    -DEXPECT_RUNTIME=${EXPECT_RUNTIME})
+    -DEXPECT_RUNTIME=${EXPECT_RUNTIME} -DEXPECT_VERIFY=${EXPECT_RUNTIME})
 message(STATUS "install test: passed")

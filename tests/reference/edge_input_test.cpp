@@ -17,7 +17,6 @@
 namespace penumbra::testing {
 namespace {
 
-using reference::LightParams;
 using reference::Query;
 
 class EdgeInputs : public ::testing::TestWithParam<std::string> {

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "penumbra/model/light.hpp"
 #include "penumbra/model/model.hpp"
-#include "penumbra/reference/light.hpp"
 #include "penumbra/support/image.hpp"
 
 namespace penumbra::testing {
@@ -69,8 +69,8 @@ inline Variant bitmask_backprojection_variant(int light_bits) {
 // slopes are (u - 0.5) * 2, and from a receiver at z_r = 2 straight below the
 // light a patch at z = 1 projects with g(1) = 1 * 2 / (2 - 1) = 2: texels
 // 3..4 of 8 (slopes -0.25..0.25) cover the light's [-0.5, 0.5] exactly.
-inline reference::LightParams unit_backprojection_light() {
-  reference::LightParams light;
+inline LightParams unit_backprojection_light() {
+  LightParams light;
   light.near_plane = 1.0;
   light.frustum_width = 2.0;
   light.light_world_size = 0.5;

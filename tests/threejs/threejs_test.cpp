@@ -19,9 +19,9 @@
 #include "chromium_page.hpp"
 #include "default_library.hpp"
 #include "penumbra/compiler/manifest.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/exact_visibility.hpp"
 #include "penumbra/support/file.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/verify/stage_picture.hpp"
 
 namespace penumbra::testing {
@@ -76,7 +76,7 @@ Result<nlohmann::json> stage_json(const reference::Stage& stage) {
   const reference::Scene& scene = stage.scene;
   nlohmann::json boxes = nlohmann::json::array();
   for (const reference::Box& b : scene.boxes) boxes.push_back({b.x0, b.y0, b.x1, b.y1, b.z0, b.z1});
-  const reference::LightParams directional =
+  const LightParams directional =
       reference::for_map_encoding(scene, MapEncoding::orthographic).light;
   const nlohmann::json expected = {
       {"width", scene.receivers_width},
@@ -144,9 +144,9 @@ Result<FloatImage> picture(const nlohmann::json& base64, int width, int height,
 
 // The light three's shadow camera gave the function (its ShadowParams),
 // directional for an orthographic map.
-reference::LightParams light_of(const nlohmann::json& parameters, MapEncoding encoding) {
-  reference::LightParams light;
-  if (is_orthographic(encoding)) light.projection = reference::LightProjection::orthographic;
+LightParams light_of(const nlohmann::json& parameters, MapEncoding encoding) {
+  LightParams light;
+  if (is_orthographic(encoding)) light.projection = LightProjection::orthographic;
   light.light_world_size = parameters.at("light")[0].get<double>();
   light.frustum_width = parameters.at("light")[1].get<double>();
   light.near_plane = parameters.at("light")[2].get<double>();
@@ -236,7 +236,7 @@ Result<EngineMap> three_map(const nlohmann::json& browser, const reference::Scen
   EngineMap map;
   map.stored = FloatImage(scene.map_width, scene.map_height, 1);
   map.stored.data = texels;  // row 0 first in memory: v = 0.5 / height
-  map.encoded = encoded_depth(encoding, scene.light, depth_scale_for(scene.far_z));
+  map.encoded = reference::encoded_depth(encoding, scene.light, depth_scale_for(scene.far_z));
   return map;
 }
 
@@ -255,9 +255,8 @@ TEST_P(ThreeJs, FunctionFormInThreesMaterialsMatchesTheReferenceOnThreesMap) {
   auto gpu =
       picture(run.browser.at("pictures").at(GetParam()), stage.width, stage.height, GetParam());
   ASSERT_TRUE(gpu) << gpu.error().to_string();
-  const reference::LightParams light =
-      light_of(run.browser.at("parameters").at(GetParam()), encoding);
-  const reference::LightParams& expected = stage.stage.scene.light;
+  const LightParams light = light_of(run.browser.at("parameters").at(GetParam()), encoding);
+  const LightParams& expected = stage.stage.scene.light;
   EXPECT_NEAR(light.frustum_width, expected.frustum_width, 1e-6);
   EXPECT_NEAR(light.near_plane, expected.near_plane, 1e-9);
   EXPECT_NEAR(light.light_world_size, expected.light_world_size, 1e-12);

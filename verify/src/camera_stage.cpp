@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/precision.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "scene_truths.hpp"
 
 namespace penumbra {

@@ -81,14 +81,12 @@ Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target
           row(frame.forward, 1.0, 0.0)};
 }
 
-LightClipDepth light_clip_depth(const reference::LightParams& light, double far_plane,
-                                Target target) {
+LightClipDepth light_clip_depth(const LightParams& light, double far_plane, Target target) {
   return {light.orthographic(), traits(target).is_hlsl || target == Target::spirv, light.near_plane,
           far_plane};
 }
 
-Matrix4 light_clip(const reference::LightParams& light, const LightClipDepth& depth,
-                   Target target) {
+Matrix4 light_clip(const LightParams& light, const LightClipDepth& depth, Target target) {
   const double y_sign = traits(target).is_hlsl ? -1.0 : 1.0;
   const double n = light.near_plane;
   if (depth.orthographic) {

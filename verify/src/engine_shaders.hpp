@@ -44,15 +44,14 @@ struct LightClipDepth {
 };
 
 // `light`'s clip depth for `target`, its far plane at `far_plane`.
-LightClipDepth light_clip_depth(const reference::LightParams& light, double far_plane,
-                                Target target);
+LightClipDepth light_clip_depth(const LightParams& light, double far_plane, Target target);
 
 // The light's view-projection for the function form and the deferred pass:
 // x and y scaled by 2 n / Fw (y negated for Direct3D, whose viewport puts +1
 // on the map's first row), w = z. An orthographic light's scales x and y by
 // 2 / Fw, keeps w = 1 and maps z from n to f onto the clip depth `depth`
 // describes.
-Matrix4 light_clip(const reference::LightParams& light, const LightClipDepth& depth, Target target);
+Matrix4 light_clip(const LightParams& light, const LightClipDepth& depth, Target target);
 
 // Whether the function form `reflection` describes takes the pixel (the
 // `rotation` key).

@@ -8,10 +8,10 @@
 #include <string>
 
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/screen_blur.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/library_programs.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "scene_passes.hpp"
 
 namespace penumbra {
@@ -48,7 +48,7 @@ FloatImage normalized_map(const FloatImage& map, float depth_scale) {
 // light's near plane, and 1 / depth_scale for the far one; none for linear.
 std::optional<reference::EncodedDepth> encoding_of(const LibraryVariant& variant,
                                                    const EvalInputs& inputs, float depth_scale) {
-  return encoded_depth(map_encoding(variant.variant.keys), inputs.light, depth_scale);
+  return reference::encoded_depth(map_encoding(variant.variant.keys), inputs.light, depth_scale);
 }
 
 // The linear map as the variant's programs read it: normalized, or stored in
@@ -93,7 +93,7 @@ Status check_eval_inputs(const EvalInputs& inputs) {
     return make_error(Error::Kind::bad_input, "--shadow-map",
                       "holds a negative depth; linear light-view z is >= 0");
   }
-  const reference::LightParams& light = inputs.light;
+  const LightParams& light = inputs.light;
   PENUMBRA_TRY(check_range("--light-size", light.light_world_size, 0.0, kMaxLightLength));
   PENUMBRA_TRY(
       check_range("--frustum-width", light.frustum_width, kMinLightLength, kMaxLightLength));
@@ -142,9 +142,9 @@ Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, 
   const float depth_scale = depth_scale_for(max_depth(inputs));
   const auto encoded = encoding_of(variant, inputs, depth_scale);
   // An orthographic map's light is directional: --light-size is its half-slope.
-  reference::LightParams light = inputs.light;
+  LightParams light = inputs.light;
   if (encoded && is_orthographic(encoded->encoding)) {
-    light.projection = reference::LightProjection::orthographic;
+    light.projection = LightProjection::orthographic;
   }
   auto image =
       encoded ? reference::evaluate_image(

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/reference/screen_blur.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "scene_truths.hpp"
 
 namespace penumbra {
@@ -95,7 +95,7 @@ Result<SceneFixture> prepare_scene(Engine& engine, SceneTruths& truths, const Pa
       depth_scale);
   const auto triangles = reference::triangles(scene);
   const MapEncoding encoding = depth.reflection.map_encoding.value_or(MapEncoding::linear);
-  fixture.encoded = encoded_depth(encoding, scene.light, depth_scale);
+  fixture.encoded = reference::encoded_depth(encoding, scene.light, depth_scale);
   // hlsl_dx9 reads its R32F target, the others the depth image.
   const bool reads_depth_image = traits(target).comparison_sampler;
   if (fixture.encoded && reads_depth_image) fixture.encoded->format = map_format;

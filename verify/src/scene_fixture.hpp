@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "penumbra/vulkan/engine.hpp"
 

@@ -56,7 +56,7 @@ FloatImage linear_depths(const EngineMap& map) {
 
 // The reference at `receivers` on `map`.
 Result<reference::ReferenceImage> reference_at(const Variant& variant, const EngineMap& map,
-                                               const reference::LightParams& light,
+                                               const LightParams& light,
                                                const FloatImage& receivers,
                                                const reference::SamplingPrecision& precision,
                                                const reference::ShaderLimits& limits) {
@@ -73,7 +73,7 @@ Result<reference::ReferenceImage> reference_at(const Variant& variant, const Eng
 // value in [low, high]. The map is decoded once for all of them, without
 // an encoded map's depth-tie evaluations.
 Status widen_by_rounding(reference::ReferenceImage& expected, const Variant& variant,
-                         const EngineMap& map, const reference::LightParams& light,
+                         const EngineMap& map, const LightParams& light,
                          std::span<const FloatImage> rounded, std::span<const std::size_t> pixels,
                          const reference::SamplingPrecision& precision,
                          const reference::ShaderLimits& limits) {
@@ -156,7 +156,7 @@ std::vector<std::size_t> face_pixels(const reference::Stage& stage,
 
 Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
-    const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
+    const EngineMap& map, const LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
     const reference::ShaderLimits& limits, std::span<const FloatImage> rounded) {
   PENUMBRA_TRY_ASSIGN(reference::ReferenceImage expected,

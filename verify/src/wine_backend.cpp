@@ -13,9 +13,9 @@
 #include "backend.hpp"
 #include "engine_shaders.hpp"
 #include "penumbra/d3d/engine.hpp"
+#include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/support/scratch_file.hpp"
-#include "penumbra/verify/shadow_params.hpp"
 
 namespace penumbra {
 namespace {

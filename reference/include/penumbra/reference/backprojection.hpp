@@ -5,7 +5,7 @@
 // inside the light. The reference sums texel by texel, in double.
 #pragma once
 
-#include "penumbra/reference/light.hpp"
+#include "penumbra/model/light.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/shadow_map.hpp"
 #include "penumbra/reference/techniques.hpp"

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "penumbra/reference/light.hpp"
+#include "penumbra/model/light.hpp"
 #include "penumbra/support/image.hpp"
 
 namespace penumbra::reference {

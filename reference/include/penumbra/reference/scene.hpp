@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/model/light.hpp"
 #include "penumbra/model/map_encoding.hpp"
-#include "penumbra/reference/light.hpp"
 #include "penumbra/support/image.hpp"
 
 namespace penumbra::reference {

@@ -8,9 +8,11 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "penumbra/model/depth_format.hpp"
+#include "penumbra/model/light.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/support/image.hpp"
 
@@ -24,6 +26,12 @@ struct EncodedDepth {
 
   bool operator==(const EncodedDepth&) const = default;
 };
+
+// How a map in `encoding` stores depth under the projection these
+// parameters describe: `light`'s near plane, and 1 / depth_scale for the far
+// one (docs/shader-interface.md); none for linear z.
+std::optional<EncodedDepth> encoded_depth(MapEncoding encoding, const LightParams& light,
+                                          float depth_scale);
 
 // How far from a texel's depth z a receiver's (biased) depth must lie for
 // every conformant shader to compare it as the exact decoding does: the

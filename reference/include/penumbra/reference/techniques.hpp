@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <span>
 
+#include "penumbra/model/light.hpp"
 #include "penumbra/model/model.hpp"
-#include "penumbra/reference/light.hpp"
 #include "penumbra/reference/minmax_mip.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/shadow_map.hpp"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "penumbra/library/library.hpp"
-#include "penumbra/reference/light.hpp"
+#include "penumbra/model/light.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/vulkan/engine.hpp"
 
@@ -14,7 +14,7 @@ struct EvalInputs {
   FloatImage receivers;   // PF: (u, v, z_r) per pixel
   // Light size, frustum width, near plane, bias, filter radius; its defaults
   // are index.json's `defaults`, the light the shaders were verified with.
-  reference::LightParams light;
+  LightParams light;
 };
 
 // The light options' range (lengths in light-view units; the bias and the

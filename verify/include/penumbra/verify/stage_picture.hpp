@@ -75,7 +75,7 @@ std::vector<std::size_t> face_pixels(const reference::Stage& stage,
 // outcome. Errors: the reference's, for inputs it cannot evaluate.
 Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
-    const EngineMap& map, const reference::LightParams& light, const FloatImage& receivers,
+    const EngineMap& map, const LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
     const reference::ShaderLimits& limits, std::span<const FloatImage> rounded = {});
 

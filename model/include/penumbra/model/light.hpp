@@ -7,7 +7,7 @@
 
 #include <optional>
 
-namespace penumbra::reference {
+namespace penumbra {
 
 enum class LightProjection {
   perspective,   // an area light at the origin; u = 0.5 + x n / (z Fw)
@@ -64,4 +64,4 @@ inline MapRay map_ray(const LightParams& light, double u, double v) {
   return {{0.0, 0.0}, {(u - 0.5) * scale, (v - 0.5) * scale}};
 }
 
-}  // namespace penumbra::reference
+}  // namespace penumbra

@@ -1,4 +1,4 @@
-#include "penumbra/verify/shadow_params.hpp"
+#include "penumbra/model/shadow_params.hpp"
 
 #include <array>
 #include <cmath>
@@ -12,15 +12,7 @@ float depth_scale_for(double max_z) {
   return std::ldexp(1.0f, -exponent);
 }
 
-std::optional<reference::EncodedDepth> encoded_depth(MapEncoding encoding,
-                                                     const reference::LightParams& light,
-                                                     float depth_scale) {
-  if (encoding == MapEncoding::linear) return std::nullopt;
-  return reference::EncodedDepth{encoding, {light.near_plane, 1.0 / depth_scale}};
-}
-
-ParamBlock shadow_params(const reference::LightParams& light, const ParamSizes& sizes,
-                         float depth_scale) {
+ParamBlock shadow_params(const LightParams& light, const ParamSizes& sizes, float depth_scale) {
   const auto f = [](double value) { return static_cast<float>(value); };
   const std::array<float, 4> map_size = size_vec4(sizes.map_width, sizes.map_height);
   return {

@@ -1,0 +1,28 @@
+// The ShadowParams block for a light and the map and screen sizes: what an
+// engine hands to every pass (docs/shader-interface.md), and what verify's
+// scenes, `penumbra eval`, the benchmarks and the runtime's tests hand to
+// theirs.
+#pragma once
+
+#include "penumbra/model/light.hpp"
+#include "penumbra/support/param_block.hpp"
+
+namespace penumbra {
+
+// The power of two 2^-k with 2^k >= max_z, so normalized depth z * scale lies
+// in [0, 1] and scaling is exact (docs/shader-interface.md).
+float depth_scale_for(double max_z);
+
+struct ParamSizes {
+  int map_width = 0;
+  int map_height = 0;
+  int screen_width = 0;
+  int screen_height = 0;
+};
+
+// ShadowParams for `light`, the map and screen sizes, and a depth scale:
+// every member, source_size the map's size and minmax_info.x the map's
+// min-max top level (minmax_top_level).
+ParamBlock shadow_params(const LightParams& light, const ParamSizes& sizes, float depth_scale);
+
+}  // namespace penumbra
