@@ -14,16 +14,10 @@
 #include "scene_checks.hpp"
 #include "scene_fixture.hpp"
 #include "scene_truths.hpp"
+#include "verify_plan.hpp"
 
 namespace penumbra {
 namespace {
-
-// A target's maps in one encoding: drawn by that target's depth pass for it.
-using MapKey = std::pair<Target, MapEncoding>;
-
-MapKey map_key(const Variant& variant, Target target) {
-  return {target, map_encoding(variant.keys)};
-}
 
 struct Context {
   const Library& library;
@@ -159,58 +153,78 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
   return {};
 }
 
-bool wanted(const std::vector<std::string>& names, const std::string& name) {
-  return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+// `entry`'s function form and deferred pass for `target` on each path the
+// plan runs that can draw them.
+void run_engine_forms(Context& ctx, const VerifyPlan& plan, const LibraryVariant& entry,
+                      Target target, VerifyReport& report) {
+  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+    if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
+        !backend->missing().empty() || !plan.runs_path(backend->name())) {
+      continue;
+    }
+    report.function_checks.push_back(
+        run_engine_form(ctx, check_function_form, *backend, entry, target));
+  }
+  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+    if (!runs_pass(PassKind::deferred, entry.variant) || !backend->executes(target) ||
+        !backend->missing().empty() || !backend->not_executed(entry, target).empty() ||
+        !plan.runs_path(backend->name())) {
+      continue;
+    }
+    report.deferred_checks.push_back(
+        run_engine_form(ctx, check_deferred_mask, *backend, entry, target));
+  }
 }
 
-bool wanted(const std::vector<Target>& targets, Target target) {
-  return targets.empty() || std::find(targets.begin(), targets.end(), target) != targets.end();
-}
-
-// (i + j) mod N spreads both ways: a variant's targets over the shards, and
-// a target's variants (one technique's costly reference is not all in one
-// shard; nor is one target's bytecode or GL path).
-bool in_shard(const Shard& shard, std::size_t variant_index, Target target) {
-  const auto j = static_cast<std::size_t>(
-      std::find(kAllTargets.begin(), kAllTargets.end(), target) - kAllTargets.begin());
-  return (variant_index + j) % static_cast<std::size_t>(shard.count) ==
-         static_cast<std::size_t>(shard.index - 1);
-}
-
-// For each target and map encoding, the position of the variant the whole
-// run prepares it with: the first wanted one that has the target and the
-// encoding and, for the min-max mip, uses it. Every shard prepares with the same variant, so it
-// runs what the whole run runs.
-struct Preparers {
-  std::map<MapKey, std::size_t> depth;
-  std::map<MapKey, std::size_t> minmax;
-};
-
-Preparers preparers(const Library& library, const VerifyOptions& options) {
-  Preparers first;
-  for (std::size_t i = 0; i < library.variants.size(); ++i) {
-    const Variant& variant = library.variants[i].variant;
-    if (!wanted(options.variants, variant.name)) continue;
-    for (Target target : variant.targets) {
-      if (!wanted(options.targets, target)) continue;
-      first.depth.emplace(map_key(variant, target), i);
-      if (uses_minmax_mip(variant.technique)) first.minmax.emplace(map_key(variant, target), i);
+// `pair` of `entry` on every path the plan runs: its target's maps (and
+// min-max mip) prepared first where no earlier pair did, its runs on the
+// devices, its engine forms, and its scenes' checks handed to `work`.
+std::unique_ptr<PendingTarget> run_pair(Context& ctx, const VerifyPlan& plan,
+                                        const LibraryVariant& entry, const PlannedPair& pair,
+                                        std::shared_ptr<VariantReferences> references,
+                                        CpuWork& work, ProgressCounter& progress,
+                                        VerifyReport& report) {
+  const Target target = pair.target;
+  const MapKey& key = pair.maps;
+  if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
+    // A depth pass that cannot run fails every run of its target, not verify.
+    const LibraryVariant& preparer = ctx.library.variants[pair.depth_preparer];
+    if (Status s = prepare_target(ctx, preparer, target, report); !s) {
+      ctx.broken_targets.emplace(key, s.error());
     }
   }
-  return first;
-}
-
-// The (variant, target) pairs verify runs: the progress's total.
-std::size_t pairs_in_shard(const Library& library, const VerifyOptions& options) {
-  std::size_t pairs = 0;
-  for (std::size_t i = 0; i < library.variants.size(); ++i) {
-    const Variant& variant = library.variants[i].variant;
-    if (!wanted(options.variants, variant.name)) continue;
-    for (Target target : variant.targets) {
-      pairs += wanted(options.targets, target) && in_shard(options.shard, i, target) ? 1 : 0;
-    }
+  auto target_runs = std::make_unique<PendingTarget>();
+  target_runs->label = entry.variant.name + " [" + std::string(to_string(target)) + "]";
+  if (auto broken = ctx.broken_targets.find(key); broken != ctx.broken_targets.end()) {
+    // Reported once, on the path that prepares the scenes.
+    target_runs->runs.push_back(
+        {failed_run(target, ctx.backends.front()->name(), broken->second), {}, {}, {}, {}});
+    progress.finished(target_runs->label);
+    return target_runs;
   }
-  return pairs;
+  TargetScenes& scenes = ctx.scenes.at(key);
+  if (pair.minmax_preparer && !scenes.minmax) {
+    scenes.minmax =
+        prepare_minmax(ctx, ctx.library.variants[*pair.minmax_preparer], target, report);
+  }
+  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+    if (!backend->executes(target) || !plan.runs_path(backend->name())) continue;
+    target_runs->runs.push_back(run_on_device(ctx, *backend, entry, target, report));
+  }
+  run_engine_forms(ctx, plan, entry, target, report);
+  target_runs->references = std::move(references);
+  target_runs->unchecked = scenes.scenes.size();
+  for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {
+    work.submit(
+        [&ctx, &runs = *target_runs, &entry, target, s, &fixture = scenes.scenes[s], &progress] {
+          check_scene_of_runs(runs, entry.variant, target, s, fixture, ctx.precision);
+          if (--runs.unchecked == 0) {
+            runs.references.reset();
+            progress.finished(runs.label);
+          }
+        });
+  }
+  return target_runs;
 }
 
 void count(VerifyReport& report, const TargetRun& run) {
@@ -244,29 +258,7 @@ bool VerifyReport::pass() const {
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                                     const VerifyOptions& options,
                                     const DiagnosticConsumer& diagnostics) {
-  if (library.variants.empty()) {
-    return make_error(Error::Kind::bad_input, library.root.string(), "the library has no variants");
-  }
-  for (const std::string& name : options.variants) {
-    if (!library.find(name)) {
-      return make_error(Error::Kind::bad_input, name,
-                        "no such variant in " + library.root.string());
-    }
-  }
-  for (const auto& [kind, names] :
-       {std::pair{"path ", &options.paths}, std::pair{"skipped path ", &options.skipped}}) {
-    for (const std::string& path : *names) {
-      if (!is_path_name(path)) {
-        return make_error(Error::Kind::bad_input, kind + path,
-                          "no such execution path; allowed: " + path_names());
-      }
-    }
-  }
-  if (options.shard.count < 1 || options.shard.index < 1 ||
-      options.shard.index > options.shard.count) {
-    return make_error(Error::Kind::bad_input, "shard " + to_string(options.shard),
-                      "I must be in 1..N");
-  }
+  PENUMBRA_TRY_ASSIGN(const VerifyPlan plan, plan_verify(library, options));
   const auto start = Clock::now();
   VerifyReport report;
   report.shard = options.shard;
@@ -284,110 +276,40 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   for (const auto& backend : ctx.backends) {
     if (backend->name() == "gl") report.gl_device = backend->device();
   }
-
-  const Preparers prepare_with = preparers(library, options);
-  // The devices are driven from this thread; each (variant, target)'s checks
-  // go to the CPU workers meanwhile, and are gathered in order at the end.
-  struct PendingVariant {
-    std::size_t index;
-    std::vector<std::unique_ptr<PendingTarget>> targets;
-    bool other_shards = false;  // some of its pairs are in other shards
-  };
-  std::vector<PendingVariant> pending;
-  ProgressCounter progress(options.progress, pairs_in_shard(library, options));
+  // The devices are driven from this thread; each pair's checks go to the
+  // CPU workers meanwhile, and are gathered in order at the end.
+  std::vector<std::vector<std::unique_ptr<PendingTarget>>> pending(plan.variants.size());
+  ProgressCounter progress(options.progress, plan.pairs);
   CpuWork work(options.jobs);
   work.run([&] {
-    for (std::size_t i = 0; i < library.variants.size(); ++i) {
-      const LibraryVariant& entry = library.variants[i];
-      if (!wanted(options.variants, entry.variant.name)) continue;
-      PendingVariant& variant = pending.emplace_back(PendingVariant{i, {}, false});
+    for (std::size_t v = 0; v < plan.variants.size(); ++v) {
+      const LibraryVariant& entry = library.variants[plan.variants[v].index];
       const std::shared_ptr<VariantReferences> references = variant_references();
-      for (Target target : entry.variant.targets) {
-        if (!wanted(options.targets, target)) continue;
-        if (!in_shard(options.shard, i, target)) {
-          variant.other_shards = true;
-          continue;
-        }
-        const MapKey key = map_key(entry.variant, target);
-        if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
-          // A depth pass that cannot run fails every run of its target, not verify.
-          const LibraryVariant& preparer = library.variants[prepare_with.depth.at(key)];
-          if (Status s = prepare_target(ctx, preparer, target, report); !s) {
-            ctx.broken_targets.emplace(key, s.error());
-          }
-        }
-        auto target_runs = std::make_unique<PendingTarget>();
-        target_runs->label = entry.variant.name + " [" + std::string(to_string(target)) + "]";
-        if (auto broken = ctx.broken_targets.find(key); broken != ctx.broken_targets.end()) {
-          // Reported once, on the path that prepares the scenes.
-          target_runs->runs.push_back(
-              {failed_run(target, ctx.backends.front()->name(), broken->second), {}, {}, {}, {}});
-          progress.finished(target_runs->label);
-          variant.targets.push_back(std::move(target_runs));
-          continue;
-        }
-        TargetScenes& scenes = ctx.scenes.at(key);
-        if (uses_minmax_mip(entry.variant.technique) && !scenes.minmax) {
-          const LibraryVariant& preparer = library.variants[prepare_with.minmax.at(key)];
-          scenes.minmax = prepare_minmax(ctx, preparer, target, report);
-        }
-        for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-          if (!backend->executes(target) || !wanted(options.paths, backend->name())) continue;
-          target_runs->runs.push_back(run_on_device(ctx, *backend, entry, target, report));
-        }
-        for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-          if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
-              !backend->missing().empty() || !wanted(options.paths, backend->name())) {
-            continue;
-          }
-          report.function_checks.push_back(
-              run_engine_form(ctx, check_function_form, *backend, entry, target));
-        }
-        for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-          if (!runs_pass(PassKind::deferred, entry.variant) || !backend->executes(target) ||
-              !backend->missing().empty() || !backend->not_executed(entry, target).empty() ||
-              !wanted(options.paths, backend->name())) {
-            continue;
-          }
-          report.deferred_checks.push_back(
-              run_engine_form(ctx, check_deferred_mask, *backend, entry, target));
-        }
-        target_runs->references = references;
-        target_runs->unchecked = scenes.scenes.size();
-        for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {
-          work.submit([&ctx, &runs = *target_runs, &entry, target, s, &fixture = scenes.scenes[s],
-                       &progress] {
-            check_scene_of_runs(runs, entry.variant, target, s, fixture, ctx.precision);
-            if (--runs.unchecked == 0) {
-              runs.references.reset();
-              progress.finished(runs.label);
-            }
-          });
-        }
-        variant.targets.push_back(std::move(target_runs));
+      for (const PlannedPair& pair : plan.variants[v].pairs) {
+        pending[v].push_back(run_pair(ctx, plan, entry, pair, references, work, progress, report));
       }
     }
     work.wait();
   });
-  for (PendingVariant& variant : pending) {
-    const LibraryVariant& entry = library.variants[variant.index];
+  for (std::size_t v = 0; v < plan.variants.size(); ++v) {
+    const LibraryVariant& entry = library.variants[plan.variants[v].index];
     VariantRun variant_run;
     variant_run.name = entry.variant.name;
     variant_run.technique = entry.variant.technique;
-    for (const std::unique_ptr<PendingTarget>& target_runs : variant.targets) {
+    for (const std::unique_ptr<PendingTarget>& target_runs : pending[v]) {
       finish_runs(*target_runs, variant_run);
     }
     for (const TargetRun& run : variant_run.runs) count(report, run);
-    if (variant.other_shards && variant_run.runs.empty()) continue;
+    if (plan.variants[v].other_shards && variant_run.runs.empty()) continue;
     diagnostics({Severity::note, entry.variant.name, "verified"});
     report.variants.push_back(std::move(variant_run));
   }
   // The per-target checks of the pairs another shard runs are that shard's.
   std::erase_if(report.depth_checks, [&](const DepthCheck& c) {
-    return !in_shard(options.shard, prepare_with.depth.at({c.target, c.map_encoding}), c.target);
+    return !plan.reports_depth({c.target, c.map_encoding});
   });
   std::erase_if(report.minmax_checks, [&](const MinmaxCheck& c) {
-    return !in_shard(options.shard, prepare_with.minmax.at({c.target, c.map_encoding}), c.target);
+    return !plan.reports_minmax({c.target, c.map_encoding});
   });
   report.seconds = seconds_since(start);
   return report;
