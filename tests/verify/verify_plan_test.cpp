@@ -61,7 +61,7 @@ TEST(VerifyPlan, RunsEveryPairInLibraryOrderOnEveryPath) {
   EXPECT_THAT(pairs(lib, p),
               ElementsAre("hard [spirv]", "hard [glsl450]", "pcss_perspective [spirv]",
                           "minmax_pcf [spirv]", "minmax_pcf [glsl450]", "minmax_dx9 [hlsl_dx9]"));
-  EXPECT_EQ(p.pairs, 6u);
+  EXPECT_EQ(p.pair_count(), 6u);
   EXPECT_THAT(p.paths, ElementsAre("vulkan", "bytecode", "gl", "d3d9", "d3d10", "d3d11"));
   for (const PlannedVariant& v : p.variants) EXPECT_FALSE(v.other_shards);
 }
@@ -93,7 +93,7 @@ TEST(VerifyPlan, OptionsNarrowThePairsThePreparersAndThePaths) {
   options.paths = {"gl", "vulkan"};
   const VerifyPlan p = plan(lib, options);
   EXPECT_THAT(pairs(lib, p), ElementsAre("minmax_pcf [glsl450]"));
-  EXPECT_EQ(p.pairs, 1u);
+  EXPECT_EQ(p.pair_count(), 1u);
   // Prepared with the variant that is run, not the library's first.
   EXPECT_EQ(p.variants[0].pairs[0].depth_preparer, 2u);
   EXPECT_THAT(p.paths, ElementsAre("vulkan", "gl"));  // report order
@@ -117,7 +117,7 @@ TEST(VerifyPlan, ShardsSplitThePairsAndAgreeOnThePreparers) {
     EXPECT_EQ(p.depth_preparers, whole.depth_preparers);
     EXPECT_EQ(p.minmax_preparers, whole.minmax_preparers);
     for (const std::string& pair : pairs(lib, p)) union_of_shards.insert(pair);
-    total += p.pairs;
+    total += p.pair_count();
     for (const auto& [key, _] : p.depth_preparers) depth_reporters[key] += p.reports_depth(key);
     for (const auto& [key, _] : p.minmax_preparers) minmax_reporters[key] += p.reports_minmax(key);
     for (const PlannedVariant& v : p.variants) {
@@ -125,7 +125,7 @@ TEST(VerifyPlan, ShardsSplitThePairsAndAgreeOnThePreparers) {
     }
   }
   EXPECT_EQ(union_of_shards, std::multiset<std::string>(all.begin(), all.end()));
-  EXPECT_EQ(total, whole.pairs);
+  EXPECT_EQ(total, whole.pair_count());
   // Each map's checks are reported by exactly one shard.
   for (const auto& [key, count] : depth_reporters) EXPECT_EQ(count, 1) << to_string(key.first);
   for (const auto& [key, count] : minmax_reporters) EXPECT_EQ(count, 1) << to_string(key.first);

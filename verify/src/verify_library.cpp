@@ -279,7 +279,7 @@ Result<VerifyReport> verify_library(const Library& library, Engine& engine,
   // The devices are driven from this thread; each pair's checks go to the
   // CPU workers meanwhile, and are gathered in order at the end.
   std::vector<std::vector<std::unique_ptr<PendingTarget>>> pending(plan.variants.size());
-  ProgressCounter progress(options.progress, plan.pairs);
+  ProgressCounter progress(options.progress, plan.pair_count());
   CpuWork work(options.jobs);
   work.run([&] {
     for (std::size_t v = 0; v < plan.variants.size(); ++v) {

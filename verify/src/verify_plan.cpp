@@ -75,6 +75,12 @@ MapKey map_key(const Variant& variant, Target target) {
   return {target, map_encoding(variant.keys)};
 }
 
+std::size_t VerifyPlan::pair_count() const {
+  std::size_t count = 0;
+  for (const PlannedVariant& variant : variants) count += variant.pairs.size();
+  return count;
+}
+
 bool VerifyPlan::runs_path(const std::string& name) const {
   return std::ranges::find(paths, name) != paths.end();
 }
@@ -110,7 +116,6 @@ Result<VerifyPlan> plan_verify(const Library& library, const VerifyOptions& opti
           .target = target, .maps = key, .depth_preparer = plan.depth_preparers.at(key)};
       if (uses_minmax_mip(variant.technique)) pair.minmax_preparer = plan.minmax_preparers.at(key);
       planned.pairs.push_back(pair);
-      ++plan.pairs;
     }
   }
   return plan;

@@ -43,7 +43,6 @@ struct PlannedVariant {
 
 struct VerifyPlan {
   std::vector<PlannedVariant> variants;  // every wanted variant, in library order
-  std::size_t pairs = 0;                 // pairs in this shard: the progress's total
   std::vector<std::string> paths;        // the paths whose runs happen, in report order
   // For each target and map encoding, the variant the whole run prepares it
   // with: the first wanted one that has the target and the encoding (and,
@@ -52,6 +51,8 @@ struct VerifyPlan {
   std::map<MapKey, std::size_t> minmax_preparers;
   Shard shard;
 
+  // The pairs in this shard: the progress's total.
+  std::size_t pair_count() const;
   bool runs_path(const std::string& name) const;
   // Whether this shard reports the checks of `key`'s maps, or of its
   // min-max mip: the shard that holds the pair that prepares them.
