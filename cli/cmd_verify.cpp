@@ -29,8 +29,9 @@ struct VerifyArgs {
   bool validation = false;
   bool optimized_jit = false;  // let Mesa's software rasterizers optimize the shaders they compile
   bool verbose = false;
-  bool quiet = false;  // only failures and the totals
-  int jobs = 0;        // 0: every core
+  bool quiet = false;      // only failures and the totals
+  int jobs = 0;            // 0: every core
+  int device_threads = 2;  // threads driving devices, each with its own
 };
 
 std::string run_label(const VariantRun& v, const TargetRun& t) {
@@ -198,11 +199,16 @@ Result<int> run_verify(const VerifyArgs& args) {
   PENUMBRA_TRY_ASSIGN(const std::filesystem::path results, results_file(args, library));
   limit_software_rasterizers(args.jobs);
   if (!args.optimized_jit) skip_software_jit_optimization();
-  PENUMBRA_TRY_ASSIGN(const auto engine,
-                      Engine::create({.device = args.device, .validation = args.validation},
-                                     stderr_diagnostics(args.verbose)));
+  std::vector<std::unique_ptr<Engine>> engines;
+  std::vector<Engine*> devices;
+  for (int t = 0; t < args.device_threads; ++t) {
+    PENUMBRA_TRY_ASSIGN(engines.emplace_back(),
+                        Engine::create({.device = args.device, .validation = args.validation},
+                                       stderr_diagnostics(args.verbose)));
+    devices.push_back(engines.back().get());
+  }
   PENUMBRA_TRY_ASSIGN(const VerifyReport verified,
-                      verify_library(library, *engine, options, stderr_diagnostics(args.verbose)));
+                      verify_library(library, devices, options, stderr_diagnostics(args.verbose)));
   if (!results.empty()) {
     PENUMBRA_TRY(write_file_atomic(results, to_json(verified, library).dump(2) + "\n"));
   }
@@ -251,6 +257,11 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("-q,--quiet", args->quiet,
                 "Print no progress and only the failed checks, then the totals");
   add_jobs_option(cmd, args->jobs);
+  cmd->add_option("--device-threads", args->device_threads,
+                  "Threads that drive the devices, each with devices of its own, so that a "
+                  "software driver's shader compiles overlap (default 2; 1 with --jobs 1). "
+                  "Results are the same for every N")
+      ->check(CLI::Range(1, 16));
   cmd->callback([args, &exit_code] {
     const Result<int> code = run_verify(*args);
     exit_code = code ? *code : report(code.error());

@@ -1,7 +1,8 @@
 // `penumbra verify` and `penumbra report` with --jobs: the same results for
 // every N (verify.json byte for byte, the report's files less their timings),
 // progress on stderr as each unit finishes, and none with -q; and verify's
-// results the same whether Mesa's shader JIT optimizes or not.
+// results the same for any number of device threads, and whether Mesa's
+// shader JIT optimizes or not.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -83,6 +84,23 @@ TEST_F(Jobs, VerifyGivesTheSameResultsForAnyNumberOfJobs) {
   EXPECT_THAT(quiet.err, Not(HasSubstr("[1/")));
   EXPECT_THAT(quiet.out, Not(HasSubstr("PASS")));
   EXPECT_THAT(quiet.out, HasSubstr(" passed, 0 failed\n"));
+}
+
+// Device threads each with their own devices (Wine's runtimes drawing on two
+// at once among them), against one: the same results, lines and progress.
+TEST_F(Jobs, VerifyGivesTheSameResultsForAnyNumberOfDeviceThreads) {
+  const CliRun one = run_penumbra("verify '" + lib().string() + "' -j 2 --device-threads 1");
+  ASSERT_EQ(one.exit_code, 0) << one.out << one.err;
+  const std::string single = verify_json();
+  const CliRun many = run_penumbra("verify '" + lib().string() + "' -j 2 --device-threads 3");
+  ASSERT_EQ(many.exit_code, 0) << many.out << many.err;
+  EXPECT_EQ(verify_json(), single);
+  EXPECT_EQ(many.out, one.out);
+  EXPECT_EQ(progress(many.err), counted(kPairs)) << many.err;
+
+  const CliRun none = run_penumbra("verify '" + lib().string() + "' --device-threads 0");
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.err, HasSubstr("--device-threads"));
 }
 
 // verify's default (GALLIVM_PERF=nopt on lavapipe and llvmpipe) against

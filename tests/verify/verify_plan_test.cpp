@@ -8,34 +8,13 @@
 
 #include <set>
 
+#include "library_entries.hpp"
+
 namespace penumbra::testing {
 namespace {
 
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
-
-LibraryVariant variant(std::string name, Technique technique, std::vector<Target> targets,
-                       VariantKeys keys = {}) {
-  LibraryVariant entry;
-  entry.variant.name = std::move(name);
-  entry.variant.technique = technique;
-  entry.variant.keys = std::move(keys);
-  entry.variant.targets = std::move(targets);
-  return entry;
-}
-
-// Two map encodings, a min-max technique, and variants on different targets.
-Library library() {
-  Library lib;
-  lib.root = "lib";
-  lib.variants.push_back(variant("hard", Technique::hard, {Target::spirv, Target::glsl450}));
-  lib.variants.push_back(variant("pcss_perspective", Technique::pcss, {Target::spirv},
-                                 VariantKeys{.map_encoding = "perspective"}));
-  lib.variants.push_back(
-      variant("minmax_pcf", Technique::minmax_pcf, {Target::spirv, Target::glsl450}));
-  lib.variants.push_back(variant("minmax_dx9", Technique::minmax_pcf, {Target::hlsl_dx9}));
-  return lib;
-}
 
 VerifyPlan plan(const Library& lib, const VerifyOptions& options = {}) {
   auto planned = plan_verify(lib, options);
@@ -56,7 +35,7 @@ std::vector<std::string> pairs(const Library& lib, const VerifyPlan& p) {
 }
 
 TEST(VerifyPlan, RunsEveryPairInLibraryOrderOnEveryPath) {
-  const Library lib = library();
+  const Library lib = planned_library();
   const VerifyPlan p = plan(lib);
   EXPECT_THAT(pairs(lib, p),
               ElementsAre("hard [spirv]", "hard [glsl450]", "pcss_perspective [spirv]",
@@ -67,7 +46,7 @@ TEST(VerifyPlan, RunsEveryPairInLibraryOrderOnEveryPath) {
 }
 
 TEST(VerifyPlan, PreparesEachTargetsMapsWithItsFirstVariantPerEncoding) {
-  const Library lib = library();
+  const Library lib = planned_library();
   const VerifyPlan p = plan(lib);
   const MapKey spirv_linear{Target::spirv, MapEncoding::linear};
   const MapKey spirv_perspective{Target::spirv, MapEncoding::perspective};
@@ -86,7 +65,7 @@ TEST(VerifyPlan, PreparesEachTargetsMapsWithItsFirstVariantPerEncoding) {
 }
 
 TEST(VerifyPlan, OptionsNarrowThePairsThePreparersAndThePaths) {
-  const Library lib = library();
+  const Library lib = planned_library();
   VerifyOptions options;
   options.variants = {"minmax_pcf"};
   options.targets = {Target::glsl450};
@@ -102,7 +81,7 @@ TEST(VerifyPlan, OptionsNarrowThePairsThePreparersAndThePaths) {
 }
 
 TEST(VerifyPlan, ShardsSplitThePairsAndAgreeOnThePreparers) {
-  const Library lib = library();
+  const Library lib = planned_library();
   const VerifyPlan whole = plan(lib);
   const std::vector<std::string> all = pairs(lib, whole);
   std::multiset<std::string> union_of_shards;
@@ -139,7 +118,7 @@ TEST(VerifyPlan, RefusesBadInputNamingIt) {
     EXPECT_EQ(p.error().kind, Error::Kind::bad_input);
     return p.error().to_string();
   };
-  const Library lib = library();
+  const Library lib = planned_library();
   Library empty;
   empty.root = "empty";
   EXPECT_THAT(refused(empty, {}), HasSubstr("empty: the library has no variants"));

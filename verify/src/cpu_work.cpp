@@ -7,10 +7,16 @@
 namespace penumbra {
 
 // No more threads than TBB has workers for: more would only queue.
-CpuWork::CpuWork(int jobs)
-    : jobs_(jobs < 1 ? tbb::info::default_concurrency()
-                     : std::min(jobs, tbb::info::default_concurrency())),
-      arena_(jobs_) {}
+int CpuWork::threads_for(int jobs) {
+  return jobs < 1 ? tbb::info::default_concurrency()
+                  : std::min(jobs, tbb::info::default_concurrency());
+}
+
+// Each device thread gets an arena slot of its own, so that none waits for
+// another's to run its loop; the workers are as many as with one.
+CpuWork::CpuWork(int jobs, int device_threads)
+    : jobs_(threads_for(jobs)),
+      arena_(jobs_ + device_threads - 1, static_cast<unsigned>(device_threads)) {}
 
 CpuWork::~CpuWork() {
   wait();
@@ -33,7 +39,10 @@ void CpuWork::submit(std::function<void()> job) {
   // One task per job, each running whichever job is oldest: a job the
   // caller ran itself leaves its task nothing to do.
   waiting_.push(std::move(job));
-  arena_.execute([&] { group_.run([this] { run_one(); }); });
+  arena_.execute([&] {
+    const std::lock_guard lock(submitting_);
+    group_.run([this] { run_one(); });
+  });
   while (waiting_.unsafe_size() > std::size_t(2 * jobs_)) run_one();
 }
 

@@ -1,7 +1,8 @@
-// CPU work handed off by the thread that drives the devices: the reference
-// and the checks (verify), the pictures' figures and files (report). The
-// engines are driven from one thread; what they return is checked on the
-// other cores meanwhile (oneTBB), so the device and the CPU overlap.
+// CPU work handed off by the threads that drive the devices: the reference
+// and the checks (verify), the pictures' figures and files (report). Each
+// device thread drives its engines one call at a time; what they return is
+// checked on the other cores meanwhile (oneTBB), so the devices and the CPU
+// overlap.
 #pragma once
 
 #include <tbb/concurrent_queue.h>
@@ -9,14 +10,16 @@
 #include <tbb/task_group.h>
 
 #include <functional>
+#include <mutex>
 
 namespace penumbra {
 
 class CpuWork {
  public:
-  // At most `jobs` threads (0: every core), the caller's included: with 1,
-  // each job runs at once in submit(), on the caller's thread.
-  explicit CpuWork(int jobs);
+  // At most `jobs` threads (0: every core) beside `device_threads` - 1 of
+  // the device threads, each of which run()s a device loop: with 1, each job
+  // runs at once in submit(), on the caller's thread.
+  explicit CpuWork(int jobs, int device_threads = 1);
   ~CpuWork();  // waits for every job
   CpuWork(const CpuWork&) = delete;
   CpuWork& operator=(const CpuWork&) = delete;
@@ -28,8 +31,13 @@ class CpuWork {
   // runs waiting jobs itself instead of going ahead: what waits for the CPU
   // does not pile up in memory, and no core idles while the CPU lags.
   void submit(std::function<void()> job);
-  // Helps with, and waits for, every job submitted.
+  // Helps with, and waits for, every job submitted; from one thread, once
+  // every device loop has ended.
   void wait();
+
+  // The threads `jobs` means: 0, or more than TBB has workers for, is every
+  // core.
+  static int threads_for(int jobs);
 
  private:
   // Runs the oldest waiting job, if any: whoever takes it, a worker or the
@@ -39,6 +47,7 @@ class CpuWork {
   int jobs_;
   tbb::task_arena arena_;
   tbb::task_group group_;
+  std::mutex submitting_;  // group_'s tasks added from one device thread at a time
   tbb::concurrent_queue<std::function<void()>> waiting_;
 };
 

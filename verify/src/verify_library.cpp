@@ -1,11 +1,16 @@
 #include <algorithm>
 #include <chrono>
+#include <latch>
 #include <map>
+#include <set>
+#include <thread>
+#include <tuple>
 
 #include "backend.hpp"
 #include "camera_stage.hpp"
 #include "cpu_work.hpp"
 #include "minmax_check.hpp"
+#include "pair_queue.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -19,17 +24,32 @@
 namespace penumbra {
 namespace {
 
+// The checks one pair adds beside its runs, gathered in plan order at the
+// end whichever device thread ran it.
+struct PairChecks {
+  std::vector<DepthCheck> depth_checks;
+  std::vector<MinmaxCheck> minmax_checks;
+  std::vector<EngineFormCheck> function_checks;
+  std::vector<EngineFormCheck> deferred_checks;
+};
+
+struct PairResult {
+  std::unique_ptr<PendingTarget> runs;
+  PairChecks checks;
+};
+
+// One device thread's devices and what it has drawn on them.
 struct Context {
   const Library& library;
   Engine& engine;  // prepares every target's scenes
   reference::SamplingPrecision precision;
+  SceneTruths& truths;  // every target's ray casts, shared by the device threads
   // The paths every run goes through, in report order.
   std::vector<std::unique_ptr<Backend>> backends{};
   std::map<MapKey, TargetScenes> scenes{};
   // Maps whose depth pass could not run: every run on them fails with this.
   std::map<MapKey, Error> broken_targets{};
   DepthFormat map_format = DepthFormat::d32_float;  // VerifyOptions::map_format
-  SceneTruths truths{};                             // every target's ray casts
   CameraStages cameras;                             // the engine-form checks' stage, per depth pass
 };
 
@@ -56,7 +76,7 @@ EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend
 // `entry`'s passes for `target` on `backend`, on the device: every scene's
 // output, to be checked. A run that cannot load or execute is failed here.
 PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& entry, Target target,
-                         VerifyReport& report) {
+                         PairChecks& report) {
   const auto start = Clock::now();
   PendingRun pending;
   TargetRun& run = pending.run;
@@ -101,7 +121,7 @@ PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& e
 // Renders every scene with `target`'s depth pass (shared by all variants of
 // a map encoding), taken from `entry`, a variant that has the target.
 Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
-                      VerifyReport& report) {
+                      PairChecks& report) {
   auto depth = load_executable(ctx.library, entry, PassKind::depth, target);
   if (!depth) return depth.error();
   TargetScenes scenes;
@@ -126,7 +146,7 @@ Status prepare_target(Context& ctx, const LibraryVariant& entry, Target target,
 // own minmax passes (shared by all variants), taken from `entry`, a variant
 // that has them, and checks each against the CPU mip.
 Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
-                      VerifyReport& report) {
+                      PairChecks& report) {
   auto init = load_executable(ctx.library, entry, PassKind::minmax_init, target);
   if (!init) return init.error();
   auto reduce = load_executable(ctx.library, entry, PassKind::minmax_reduce, target);
@@ -156,7 +176,7 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
 // `entry`'s function form and deferred pass for `target` on each path the
 // plan runs that can draw them.
 void run_engine_forms(Context& ctx, const VerifyPlan& plan, const LibraryVariant& entry,
-                      Target target, VerifyReport& report) {
+                      Target target, PairChecks& report) {
   for (const std::unique_ptr<Backend>& backend : ctx.backends) {
     if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
         !backend->missing().empty() || !plan.runs_path(backend->name())) {
@@ -176,47 +196,51 @@ void run_engine_forms(Context& ctx, const VerifyPlan& plan, const LibraryVariant
   }
 }
 
-// `pair` of `entry` on every path the plan runs: its target's maps (and
-// min-max mip) prepared first where no earlier pair did, its runs on the
-// devices, its engine forms, and its scenes' checks handed to `work`.
-std::unique_ptr<PendingTarget> run_pair(Context& ctx, const VerifyPlan& plan,
-                                        const LibraryVariant& entry, const PlannedPair& pair,
-                                        std::shared_ptr<VariantReferences> references,
-                                        CpuWork& work, ProgressCounter& progress,
-                                        VerifyReport& report) {
+// The claimed pair on every path the plan runs: its target's maps (and
+// min-max mip) prepared first where no earlier pair of this thread did, its
+// runs on the devices, its engine forms, and its scenes' checks handed to
+// `work`. A preparation's checks are kept where the claim reports them.
+PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim& claim,
+                    CpuWork& work, ProgressCounter& progress) {
+  const PlannedPair& pair = plan.variants[claim.variant].pairs[claim.pair];
+  const LibraryVariant& entry = ctx.library.variants[plan.variants[claim.variant].index];
   const Target target = pair.target;
   const MapKey& key = pair.maps;
+  PairResult result{std::make_unique<PendingTarget>(), {}};
+  PairChecks unreported;  // an earlier pair's, on another device thread
   if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
     // A depth pass that cannot run fails every run of its target, not verify.
     const LibraryVariant& preparer = ctx.library.variants[pair.depth_preparer];
-    if (Status s = prepare_target(ctx, preparer, target, report); !s) {
+    if (Status s =
+            prepare_target(ctx, preparer, target, claim.reports_maps ? result.checks : unreported);
+        !s) {
       ctx.broken_targets.emplace(key, s.error());
     }
   }
-  auto target_runs = std::make_unique<PendingTarget>();
-  target_runs->label = entry.variant.name + " [" + std::string(to_string(target)) + "]";
+  PendingTarget& target_runs = *result.runs;
+  target_runs.label = entry.variant.name + " [" + std::string(to_string(target)) + "]";
   if (auto broken = ctx.broken_targets.find(key); broken != ctx.broken_targets.end()) {
     // Reported once, on the path that prepares the scenes.
-    target_runs->runs.push_back(
+    target_runs.runs.push_back(
         {failed_run(target, ctx.backends.front()->name(), broken->second), {}, {}, {}, {}});
-    progress.finished(target_runs->label);
-    return target_runs;
+    progress.finished(target_runs.label);
+    return result;
   }
   TargetScenes& scenes = ctx.scenes.at(key);
   if (pair.minmax_preparer && !scenes.minmax) {
-    scenes.minmax =
-        prepare_minmax(ctx, ctx.library.variants[*pair.minmax_preparer], target, report);
+    scenes.minmax = prepare_minmax(ctx, ctx.library.variants[*pair.minmax_preparer], target,
+                                   claim.reports_minmax ? result.checks : unreported);
   }
   for (const std::unique_ptr<Backend>& backend : ctx.backends) {
     if (!backend->executes(target) || !plan.runs_path(backend->name())) continue;
-    target_runs->runs.push_back(run_on_device(ctx, *backend, entry, target, report));
+    target_runs.runs.push_back(run_on_device(ctx, *backend, entry, target, result.checks));
   }
-  run_engine_forms(ctx, plan, entry, target, report);
-  target_runs->references = std::move(references);
-  target_runs->unchecked = scenes.scenes.size();
+  run_engine_forms(ctx, plan, entry, target, result.checks);
+  target_runs.references = claim.references;
+  target_runs.unchecked = scenes.scenes.size();
   for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {
     work.submit(
-        [&ctx, &runs = *target_runs, &entry, target, s, &fixture = scenes.scenes[s], &progress] {
+        [&ctx, &runs = target_runs, &entry, target, s, &fixture = scenes.scenes[s], &progress] {
           check_scene_of_runs(runs, entry.variant, target, s, fixture, ctx.precision);
           if (--runs.unchecked == 0) {
             runs.references.reset();
@@ -224,7 +248,69 @@ std::unique_ptr<PendingTarget> run_pair(Context& ctx, const VerifyPlan& plan,
           }
         });
   }
-  return target_runs;
+  return result;
+}
+
+// What every device thread shares.
+struct Drive {
+  const Library& library;
+  const VerifyPlan& plan;
+  const VerifyOptions& options;
+  reference::SamplingPrecision precision;
+  SceneTruths truths{};
+  PairQueue queue;
+  CpuWork work;
+  ProgressCounter progress;
+  std::vector<std::vector<PairResult>> results;  // per planned variant and pair
+  std::latch claimed;                            // every device thread has run its last pair
+  std::latch checked;                            // every check has finished: the devices may close
+  std::string gl_device{};
+};
+
+// One device thread: its own paths on `engine`, opened, driven and closed on
+// this thread (an OpenGL context is current on one), running the pairs it
+// claims until none is left. Its maps stay until every check has read them.
+void drive_devices(Drive& drive, Engine& engine, std::size_t thread) {
+  Context ctx{.library = drive.library,
+              .engine = engine,
+              .precision = drive.precision,
+              .truths = drive.truths,
+              .map_format = drive.options.map_format,
+              .cameras = CameraStages(engine, drive.options.map_format)};
+  // The paths, in report order: a new one is a new backend file and a row
+  // in paths.cpp.
+  ctx.backends = all_backends(engine, drive.options.bytecode, drive.options.skipped);
+  for (const auto& backend : ctx.backends) {
+    if (thread == 0 && backend->name() == "gl") drive.gl_device = backend->device();
+  }
+  drive.work.run([&] {
+    while (const std::optional<PairQueue::Claim> claim = drive.queue.next(thread)) {
+      drive.results[claim->variant][claim->pair] =
+          run_pair(ctx, drive.plan, *claim, drive.work, drive.progress);
+    }
+  });
+  drive.claimed.count_down();
+  drive.checked.wait();
+}
+
+template <typename Check>
+void append(std::vector<Check>& to, std::vector<Check>& from) {
+  to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
+}
+
+// A map's checks, in plan order. A path that draws its own maps checks each
+// on the first run that draws it, on every device thread that draws it: the
+// plan's first is the one a single thread makes, and the only one kept.
+using DrawnMap = std::tuple<std::string, Target, std::string, MapEncoding, DepthFormat>;
+void append_depth_checks(std::vector<DepthCheck>& to, std::vector<DepthCheck>& from,
+                         std::set<DrawnMap>& drawn) {
+  for (DepthCheck& check : from) {
+    if (drawn
+            .emplace(check.scene, check.target, check.backend, check.map_encoding, check.map_format)
+            .second) {
+      to.push_back(std::move(check));
+    }
+  }
 }
 
 void count(VerifyReport& report, const TargetRun& run) {
@@ -258,46 +344,58 @@ bool VerifyReport::pass() const {
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                                     const VerifyOptions& options,
                                     const DiagnosticConsumer& diagnostics) {
+  Engine* const engines[] = {&engine};
+  return verify_library(library, engines, options, diagnostics);
+}
+
+Result<VerifyReport> verify_library(const Library& library, std::span<Engine* const> engines,
+                                    const VerifyOptions& options,
+                                    const DiagnosticConsumer& diagnostics) {
+  if (engines.empty()) return make_error(Error::Kind::internal, "verify", "no Vulkan device");
   PENUMBRA_TRY_ASSIGN(const VerifyPlan plan, plan_verify(library, options));
   const auto start = Clock::now();
   VerifyReport report;
   report.shard = options.shard;
-  report.device = engine.device_info();
-  const reference::SamplingPrecision precision{
-      static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))};
-  Context ctx{.library = library,
-              .engine = engine,
-              .precision = precision,
-              .map_format = options.map_format,
-              .cameras = CameraStages(engine, options.map_format)};
-  // The paths, in report order: a new one is a new backend file and a row
-  // in paths.cpp.
-  ctx.backends = all_backends(engine, options.bytecode, options.skipped);
-  for (const auto& backend : ctx.backends) {
-    if (backend->name() == "gl") report.gl_device = backend->device();
+  report.device = engines.front()->device_info();
+  // With one CPU thread each job runs at once on the thread that submits
+  // it, so one device thread drives every device then.
+  const std::size_t threads = CpuWork::threads_for(options.jobs) == 1 ? 1 : engines.size();
+  Drive drive{.library = library,
+              .plan = plan,
+              .options = options,
+              .precision = {static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))},
+              .queue = PairQueue(plan, threads),
+              .work = CpuWork(options.jobs, static_cast<int>(threads)),
+              .progress = ProgressCounter(options.progress, plan.pair_count()),
+              .results = {},
+              .claimed = std::latch(static_cast<std::ptrdiff_t>(threads)),
+              .checked = std::latch(1)};
+  for (const PlannedVariant& v : plan.variants) drive.results.emplace_back(v.pairs.size());
+  // The devices are driven from these threads, each with devices of its own;
+  // the checks go to the CPU workers meanwhile, and are gathered in plan
+  // order at the end.
+  std::vector<std::jthread> device_threads;
+  for (std::size_t t = 0; t < threads; ++t) {
+    device_threads.emplace_back(
+        [&drive, engine = engines[t], t] { drive_devices(drive, *engine, t); });
   }
-  // The devices are driven from this thread; each pair's checks go to the
-  // CPU workers meanwhile, and are gathered in order at the end.
-  std::vector<std::vector<std::unique_ptr<PendingTarget>>> pending(plan.variants.size());
-  ProgressCounter progress(options.progress, plan.pair_count());
-  CpuWork work(options.jobs);
-  work.run([&] {
-    for (std::size_t v = 0; v < plan.variants.size(); ++v) {
-      const LibraryVariant& entry = library.variants[plan.variants[v].index];
-      const std::shared_ptr<VariantReferences> references = variant_references();
-      for (const PlannedPair& pair : plan.variants[v].pairs) {
-        pending[v].push_back(run_pair(ctx, plan, entry, pair, references, work, progress, report));
-      }
-    }
-    work.wait();
-  });
+  drive.claimed.wait();
+  drive.work.wait();
+  drive.checked.count_down();
+  device_threads.clear();  // joined: every device closed
+  report.gl_device = drive.gl_device;
+  std::set<DrawnMap> drawn;
   for (std::size_t v = 0; v < plan.variants.size(); ++v) {
     const LibraryVariant& entry = library.variants[plan.variants[v].index];
     VariantRun variant_run;
     variant_run.name = entry.variant.name;
     variant_run.technique = entry.variant.technique;
-    for (const std::unique_ptr<PendingTarget>& target_runs : pending[v]) {
-      finish_runs(*target_runs, variant_run);
+    for (PairResult& pair : drive.results[v]) {
+      finish_runs(*pair.runs, variant_run);
+      append_depth_checks(report.depth_checks, pair.checks.depth_checks, drawn);
+      append(report.minmax_checks, pair.checks.minmax_checks);
+      append(report.function_checks, pair.checks.function_checks);
+      append(report.deferred_checks, pair.checks.deferred_checks);
     }
     for (const TargetRun& run : variant_run.runs) count(report, run);
     if (plan.variants[v].other_shards && variant_run.runs.empty()) continue;

@@ -20,15 +20,18 @@
 namespace penumbra {
 namespace {
 
-// One Wine session for the three runtimes, started when a run first needs it.
+// One Wine session for the three runtimes of every device thread, started
+// when a run first needs it.
 class SharedSession {
  public:
   Result<std::shared_ptr<WineSession>> get() {
+    const std::lock_guard lock(mutex_);
     if (!session_) session_ = WineSession::start(WineSession::options_from_environment());
     return *session_;
   }
 
  private:
+  std::mutex mutex_;
   std::optional<Result<std::shared_ptr<WineSession>>> session_;
 };
 

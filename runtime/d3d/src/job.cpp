@@ -20,9 +20,7 @@ void write_floats(const std::filesystem::path& path, const std::vector<float>& f
 }  // namespace
 
 Job::Job(D3dEngine& engine)
-    : engine_(engine),
-      number_(engine.next_job_++),
-      folder_(engine.session_->scratch() / ("job-" + std::to_string(number_))) {
+    : engine_(engine), number_(engine.next_job_++), folder_(engine.session_->new_job_folder()) {
   std::filesystem::create_directories(folder_);
 }
 

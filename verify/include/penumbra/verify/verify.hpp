@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string_view>
 
 #include "penumbra/compiler/bytecode_frontend.hpp"
@@ -44,7 +45,7 @@ struct VerifyOptions {
   // Only this shard's (variant, target) pairs: the library's i-th variant
   // (from 0) with kAllTargets' j-th target is in shard ((i + j) mod N) + 1.
   Shard shard = {};
-  // Threads for the CPU's part (the reference, the checks), the one that
+  // Threads for the CPU's part (the reference, the checks), the first that
   // drives the devices included; 0 = every core. The results are the same
   // whatever the count.
   int jobs = 0;
@@ -155,6 +156,15 @@ struct VerifyReport {
   bool pass() const;
 };
 
+// Drives every path's devices from one thread per engine, each thread with
+// devices of its own (its engine, a GL context, Wine's runtimes): a software
+// driver compiles each thread's pipelines on a thread of its own, so on a
+// CPU-only machine the compiles overlap. One thread only when
+// VerifyOptions::jobs means one. The report is the same whatever the count.
+Result<VerifyReport> verify_library(const Library& library, std::span<Engine* const> engines,
+                                    const VerifyOptions& options,
+                                    const DiagnosticConsumer& diagnostics);
+// The same on one device thread.
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,
                                     const VerifyOptions& options,
                                     const DiagnosticConsumer& diagnostics);

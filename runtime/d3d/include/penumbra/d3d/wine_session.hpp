@@ -8,6 +8,7 @@
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -50,6 +51,9 @@ class WineSession {
   std::filesystem::path log() const { return scratch_ / "wine.log"; }
   // A folder of this session's for job files.
   const std::filesystem::path& scratch() const { return scratch_; }
+  // The name of a new folder in scratch() for one job's files: unique however
+  // many engines, on however many threads, share the session.
+  std::filesystem::path new_job_folder() { return scratch_ / ("job-" + std::to_string(++jobs_)); }
 
  private:
   WineSession() = default;
@@ -60,6 +64,7 @@ class WineSession {
   std::string display_;
   pid_t xvfb_ = -1;
   std::filesystem::path scratch_;
+  std::atomic<unsigned> jobs_ = 0;
 };
 
 }  // namespace penumbra
