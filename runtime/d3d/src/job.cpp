@@ -20,7 +20,9 @@ void write_floats(const std::filesystem::path& path, const std::vector<float>& f
 }  // namespace
 
 Job::Job(D3dEngine& engine)
-    : engine_(engine), number_(engine.next_job_++), folder_(engine.session_->new_job_folder()) {
+    : engine_(engine),
+      number_(engine.session_->new_job_number()),
+      folder_(engine.session_->scratch() / ("job-" + std::to_string(number_))) {
   std::filesystem::create_directories(folder_);
 }
 

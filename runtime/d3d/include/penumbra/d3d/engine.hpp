@@ -193,7 +193,6 @@ class D3dEngine {
   std::unique_ptr<d3d::HostProcess> host_;
   std::string description_;
   int next_id_ = 1;
-  int next_job_ = 1;
   std::map<std::string, int> shaders_;            // bytecode (its bytes) -> host id, loaded once
   std::map<std::string, int> constant_textures_;  // D3D9 disks: texels -> host id
   std::string pending_releases_;  // finished jobs' resources, released by the next job

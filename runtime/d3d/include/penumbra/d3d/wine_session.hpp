@@ -51,9 +51,9 @@ class WineSession {
   std::filesystem::path log() const { return scratch_ / "wine.log"; }
   // A folder of this session's for job files.
   const std::filesystem::path& scratch() const { return scratch_; }
-  // The name of a new folder in scratch() for one job's files: unique however
-  // many engines, on however many threads, share the session.
-  std::filesystem::path new_job_folder() { return scratch_ / ("job-" + std::to_string(++jobs_)); }
+  // A new job's number, from 1: unique however many engines, on however many
+  // threads, share the session, so that its folder in scratch() is its own.
+  int new_job_number() { return ++jobs_; }
 
  private:
   WineSession() = default;
@@ -64,7 +64,7 @@ class WineSession {
   std::string display_;
   pid_t xvfb_ = -1;
   std::filesystem::path scratch_;
-  std::atomic<unsigned> jobs_ = 0;
+  std::atomic<int> jobs_ = 0;
 };
 
 }  // namespace penumbra
