@@ -56,6 +56,7 @@ BuildStamp BuildStamp::of(const fs::path& cache_dir, const BuildInputs& inputs) 
   for (const Variant& variant : inputs.variants) {
     key.add(variant_identity(variant));
     for (Target target : variant.targets) key.add(to_string(target));
+    for (Form form : variant.forms) key.add(to_string(form));  // --form changes what is written
   }
   BuildStamp stamp;
   stamp.stamp_path_ = cache_dir / "builds" / (content_hash(out.string()) + ".json");

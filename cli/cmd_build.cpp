@@ -116,8 +116,7 @@ struct BuildArgs {
   std::string manifest;
   std::string out;
   int jobs = default_jobs();
-  std::vector<std::string> variants;
-  std::vector<std::string> targets;
+  Selection selection;  // --variant, --target, --form
   std::string hlsl_compiler;
   std::string shaderlib;  // empty: the copy built into penumbra
   std::string depfile;    // empty: none
@@ -130,11 +129,11 @@ struct BuildArgs {
   bool verbose = false;
 };
 
-// The manifest's variants that --variant, --target and --group select.
+// The manifest's variants that --variant, --target, --form and --group select.
 Result<std::vector<Variant>> selected_variants(const BuildArgs& args) {
   PENUMBRA_TRY_ASSIGN(std::vector<Variant> all, load_variants(args.manifest));
   PENUMBRA_TRY_ASSIGN(std::vector<Variant> variants,
-                      select_variants(std::move(all), args.variants, args.targets, args.manifest));
+                      select_variants(std::move(all), args.selection, args.manifest));
   if (!args.group.empty()) {
     PENUMBRA_TRY_ASSIGN(const auto group, parse_group(args.group));
     std::erase_if(variants, [&](const Variant& v) { return !in_group(v.name, group); });
@@ -220,9 +219,12 @@ void add_build_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-j,--jobs", args->jobs,
                   "Shaders compiled in parallel (1..1024; default: the number of cores)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--variant", args->variants,
+  cmd->add_option("--variant", args->selection.variants,
                   "Build only this variant of the manifest (repeatable)");
-  cmd->add_option("--target", args->targets, "Build only for this target (repeatable)");
+  cmd->add_option("--target", args->selection.targets, "Build only for this target (repeatable)");
+  cmd->add_option("--form", args->selection.forms,
+                  "Build only this form: query, deferred or function (repeatable; the passes it "
+                  "reads come with it)");
   cmd->add_option("--group", args->group,
                   "Build only group I of N (I/N): the variants whose names hash to it, a "
                   "hermetic part for `penumbra merge` (docs/scale-out.md)");

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
+#include <string_view>
+
+#include "penumbra/model/pass.hpp"
 
 namespace penumbra::cli {
 namespace {
@@ -43,42 +47,65 @@ std::string allowed_variants(const std::vector<Variant>& variants, const std::st
          std::to_string(variants.size()) + ")";
 }
 
+// The targets or forms named in `names`, parsed by `parse`; errors name
+// `flag` and the `allowed` names.
+template <typename T, typename Parse>
+Result<std::vector<T>> parse_names(const std::vector<std::string>& names, Parse parse,
+                                   std::string_view flag, std::string_view what,
+                                   const std::string& allowed) {
+  std::vector<T> out;
+  for (const std::string& name : names) {
+    const std::optional<T> value = parse(name);
+    if (!value) {
+      return make_error(Error::Kind::bad_input, std::string(flag) + " " + name,
+                        "unknown " + std::string(what) + "; allowed: " + allowed);
+    }
+    out.push_back(*value);
+  }
+  return out;
+}
+
+template <typename T>
+void keep_wanted(std::vector<T>& values, const std::vector<T>& wanted) {
+  if (wanted.empty()) return;
+  std::erase_if(values, [&](const T& v) { return std::ranges::find(wanted, v) == wanted.end(); });
+}
+
 }  // namespace
 
 Result<std::vector<Variant>> select_variants(std::vector<Variant> variants,
-                                             const std::vector<std::string>& names,
-                                             const std::vector<std::string>& targets,
+                                             const Selection& selection,
                                              const std::string& manifest) {
+  const std::vector<std::string>& names = selection.variants;
   for (const std::string& name : names) {
     if (std::ranges::none_of(variants, [&](const Variant& v) { return v.name == name; })) {
       return make_error(Error::Kind::bad_input, "--variant " + name,
                         "no such variant in " + manifest + "; " + allowed_variants(variants, name));
     }
   }
-  std::vector<Target> wanted;
-  for (const std::string& name : targets) {
-    const auto target = parse_target(name);
-    if (!target) {
-      return make_error(Error::Kind::bad_input, "--target " + name,
-                        "unknown target; allowed: " + allowed_targets());
-    }
-    wanted.push_back(*target);
-  }
+  PENUMBRA_TRY_ASSIGN(const std::vector<Target> targets,
+                      parse_names<Target>(selection.targets, parse_target, "--target", "target",
+                                          allowed_targets()));
+  PENUMBRA_TRY_ASSIGN(
+      const std::vector<Form> forms,
+      parse_names<Form>(selection.forms, parse_form, "--form", "form", allowed_forms()));
   std::vector<Variant> selected;
   for (Variant& variant : variants) {
     if (!names.empty() && std::ranges::find(names, variant.name) == names.end()) continue;
-    if (!wanted.empty()) {
-      std::erase_if(variant.targets,
-                    [&](Target t) { return std::ranges::find(wanted, t) == wanted.end(); });
-    }
-    if (!variant.targets.empty()) selected.push_back(std::move(variant));
+    keep_wanted(variant.targets, targets);
+    keep_wanted(variant.forms, forms);
+    if (!variant.targets.empty() && !variant.forms.empty()) selected.push_back(std::move(variant));
   }
   if (selected.empty()) {
     std::string where = names.empty() ? "" : "--variant " + join(names);
-    if (!targets.empty())
-      where += (where.empty() ? "" : " ") + std::string("--target ") + join(targets);
+    const auto add = [&](std::string_view flag, const std::vector<std::string>& values) {
+      if (!values.empty())
+        where += (where.empty() ? "" : " ") + std::string(flag) + " " + join(values);
+    };
+    add("--target", selection.targets);
+    add("--form", selection.forms);
     return make_error(Error::Kind::bad_input, where,
-                      "no variant of " + manifest + " is built for the selected targets");
+                      "no variant of " + manifest + " is built for the selected targets and forms");
   }
   return selected;
 }

@@ -1,9 +1,10 @@
 # penumbra_add_shader_library(<name> MANIFEST <file> [TARGETS <target>...]
-#                             [OUTPUT_DIR <dir>] [HLSL_COMPILER <path>]
+#                             [FORMS <form>...] [OUTPUT_DIR <dir>] [HLSL_COMPILER <path>]
 #                             [SHADERLIB_DIR <dir>] [GROUPS <n>])
 #
 # A static library <name> whose header <name>/shaders.hpp holds every variant
-# of MANIFEST for TARGETS (default: the manifest's own), with the reflection
+# of MANIFEST for TARGETS and FORMS (query, deferred, function; default: the
+# manifest's own; `penumbra build --target/--form`), with the reflection
 # and a lookup by technique and keys (docs/embedding.md). Generated at build
 # time, never at configure time, in GROUPS (default 16) hermetic steps:
 # `penumbra build --group I/N` writes each group's part under
@@ -30,10 +31,10 @@
 # shaderlib/ changes.
 function(penumbra_add_shader_library name)
   cmake_parse_arguments(PARSE_ARGV 1 ARG "" "MANIFEST;OUTPUT_DIR;HLSL_COMPILER;SHADERLIB_DIR;GROUPS"
-                        "TARGETS")
+                        "TARGETS;FORMS")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "penumbra_add_shader_library(${name}): unknown arguments "
-                        "'${ARG_UNPARSED_ARGUMENTS}' (allowed: MANIFEST, TARGETS, OUTPUT_DIR, "
+                        "'${ARG_UNPARSED_ARGUMENTS}' (allowed: MANIFEST, TARGETS, FORMS, OUTPUT_DIR, "
                         "HLSL_COMPILER, SHADERLIB_DIR, GROUPS)")
   endif()
   if(NOT name MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
@@ -58,6 +59,9 @@ function(penumbra_add_shader_library name)
   set(build_args)
   foreach(target IN LISTS ARG_TARGETS)
     list(APPEND build_args --target ${target})
+  endforeach()
+  foreach(form IN LISTS ARG_FORMS)
+    list(APPEND build_args --form ${form})
   endforeach()
   if(ARG_HLSL_COMPILER)
     list(APPEND build_args --hlsl-compiler ${ARG_HLSL_COMPILER})

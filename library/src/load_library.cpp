@@ -11,6 +11,7 @@
 #include "penumbra/model/json_number.hpp"
 #include "penumbra/model/json_text.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/file.hpp"
 #include "penumbra/support/text.hpp"
 
@@ -219,6 +220,33 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
   return out;
 }
 
+// "forms": those the variant was built in, each one its technique has; a
+// library older than forms on demand has every form its technique has.
+Status read_forms(const std::filesystem::path& file, const json& j, const std::string& path,
+                  Variant& v) {
+  if (!j.contains("forms")) {
+    v.forms = built_forms(v);
+    return {};
+  }
+  const json& forms = j["forms"];
+  if (!forms.is_array()) return type_error(file, path + "/forms", "an array", forms);
+  v.forms.clear();
+  for (std::size_t i = 0; i < forms.size(); ++i) {
+    const std::string at = path + "/forms/" + std::to_string(i);
+    PENUMBRA_TRY_ASSIGN(const std::string form_name, string_at(file, forms[i], at));
+    const std::optional<Form> form = parse_form(form_name);
+    if (!form || !has_form(v.technique, *form)) {
+      return index_error(file, at,
+                         "unknown form '" + shorten(form_name) + "' for technique " +
+                             std::string(to_string(v.technique)) + "; allowed: " +
+                             (has_function_form(v.technique) ? allowed_forms() : "query"));
+    }
+    v.forms.push_back(*form);
+  }
+  v.forms = built_forms(v);  // in kAllForms order, each once
+  return {};
+}
+
 Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,
                                     const std::string& path, const SharedTables& tables) {
   LibraryVariant out;
@@ -285,6 +313,7 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     if (!why.empty()) return index_error(file, at, why + "; rebuild the library");
     v.targets.push_back(*target);
   }
+  PENUMBRA_TRY(read_forms(file, j, path, v));
   for (auto& [pass_name, by_target] : j.at("passes").items()) {
     const std::optional<PassKind> parsed = parse_pass(pass_name);
     if (!parsed) {

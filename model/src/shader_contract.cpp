@@ -294,8 +294,26 @@ bool can_emit(const Variant& variant, Target target) {
 }
 
 bool runs_pass(PassKind pass, const Variant& variant) {
-  for (PassKind run : describe(variant.technique).passes) {
-    if (run == pass) return true;
+  const std::span<const PassKind> passes = describe(variant.technique).passes;
+  if (std::ranges::find(passes, pass) == passes.end()) return false;
+  return std::ranges::any_of(kAllForms, [&](Form form) {
+    return builds_form(variant, form) && form_reads_pass(form, pass);
+  });
+}
+
+bool form_reads_pass(Form form, PassKind pass) {
+  switch (pass) {
+    case PassKind::depth:
+    case PassKind::minmax_init:
+    case PassKind::minmax_reduce:
+      return true;
+    case PassKind::query:
+    case PassKind::blur_h:
+    case PassKind::blur_v:
+    case PassKind::composite:
+      return form == Form::query;
+    case PassKind::deferred:
+      return form == Form::deferred;
   }
   return false;
 }
@@ -303,6 +321,32 @@ bool runs_pass(PassKind pass, const Variant& variant) {
 bool has_function_form(Technique technique) {
   const std::span<const PassKind> passes = describe(technique).passes;
   return std::ranges::find(passes, PassKind::deferred) != passes.end();
+}
+
+bool has_form(Technique technique, Form form) {
+  return form == Form::query || has_function_form(technique);
+}
+
+bool builds_form(const Variant& variant, Form form) {
+  return has_form(variant.technique, form) &&
+         std::ranges::find(variant.forms, form) != variant.forms.end();
+}
+
+std::vector<Form> built_forms(const Variant& variant) {
+  std::vector<Form> out;
+  for (Form form : kAllForms) {
+    if (builds_form(variant, form)) out.push_back(form);
+  }
+  return out;
+}
+
+std::string form_not_built(const Variant& variant, Form form) {
+  if (builds_form(variant, form)) return {};
+  const std::string name(to_string(form));
+  if (!has_form(variant.technique, form)) {
+    return "technique " + std::string(to_string(variant.technique)) + " has no " + name + " form";
+  }
+  return "built without the " + name + " form (its forms: " + to_string(built_forms(variant)) + ")";
 }
 
 }  // namespace penumbra

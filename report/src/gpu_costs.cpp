@@ -23,7 +23,9 @@ std::vector<TimedVariant> time_variants(const Library& library, Engine& engine,
             variant.targets.end()) {
       continue;
     }
-    if (const std::string reason = off_stage(variant); !reason.empty()) {
+    std::string reason = off_stage(variant);
+    if (reason.empty()) reason = form_not_built(variant, Form::query);
+    if (!reason.empty()) {
       diagnostics({Severity::note, variant.name, "not timed for the cost chart: " + reason});
       continue;
     }

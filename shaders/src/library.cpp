@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cstring>
 #include <mutex>
+#include <string>
 #include <tuple>
+
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra::shaders {
 namespace {
@@ -22,6 +25,14 @@ auto order_key(const EmbeddedProgram& e) {
 
 auto function_key(std::string_view variant, Target target) {
   return std::make_tuple(variant, static_cast<int>(target));
+}
+
+// "variant hard was built without the query form (its forms: function)", or
+// empty when `forms` holds `form`.
+std::string without(std::string_view variant, Form form, const std::vector<Form>& forms) {
+  if (std::ranges::find(forms, form) != forms.end()) return {};
+  return "variant " + std::string(variant) + " was built without the " +
+         std::string(to_string(form)) + " form (its forms: " + to_string(forms) + ")";
 }
 
 }  // namespace
@@ -125,6 +136,44 @@ const Function* Library::find_function(std::string_view variant, Target target) 
 const Function* Library::find_function(Technique technique, const VariantKeys& keys,
                                        Target target) const {
   return find_function(variant_name(technique, keys), target);
+}
+
+std::vector<Form> Library::forms(std::string_view variant) const {
+  for (const EmbeddedPart& part : parts_) {
+    const auto it = std::ranges::lower_bound(part.variants, variant, {},
+                                             [](const EmbeddedVariant& v) { return v.name; });
+    if (it == part.variants.end() || it->name != variant) continue;
+    std::vector<Form> out;
+    for (Form form : kAllForms) {
+      if (it->forms >> static_cast<unsigned>(form) & 1u) out.push_back(form);
+    }
+    return out;
+  }
+  return {};
+}
+
+std::string Library::why_not_found(std::string_view variant, Target target, PassKind pass) const {
+  if (find(variant, target, pass)) return {};
+  const std::vector<Form> built = forms(variant);
+  if (built.empty()) return "no variant " + std::string(variant) + " in the library";
+  // Every form reads the depth pass and the min-max chain; the others belong to one.
+  for (Form form : kAllForms) {
+    if (form_reads_pass(form, pass) &&
+        std::ranges::none_of(built, [&](Form f) { return form_reads_pass(f, pass); })) {
+      return without(variant, form, built);
+    }
+  }
+  return "variant " + std::string(variant) + " has no " + std::string(to_string(pass)) +
+         " pass for target " + std::string(to_string(target));
+}
+
+std::string Library::why_no_function(std::string_view variant, Target target) const {
+  if (find_function(variant, target)) return {};
+  const std::vector<Form> built = forms(variant);
+  if (built.empty()) return "no variant " + std::string(variant) + " in the library";
+  if (std::string why = without(variant, Form::function, built); !why.empty()) return why;
+  return "variant " + std::string(variant) + " has no function form for target " +
+         std::string(to_string(target));
 }
 
 std::size_t Library::size() const {

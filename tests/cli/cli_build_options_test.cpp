@@ -1,10 +1,11 @@
 // `penumbra build`'s everyday options, run on the real executable: -j's
-// default, -q, --keep-going, and the --variant and --target filters.
+// default, -q, --keep-going, and the --variant, --target and --form filters.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <thread>
@@ -140,6 +141,64 @@ TEST_F(BuildOptions, VariantAndTargetFilters) {
   EXPECT_FALSE(std::filesystem::exists(out() / "hlsl_dx10"));
   // A build for spirv alone needs no HLSL compiler and says nothing of it.
   EXPECT_THAT(run.err, Not(HasSubstr("no Direct3D bytecode made")));
+}
+
+// The forms each variant of out/index.json lists.
+std::map<std::string, std::vector<std::string>> built_forms(const std::filesystem::path& out) {
+  std::ifstream in(out / "index.json");
+  const auto index = nlohmann::json::parse(in);
+  std::map<std::string, std::vector<std::string>> forms;
+  for (const auto& variant : index.at("variants")) {
+    forms[variant.at("name")] = variant.at("forms").get<std::vector<std::string>>();
+  }
+  return forms;
+}
+
+// The shader files under `dir`, relative to it, sorted.
+std::vector<std::string> files_under(const std::filesystem::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().filename() != "index.json") {
+      out.push_back(std::filesystem::relative(entry.path(), dir).generic_string());
+    }
+  }
+  std::ranges::sort(out);
+  return out;
+}
+
+TEST_F(BuildOptions, EveryVariantIsBuiltInEveryFormByDefault) {
+  const CliRun run = build("--target hlsl_dx10");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::string> all = {"query", "deferred", "function"};
+  for (const auto& [name, forms] : built_forms(out())) EXPECT_EQ(forms, all) << name;
+  EXPECT_TRUE(std::filesystem::exists(out() / "hlsl_dx10/hard/query.frag.hlsl"));
+}
+
+// --form function builds the function form and the depth pass it reads, and
+// nothing else; index.json lists only that.
+TEST_F(BuildOptions, FormFilterBuildsOnlyThatFormAndWhatItReads) {
+  const CliRun run = build("--form function --target hlsl_dx10 --variant hard");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(built_forms(out()),
+            (std::map<std::string, std::vector<std::string>>{{"hard", {"function"}}}));
+  EXPECT_EQ(files_under(out()),
+            (std::vector<std::string>{"hlsl_dx10/common/depth.frag.hlsl",
+                                      "hlsl_dx10/common/depth.vert.hlsl",
+                                      "hlsl_dx10/hard/penumbra_visibility.hlsl"}));
+  std::ifstream in(out() / "index.json");
+  const auto index = nlohmann::json::parse(in);
+  const auto& passes = index.at("variants").at(0).at("passes");
+  EXPECT_TRUE(passes.contains("depth"));
+  EXPECT_FALSE(passes.contains("query"));
+  EXPECT_FALSE(passes.contains("deferred"));
+}
+
+TEST_F(BuildOptions, AnUnknownFormIsBadInputListingTheAllowedForms) {
+  const CliRun run = build("--form shadow");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err,
+              HasSubstr("--form shadow: unknown form; allowed: query, deferred, function"));
+  EXPECT_FALSE(std::filesystem::exists(out()));
 }
 
 TEST_F(BuildOptions, AnUnknownVariantIsBadInputListingTheAllowedNames) {

@@ -17,6 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 // Five cheap variants of two techniques, for spirv and glsl330.
 constexpr const char* kManifest =
@@ -84,6 +85,22 @@ TEST_F(BuildCache, UnchangedRebuildDoesNothing) {
   EXPECT_THAT(touched.out, HasSubstr("built 5 variants"));
   // So is a build with other options.
   EXPECT_THAT(build(out, "--target spirv").out, HasSubstr("built 5 variants"));
+}
+
+// A build in fewer forms is not the build before it, and every shader it
+// needs is one the build in every form cached: the cache keys no form.
+TEST_F(BuildCache, AnotherFormIsRebuiltFromTheCache) {
+  const fs::path out = dir.path() / "out";
+  ASSERT_EQ(build(out).exit_code, 0);
+  const CliRun function = build(out, "--form function");
+  ASSERT_EQ(function.exit_code, 0) << function.err;
+  EXPECT_THAT(function.out, HasSubstr("built 5 variants"));
+  std::smatch files;
+  ASSERT_TRUE(std::regex_search(function.out, files, std::regex("([0-9]+) shader files")))
+      << function.out;
+  EXPECT_EQ(from_cache(function), std::stoi(files[1])) << function.out;
+  EXPECT_THAT(read_file(out / "index.json").value(), Not(HasSubstr("query.frag")));
+  EXPECT_THAT(build(out, "--form function").out, HasSubstr("is up to date"));
 }
 
 TEST_F(BuildCache, ShaderlibEditRecompilesOnlyTheShadersThatIncludeIt) {

@@ -1,4 +1,5 @@
 // Every manifest error names the file and the JSON path, and says what is allowed.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,7 +51,39 @@ TEST(ManifestErrors, SchemaIsRequiredAndMustBeOne) {
 TEST(ManifestErrors, UnknownTopLevelKey) {
   expect_bad_input(manifest_error(R"({"schema": 1, "set": []})"),
                    "perms.json: /set: unknown key 'set'; allowed keys: schema, disks, targets, "
-                   "sets, exclude, max_variants");
+                   "forms, sets, exclude, max_variants");
+}
+
+TEST(ManifestErrors, FormsNameKnownForms) {
+  expect_bad_input(
+      manifest_error(
+          R"({"schema": 1, "forms": ["query", "shadow"], "sets": [{"technique": "hard"}]})"),
+      "perms.json: /forms/1: unknown form 'shadow'; allowed forms: query, deferred, function");
+  expect_bad_input(manifest_error(R"({"schema": 1, "forms": [], "sets": [{"technique": "hard"}]})"),
+                   "perms.json: /forms: expected at least one value, got an empty list");
+  EXPECT_THAT(manifest_error(with_set(R"({"technique": "hard", "forms": 3})")).to_string(),
+              ::testing::HasSubstr("perms.json: /sets/1/forms: expected a string, got "));
+  // Exclusions remove variants and targets, not forms.
+  EXPECT_THAT(
+      manifest_error(
+          R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"forms": "query"}]})")
+          .to_string(),
+      ::testing::HasSubstr("/exclude/0/forms: unknown key 'forms'"));
+}
+
+// A technique with none of the forms asked would leave a variant with
+// nothing but its depth pass.
+TEST(ManifestErrors, ATechniqueNeedsOneOfTheFormsAsked) {
+  expect_bad_input(
+      manifest_error(
+          with_set(R"({"technique": "screen_blur", "blur_radius": 2, "forms": ["function"]})")),
+      "perms.json: /sets/1/forms: technique screen_blur has none of the forms asked; its forms: "
+      "query");
+  expect_bad_input(
+      manifest_error(R"({"schema": 1, "forms": "deferred",
+                         "sets": [{"technique": ["hard", "screen_blur"], "blur_radius": 2}]})"),
+      "perms.json: /sets/0: technique screen_blur has none of the forms asked; its forms: query "
+      "(this set takes the top-level forms; give it a 'forms' list)");
 }
 
 TEST(ManifestErrors, UnknownKeyInASet) {
@@ -58,7 +91,8 @@ TEST(ManifestErrors, UnknownKeyInASet) {
       manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
       "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
       "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, "
-      "blur_radius, depth_aware, light_bits, rotation, receiver_plane, map_encoding, target");
+      "blur_radius, depth_aware, light_bits, rotation, receiver_plane, map_encoding, target, "
+      "forms");
 }
 
 TEST(ManifestErrors, UnknownTechnique) {

@@ -276,6 +276,37 @@ TEST(ManifestExpand, DuplicatesMergeWithTheUnionOfTargets) {
   EXPECT_EQ(variants[1].targets, (std::vector<Target>{Target::spirv, Target::hlsl_dx9}));
 }
 
+TEST(ManifestExpand, EveryFormItsTechniqueHasByDefault) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1,
+    "sets": [{"technique": ["hard", "backprojection", "screen_blur"], "blur_radius": 2}]})");
+  ASSERT_EQ(names(variants),
+            (std::vector<std::string>{"hard", "backprojection", "screen_blur_r2"}));
+  const std::vector<Form> all = {Form::query, Form::deferred, Form::function};
+  EXPECT_EQ(variants[0].forms, all);
+  EXPECT_EQ(variants[1].forms, all);
+  EXPECT_EQ(variants[2].forms, std::vector<Form>{Form::query});  // screen_blur has no other
+}
+
+// A set's forms replace the top-level ones; a variant several sets give is
+// built in the union of their forms, in kAllForms order.
+TEST(ManifestExpand, FormsOfASetAndTheUnionOfDuplicates) {
+  const std::vector<Variant> variants = expand_text(R"({"schema": 1, "forms": ["query"],
+    "sets": [{"technique": "pcf_grid", "kernel": [3, 5], "forms": ["function"]},
+             {"technique": "pcf_grid", "kernel": 3, "forms": "deferred"},
+             {"technique": ["hard", "screen_blur"], "blur_radius": 1,
+              "forms": ["function", "query"]},
+             {"technique": "pcss", "blocker_samples": 16, "pcf_samples": 16,
+              "disk": "whitepaper16"}]})");
+  ASSERT_EQ(names(variants),
+            (std::vector<std::string>{"hard", "pcf_grid_k3", "pcf_grid_k5",
+                                      "pcss_b16_p16_whitepaper16", "screen_blur_r1"}));
+  EXPECT_EQ(variants[0].forms, (std::vector<Form>{Form::query, Form::function}));
+  EXPECT_EQ(variants[1].forms, (std::vector<Form>{Form::deferred, Form::function}));
+  EXPECT_EQ(variants[2].forms, std::vector<Form>{Form::function});
+  EXPECT_EQ(variants[3].forms, std::vector<Form>{Form::query});
+  EXPECT_EQ(variants[4].forms, std::vector<Form>{Form::query});  // screen_blur has no function form
+}
+
 TEST(ManifestExpand, SortsByTechniqueThenNumericKeys) {
   const std::vector<Variant> variants = expand_text(R"({"schema": 1,
     "disks": {"b": {"seed": 2}, "a": {"seed": 3}},

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "penumbra/compiler/targets.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra {
 namespace {
@@ -100,6 +102,45 @@ TEST(Model, VariantNames) {
                          })),
             "pcss_b16_p16_poisson_ign_receiver_plane");
   EXPECT_EQ(light_grid_side(1024), 32);
+}
+
+TEST(Model, FormNamesRoundTrip) {
+  for (Form form : kAllForms) EXPECT_EQ(parse_form(to_string(form)), form);
+  EXPECT_EQ(parse_form("shadow"), std::nullopt);
+  EXPECT_EQ(allowed_forms(), "query, deferred, function");
+}
+
+// Every form brings the depth pass and the min-max chain; the query form
+// its query, blur and composite passes, the deferred form its own pass.
+TEST(Model, AVariantRunsThePassesOfItsForms) {
+  Variant minmax;
+  minmax.technique = Technique::minmax_pcf;
+  minmax.forms = {Form::function};
+  EXPECT_TRUE(builds_form(minmax, Form::function));
+  EXPECT_TRUE(runs_pass(PassKind::depth, minmax));
+  EXPECT_TRUE(runs_pass(PassKind::minmax_init, minmax));
+  EXPECT_TRUE(runs_pass(PassKind::minmax_reduce, minmax));
+  EXPECT_FALSE(runs_pass(PassKind::query, minmax));
+  EXPECT_FALSE(runs_pass(PassKind::deferred, minmax));
+  EXPECT_EQ(form_not_built(minmax, Form::query),
+            "built without the query form (its forms: function)");
+  EXPECT_EQ(form_not_built(minmax, Form::function), "");
+
+  Variant blur;
+  blur.technique = Technique::screen_blur;  // every form asked; it has the query form only
+  EXPECT_EQ(built_forms(blur), std::vector<Form>{Form::query});
+  EXPECT_TRUE(runs_pass(PassKind::composite, blur));
+  EXPECT_FALSE(runs_pass(PassKind::deferred, blur));
+  EXPECT_EQ(form_not_built(blur, Form::function), "technique screen_blur has no function form");
+  blur.forms = {Form::function};
+  EXPECT_FALSE(runs_pass(PassKind::blur_h, blur));
+
+  Variant pcss;
+  pcss.technique = Technique::pcss;
+  pcss.forms = {Form::deferred};
+  EXPECT_TRUE(runs_pass(PassKind::deferred, pcss));
+  EXPECT_FALSE(runs_pass(PassKind::query, pcss));
+  EXPECT_FALSE(runs_pass(PassKind::minmax_init, pcss));  // pcss reads no min-max mip
 }
 
 TEST(Model, GaussianWeightsAreNormalizedSymmetricAndPeaked) {

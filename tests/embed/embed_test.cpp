@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
+#include "embed_function/shaders.hpp"
 #include "embed_test/shaders.hpp"
 #include "embed_whole/shaders.hpp"
 #include "penumbra/library/library.hpp"
@@ -152,6 +153,37 @@ TEST(EmbeddedHeader, FindIsTheLibrarysFind) {
             embed_whole::library().find(Technique::pcss, keys, Target::spirv));
   EXPECT_EQ(embed_test::find_function(Technique::pcss, keys, Target::essl300),
             embed_test::library().find_function(Technique::pcss, keys, Target::essl300));
+}
+
+TEST_P(Embedded, EachVariantsFormsAreIndexJsons) {
+  for (const LibraryVariant& entry : built().variants) {
+    EXPECT_EQ(library().forms(entry.variant.name), entry.variant.forms) << entry.variant.name;
+  }
+  EXPECT_EQ(library().why_no_function("screen_blur_r2", Target::glsl450),
+            "variant screen_blur_r2 was built without the function form (its forms: query)");
+}
+
+// FORMS function (penumbra build --form function): the function forms, the
+// depth pass and the min-max chain they read, no query or deferred pass,
+// and no variant without a function form.
+TEST(EmbeddedForms, AFunctionFormLibraryHoldsWhatItReadsAndSaysWhatItLacks) {
+  const shaders::Library& library = embed_function::library();
+  EXPECT_EQ(library.forms("pcss_b16_p16_whitepaper16"), std::vector<Form>{Form::function});
+  EXPECT_EQ(library.functions().size(), 18u);  // hard, pcss and minmax_pcf, six text targets
+  EXPECT_NE(library.find("minmax_pcf_k8", Target::glsl450, PassKind::depth), nullptr);
+  EXPECT_NE(library.find("minmax_pcf_k8", Target::glsl450, PassKind::minmax_reduce), nullptr);
+  for (const shaders::Program* program : library.programs()) {
+    EXPECT_TRUE(program->pass == PassKind::depth || program->pass == PassKind::minmax_init ||
+                program->pass == PassKind::minmax_reduce)
+        << program->variant << " " << to_string(program->pass);
+  }
+  EXPECT_EQ(library.find("hard", Target::glsl450), nullptr);
+  EXPECT_EQ(library.why_not_found("hard", Target::glsl450),
+            "variant hard was built without the query form (its forms: function)");
+  EXPECT_EQ(library.why_not_found("hard", Target::hlsl_dx9, PassKind::deferred),
+            "variant hard was built without the deferred form (its forms: function)");
+  EXPECT_EQ(library.why_not_found("screen_blur_r2", Target::glsl450),
+            "no variant screen_blur_r2 in the library");
 }
 
 INSTANTIATE_TEST_SUITE_P(Embeddings, Embedded,

@@ -24,8 +24,13 @@ constexpr EmbeddedFunction kSecondFunctions[] = {
     {"b", Target::glsl330, {7, 10}, {0, 7}},
     {"b", Target::essl300, {7, 10}, {0, 7}},
 };
-constexpr EmbeddedPart kParts[] = {
-    {kFirstBlob, kFirst}, {kSecondBlob, {}}, {kSecondBlob, kSecond, kSecondFunctions}};
+// Bit Form of each: a in the query and function forms, c in the query form,
+// b in the deferred and function forms.
+constexpr EmbeddedVariant kFirstVariants[] = {{"a", 5u}, {"c", 1u}};
+constexpr EmbeddedVariant kSecondVariants[] = {{"b", 6u}};
+constexpr EmbeddedPart kParts[] = {{kFirstBlob, kFirst, {}, kFirstVariants},
+                                   {kSecondBlob, {}},
+                                   {kSecondBlob, kSecond, kSecondFunctions, kSecondVariants}};
 
 TEST(ShadersLibrary, FindsEachProgramInItsPart) {
   const Library library(kParts);
@@ -59,6 +64,31 @@ TEST(ShadersLibrary, FindsEachFunctionFormInItsPart) {
   EXPECT_EQ(library.find_function("a", Target::glsl330), nullptr);
   ASSERT_EQ(library.functions().size(), 2u);
   EXPECT_EQ(library.functions()[0]->target, Target::glsl330);  // in kAllTargets order
+}
+
+// A lookup that finds nothing says why: a form not built is named with the
+// forms the variant has.
+TEST(ShadersLibrary, SaysWhyAProgramOrFunctionIsNotThere) {
+  const Library library(kParts);
+  EXPECT_EQ(library.forms("a"), (std::vector<Form>{Form::query, Form::function}));
+  EXPECT_EQ(library.forms("b"), (std::vector<Form>{Form::deferred, Form::function}));
+  EXPECT_EQ(library.forms("d"), std::vector<Form>{});
+  EXPECT_EQ(library.why_not_found("a", Target::glsl450), "");
+  EXPECT_EQ(library.why_not_found("b", Target::hlsl_dx10),
+            "variant b was built without the query form (its forms: deferred, function)");
+  EXPECT_EQ(library.why_not_found("a", Target::glsl450, PassKind::deferred),
+            "variant a was built without the deferred form (its forms: query, function)");
+  EXPECT_EQ(library.why_not_found("a", Target::spirv),
+            "variant a has no query pass for target spirv");
+  EXPECT_EQ(library.why_not_found("c", Target::spirv, PassKind::depth),
+            "variant c has no depth pass for target spirv");
+  EXPECT_EQ(library.why_not_found("d", Target::spirv), "no variant d in the library");
+  EXPECT_EQ(library.why_no_function("b", Target::glsl330), "");
+  EXPECT_EQ(library.why_no_function("c", Target::glsl330),
+            "variant c was built without the function form (its forms: query)");
+  EXPECT_EQ(library.why_no_function("b", Target::glsl450),
+            "variant b has no function form for target glsl450");
+  EXPECT_EQ(library.why_no_function("e", Target::glsl450), "no variant e in the library");
 }
 
 TEST(ShadersLibrary, ListsProgramsInOrderAcrossParts) {

@@ -37,6 +37,36 @@ TEST(LoadLibrary, ReadsEachVariantsFilesAndReflectionWithoutACompiler) {
   }
 }
 
+// index.json's "forms": what was built; a library written before forms on
+// demand has every form its technique has.
+TEST(LoadLibrary, FormsAreWhatWasBuilt) {
+  const std::string hard = seed("hard.json");
+  const auto old = parse_library(hard, "lib");
+  ASSERT_TRUE(old.ok()) << old.error().to_string();
+  EXPECT_EQ(old->find("hard")->variant.forms,
+            (std::vector<Form>{Form::query, Form::deferred, Form::function}));
+
+  const std::string targets = R"("targets":["spirv","hlsl_dx9"])";
+  ASSERT_NE(hard.find(targets), std::string::npos);
+  const auto with_forms = [&](const std::string& forms) {
+    std::string text = hard;
+    text.replace(text.find(targets), targets.size(), targets + R"(,"forms":)" + forms);
+    return parse_library(text, "lib");
+  };
+  const auto built = with_forms(R"(["function","query"])");
+  ASSERT_TRUE(built.ok()) << built.error().to_string();
+  EXPECT_EQ(built->find("hard")->variant.forms, (std::vector<Form>{Form::query, Form::function}));
+
+  const auto unknown = with_forms(R"(["query","shadow"])");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_THAT(unknown.error().to_string(),
+              HasSubstr("/variants/0/forms/1: unknown form 'shadow' for technique hard; allowed: "
+                        "query, deferred, function"));
+  const auto not_array = with_forms(R"("query")");
+  ASSERT_FALSE(not_array.ok());
+  EXPECT_THAT(not_array.error().to_string(), HasSubstr("/variants/0/forms"));
+}
+
 // Numbers that do not fit their field are errors, not undefined behaviour
 // (the index.json fuzzer's finds: an instruction count of 2e115, a schema of
 // 1e300, a blur weight of 1e39, a block size of 3e117).

@@ -228,6 +228,7 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
           run.not_executed = backend->missing();
           if (run.not_executed.empty()) run.not_executed = backend->not_executed(entry, target);
           if (run.not_executed.empty()) run.not_executed = off_stage(variant);
+          if (run.not_executed.empty()) run.not_executed = form_not_built(variant, Form::query);
           if (!run.not_executed.empty()) continue;
           Status ran = [&]() -> Status {
             PENUMBRA_TRY_ASSIGN(const TargetScenes* scenes, stages.get(entry, target));

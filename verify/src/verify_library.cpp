@@ -90,6 +90,10 @@ PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& e
     run.not_executed = std::move(lacking);
     return pending;
   }
+  if (std::string lacking = form_not_built(entry.variant, Form::query); !lacking.empty()) {
+    run.not_executed = std::move(lacking);  // the engine forms are checked without it
+    return pending;
+  }
   const TargetScenes& scenes = ctx.scenes.at(map_key(entry.variant, target));
   auto passes = backend.load(ctx.library, entry, target, scenes);
   if (!passes) {
@@ -338,7 +342,10 @@ bool VerifyReport::pass() const {
   const auto passed = [](const EngineFormCheck& c) { return c.pass; };
   const bool function_ok = std::all_of(function_checks.begin(), function_checks.end(), passed) &&
                            std::all_of(deferred_checks.begin(), deferred_checks.end(), passed);
-  return depth_ok && minmax_ok && function_ok && failed == 0 && (runs > 0 || shard.count > 1);
+  // Something must have run: a scene, or an engine form of a library built
+  // without the query form.
+  const bool ran = runs > 0 || !function_checks.empty() || !deferred_checks.empty();
+  return depth_ok && minmax_ok && function_ok && failed == 0 && (ran || shard.count > 1);
 }
 
 Result<VerifyReport> verify_library(const Library& library, Engine& engine,

@@ -46,7 +46,7 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
           jobs.push_back(make_job(source, target, variant));
         }
       }
-      if (has_function_form(variant.technique) && traits(target).is_text) {
+      if (builds_form(variant, Form::function) && traits(target).is_text) {
         jobs.push_back(make_function_job(target, variant));
       }
     }

@@ -128,6 +128,9 @@ ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs) {
     }
   }
   out["targets"] = targets;
+  nlohmann::json forms = nlohmann::json::array();
+  for (Form form : built_forms(variant)) forms.push_back(std::string(to_string(form)));
+  out["forms"] = forms;
   out["passes"] = passes;
   out["reflection"] = reflection;
   if (!function.empty()) out["function"] = function;

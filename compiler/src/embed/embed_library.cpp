@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "penumbra/compiler/embed.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/atomic_file.hpp"
 #include "penumbra/support/file.hpp"
 
@@ -201,8 +202,17 @@ Result<Tables> tables(const Library& library, EmbedSummary& summary) {
                                ", " + reflection + "},\n"});
     }
   }
+  // Each variant's forms, bit Form set for each, by name.
+  std::vector<Row> variants;
+  for (const LibraryVariant& entry : library.variants) {
+    unsigned forms = 0;
+    for (Form form : built_forms(entry.variant)) forms |= 1u << static_cast<unsigned>(form);
+    variants.push_back({entry.variant.name, Target::spirv, PassKind::query,
+                        "    {\"" + entry.variant.name + "\", " + std::to_string(forms) + "u},\n"});
+  }
   sort_rows(rows);
   sort_rows(functions);
+  sort_rows(variants);
   summary.programs = rows.size();
   summary.functions = functions.size();
   summary.blob_bytes = blob.data().size();
@@ -219,8 +229,10 @@ Result<Tables> tables(const Library& library, EmbedSummary& summary) {
   out.source += "};\n";
   if (!rows.empty()) append_table(out.source, "EmbeddedProgram kPrograms", rows);
   if (!functions.empty()) append_table(out.source, "EmbeddedFunction kFunctions", functions);
+  if (!variants.empty()) append_table(out.source, "EmbeddedVariant kVariants", variants);
   out.part = std::string("{kBlob, ") + (rows.empty() ? "{}" : "kPrograms") + ", " +
-             (functions.empty() ? "{}" : "kFunctions") + "}";
+             (functions.empty() ? "{}" : "kFunctions") + ", " +
+             (variants.empty() ? "{}" : "kVariants") + "}";
   return out;
 }
 

@@ -45,6 +45,13 @@ Result<Target> read_target(const JsonNode& node) {
                     "'; allowed targets: " + allowed_targets());
 }
 
+Result<Form> read_form(const JsonNode& node) {
+  Result<std::string> name = node.string();
+  if (!name) return name.error();
+  if (auto form = parse_form(*name)) return *form;
+  return node.error("unknown form '" + shorten(*name) + "'; allowed forms: " + allowed_forms());
+}
+
 Result<int> read_sample_count(const JsonNode& node) {
   Result<int> count = node.integer();
   if (!count) return count.error();
@@ -247,6 +254,16 @@ Status check_kernels(const JsonNode& node, const AxisValues& axes) {
 
 Status read_targets(const JsonNode& node, std::vector<Target>& out) {
   return read_list(node, read_target, out);
+}
+
+Status read_forms(const JsonNode& node, std::vector<Form>& out) {
+  std::vector<Form> read;
+  PENUMBRA_TRY(read_list(node, read_form, read));  // an empty list is an error
+  out.clear();
+  for (Form form : kAllForms) {
+    if (std::ranges::find(read, form) != read.end()) out.push_back(form);
+  }
+  return {};
 }
 
 }  // namespace penumbra::manifest_detail

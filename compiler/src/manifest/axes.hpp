@@ -70,4 +70,8 @@ Status check_kernels(const JsonNode& node, const AxisValues& axes);
 // One target name or a list of them, as in the manifest's "targets".
 Status read_targets(const JsonNode& node, std::vector<Target>& out);
 
+// One form name or a list of at least one, as in "forms"; `out` is
+// replaced, in kAllForms order.
+Status read_forms(const JsonNode& node, std::vector<Form>& out);
+
 }  // namespace penumbra::manifest_detail

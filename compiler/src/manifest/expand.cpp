@@ -12,6 +12,7 @@
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra {
 namespace {
@@ -172,6 +173,7 @@ Result<Variant> make_variant(DiskCache& cache, const Manifest& manifest, Techniq
   variant.name = variant_name(technique, keys);
   variant.technique = technique;
   variant.keys = keys;
+  variant.forms.clear();  // the union of the sets' forms, added by expand()
   if (keys.blocker_samples && keys.disk) {
     Result<Disk> disk =
         cached_disk(cache, manifest, *keys.disk, *keys.blocker_samples, "blocker_samples");
@@ -245,7 +247,7 @@ void apply(const Exclusion& exclusion, Variant& variant) {
 }  // namespace
 
 // Variants are keyed by name, so a variant that several sets produce is built
-// once and gets the union of their targets.
+// once and gets the union of their targets and of their forms.
 Result<std::vector<Variant>> expand(const Manifest& manifest) {
   std::map<std::string, Variant> by_name;
   DiskCache disks;
@@ -279,6 +281,8 @@ Result<std::vector<Variant>> expand(const Manifest& manifest) {
         }
         std::vector<Target>& targets = it->second.targets;
         targets.insert(targets.end(), set.axes.target.begin(), set.axes.target.end());
+        std::vector<Form>& forms = it->second.forms;
+        forms.insert(forms.end(), set.forms.begin(), set.forms.end());
       }
     }
   }
@@ -288,6 +292,7 @@ Result<std::vector<Variant>> expand(const Manifest& manifest) {
     std::ranges::sort(variant.targets);
     variant.targets.erase(std::unique(variant.targets.begin(), variant.targets.end()),
                           variant.targets.end());
+    variant.forms = built_forms(variant);  // those its technique has, in kAllForms order
     for (const Exclusion& exclusion : manifest.exclude) apply(exclusion, variant);
     if (!variant.targets.empty()) variants.push_back(std::move(variant));
   }

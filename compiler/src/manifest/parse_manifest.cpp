@@ -11,16 +11,18 @@ namespace {
 
 using manifest_detail::JsonNode;
 
-constexpr std::array<std::string_view, 6> kManifestKeys = {"schema", "disks",   "targets",
-                                                           "sets",   "exclude", "max_variants"};
+constexpr std::array<std::string_view, 7> kManifestKeys = {
+    "schema", "disks", "targets", "forms", "sets", "exclude", "max_variants"};
 
-// Sections are read in dependency order: sets name disks and default to targets.
+// Sections are read in dependency order: sets name disks and default to
+// targets and forms.
 Result<Manifest> read_manifest(const JsonNode& root) {
   PENUMBRA_TRY(root.expect_keys(kManifestKeys));
   PENUMBRA_TRY(manifest_detail::read_schema(root));
   Manifest manifest;
   PENUMBRA_TRY(manifest_detail::read_disks(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_default_targets(root, manifest));
+  PENUMBRA_TRY(manifest_detail::read_default_forms(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_max_variants(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_sets(root, manifest));
   PENUMBRA_TRY(manifest_detail::read_exclusions(root, manifest));

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -95,10 +96,45 @@ Status check_set_exact(const JsonNode& node, const AxisValues& axes) {
   return {};
 }
 
+// "technique, ..., target, forms": a set's keys, the axes and its forms.
+constexpr std::array<std::string_view, kAxisKeys.size() + 1> kSetKeys = [] {
+  std::array<std::string_view, kAxisKeys.size() + 1> keys{};
+  std::ranges::copy(kAxisKeys, keys.begin());
+  keys.back() = "forms";
+  return keys;
+}();
+
+// The forms `technique` has, in kAllForms order.
+std::vector<Form> forms_of(Technique technique) {
+  std::vector<Form> out;
+  for (Form form : kAllForms) {
+    if (has_form(technique, form)) out.push_back(form);
+  }
+  return out;
+}
+
+// Every technique of the set is built in at least one of its forms: one
+// with none of them would leave a variant with nothing to draw.
+Status check_set_forms(const JsonNode& node, const VariantSet& set) {
+  for (Technique technique : set.axes.technique) {
+    if (std::ranges::any_of(set.forms, [&](Form form) { return has_form(technique, form); })) {
+      continue;
+    }
+    const std::string what =
+        "technique " + std::string(to_string(technique)) +
+        " has none of the forms asked; its forms: " + to_string(forms_of(technique));
+    if (node.has("forms")) return node.member("forms").error(what);
+    return node.error(what + " (this set takes the top-level forms; give it a 'forms' list)");
+  }
+  return {};
+}
+
 Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
-  PENUMBRA_TRY(node.expect_keys(kAxisKeys));
-  VariantSet set{.json_path = node.path(), .axes = {}};
+  PENUMBRA_TRY(node.expect_keys(kSetKeys));
+  VariantSet set{.json_path = node.path(), .axes = {}, .forms = manifest.forms};
   PENUMBRA_TRY(read_axes(node, manifest.disks, set.axes));
+  if (node.has("forms")) PENUMBRA_TRY(read_forms(node.member("forms"), set.forms));
+  PENUMBRA_TRY(check_set_forms(node, set));
   PENUMBRA_TRY(check_set_keys(node, set.axes));
   PENUMBRA_TRY(check_kernels(node, set.axes));
   if (set.axes.target.empty()) set.axes.target = manifest.targets;

@@ -90,6 +90,11 @@ Status read_default_targets(const JsonNode& root, Manifest& manifest) {
   return read_targets(root.member("targets"), manifest.targets);
 }
 
+Status read_default_forms(const JsonNode& root, Manifest& manifest) {
+  if (!root.has("forms")) return {};
+  return read_forms(root.member("forms"), manifest.forms);
+}
+
 Status read_max_variants(const JsonNode& root, Manifest& manifest) {
   if (!root.has("max_variants")) return {};
   const JsonNode node = root.member("max_variants");

@@ -50,10 +50,12 @@ struct AxisValues {
 };
 
 // One entry of "sets": the cartesian product of its axes. `axes.target`
-// holds the manifest's "targets" when the set gives none.
+// holds the manifest's "targets" when the set gives none, and `forms` the
+// manifest's "forms" when the set gives none.
 struct VariantSet {
   std::string json_path;  // e.g. "/sets/2", for messages
   AxisValues axes;
+  std::vector<Form> forms;  // in kAllForms order
 };
 
 // One entry of "exclude": matches variants whose keys are among every given
@@ -69,6 +71,8 @@ struct Manifest {
   std::map<std::string, DiskFamily> disks;  // declared families by name
   std::vector<Target> targets;              // default targets of every set
   int max_variants = kDefaultMaxVariants;   // 1..kMaxVariants
+  // The default forms of every set: all of them unless "forms" says otherwise.
+  std::vector<Form> forms{kAllForms.begin(), kAllForms.end()};
   std::vector<VariantSet> sets;
   std::vector<Exclusion> exclude;
 };

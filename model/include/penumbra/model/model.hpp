@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "penumbra/model/pass.hpp"
 #include "penumbra/support/result.hpp"
 
 namespace penumbra {
@@ -182,6 +183,9 @@ struct Variant {
   std::optional<Disk> pcf_disk;      // pcf_poisson and pcss
   std::vector<Target> targets;       // targets this variant is emitted for, in kAllTargets order
   std::vector<float> blur_weights;   // screen_blur: baked Gaussian weights, taps -R..R
+  // The forms asked for, in kAllForms order; those the technique has are
+  // built (builds_form(), penumbra/model/shader_contract.hpp).
+  std::vector<Form> forms{kAllForms.begin(), kAllForms.end()};
 };
 
 // Builds the stable variant name from technique and keys:

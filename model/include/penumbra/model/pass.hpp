@@ -3,6 +3,8 @@
 
 #include <array>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 
 namespace penumbra {
@@ -25,6 +27,20 @@ inline constexpr std::array kAllPassKinds = {
     PassKind::blur_h, PassKind::blur_v,      PassKind::composite,     PassKind::deferred};
 std::string_view to_string(PassKind pass);
 std::optional<PassKind> parse_pass(std::string_view name);
+
+// The forms a variant is built in, each for a kind of engine
+// (docs/engines/README.md): the query pass (with screen_blur's blur and
+// composite passes), the deferred mask (docs/deferred-mask.md) and the
+// function form (docs/function-form.md). Any form brings the passes it reads:
+// the depth pass and, for the min-max techniques, the min-max chain.
+enum class Form { query, deferred, function };
+inline constexpr std::array kAllForms = {Form::query, Form::deferred, Form::function};
+std::string_view to_string(Form form);
+std::optional<Form> parse_form(std::string_view name);
+// "query, function": `forms`' names joined, for messages.
+std::string to_string(std::span<const Form> forms);
+// "query, deferred, function": the allowed names, for messages.
+std::string allowed_forms();
 
 enum class ShaderStage { vertex, fragment };
 inline constexpr std::array kAllStages = {ShaderStage::vertex, ShaderStage::fragment};

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -187,13 +188,28 @@ bool can_emit(Technique technique, Target target);
 // inexact_walk()). A manifest asking otherwise is refused.
 bool can_emit(const Variant& variant, Target target);
 
-// True when `variant`'s technique runs `pass`.
+// True when `variant` is built with `pass`: its technique runs it and one of
+// the forms it is built in reads it (form_reads_pass()).
 bool runs_pass(PassKind pass, const Variant& variant);
+// Whether `form` reads `pass`: every form reads the depth pass and the
+// min-max chain; the query form its query, blur and composite passes; the
+// deferred form its deferred pass; the function form no pass of its own.
+bool form_reads_pass(Form form, PassKind pass);
 
 // Whether `technique` has a function form (docs/function-form.md) and a
 // deferred pass (docs/deferred-mask.md): every technique but screen_blur,
-// whose blur passes follow the query, and the two back-projections, which
-// verify cannot yet judge on a camera's receivers (docs/function-form.md).
+// whose blur passes follow the query.
 bool has_function_form(Technique technique);
+// Whether `technique` has `form`: every technique the query form, and those
+// with has_function_form() the deferred and function forms.
+bool has_form(Technique technique, Form form);
+// Whether `variant` is built in `form`: it asks for it and its technique has it.
+bool builds_form(const Variant& variant, Form form);
+// The forms `variant` is built in, in kAllForms order.
+std::vector<Form> built_forms(const Variant& variant);
+// Why `variant` has no `form`, for messages ("built without the query form
+// (its forms: function)", "technique screen_blur has no function form"), or
+// empty when it is built in it.
+std::string form_not_built(const Variant& variant, Form form);
 
 }  // namespace penumbra

@@ -68,6 +68,13 @@ struct EmbeddedProgram {
   BlobRange reflection;
 };
 
+// One variant as `penumbra embed` writes it: the forms it was built in
+// (index.json's "forms"), bit Form set for each.
+struct EmbeddedVariant {
+  const char* name;
+  unsigned forms;
+};
+
 // One function form as `penumbra embed` writes it.
 struct EmbeddedFunction {
   const char* variant;
@@ -80,11 +87,12 @@ struct EmbeddedFunction {
 // writes one per group): the pieces of its blob, in order, each under every
 // compiler's string literal limit, its programs, which index that blob,
 // ordered by variant name, target and pass, and its function forms,
-// ordered by variant name and target.
+// ordered by variant name and target, and its variants, ordered by name.
 struct EmbeddedPart {
   std::span<const std::string_view> blob;
   std::span<const EmbeddedProgram> programs;
   std::span<const EmbeddedFunction> functions = {};
+  std::span<const EmbeddedVariant> variants = {};
 };
 
 // The lookup over every part. Constructing it copies nothing: a part's
@@ -112,6 +120,17 @@ class Library {
   const Function* find_function(Technique technique, const VariantKeys& keys, Target target) const;
   // The same by the variant's name.
   const Function* find_function(std::string_view variant, Target target) const;
+
+  // The forms the variant was built in, in kAllForms order (`penumbra build
+  // --form`, the manifest's "forms"); empty when the library does not hold it.
+  std::vector<Form> forms(std::string_view variant) const;
+  // Why find() finds no program, for a message: the variant is not in the
+  // library, was built without the form the pass belongs to (naming the
+  // forms it has), or has no such pass for `target`. Empty when it is found.
+  std::string why_not_found(std::string_view variant, Target target,
+                            PassKind pass = PassKind::query) const;
+  // The same for find_function().
+  std::string why_no_function(std::string_view variant, Target target) const;
 
   // How many programs the library holds, without building any.
   std::size_t size() const;
