@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 #include <thread>
 
@@ -127,6 +128,7 @@ struct BuildArgs {
   bool keep_going = false;
   bool quiet = false;
   bool verbose = false;
+  bool profile = false;  // --profile: each stage's time after the summary
 };
 
 // The manifest's variants that --variant, --target, --form and --group select.
@@ -179,7 +181,24 @@ Result<std::pair<BuildSummary, bool>> build_or_reuse(
   return std::pair{std::move(summary), false};
 }
 
+// --profile's table: where the build's thread-seconds went, stage by stage.
+void print_profile(const BuildSummary& summary, double wall_seconds, int jobs) {
+  double total = 0.0;
+  for (const StageTime& row : summary.profile) total += row.seconds;
+  std::printf("profile: %.2f s wall on %d threads, %.2f thread-s in stages\n", wall_seconds, jobs,
+              total);
+  std::printf("%-16s %10s %8s %8s %12s\n", "stage", "thread-s", "share", "runs", "ms/run");
+  for (const StageTime& row : summary.profile) {
+    const double share = total > 0.0 ? 100.0 * row.seconds / total : 0.0;
+    const double per_run =
+        row.shaders > 0 ? 1000.0 * row.seconds / static_cast<double>(row.shaders) : 0.0;
+    std::printf("%-16s %10.3f %7.1f%% %8zu %12.3f\n", row.stage.c_str(), row.seconds, share,
+                row.shaders, per_run);
+  }
+}
+
 Status run_build(const BuildArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
   PENUMBRA_TRY(check_outputs(args.out, args.depfile));
   PENUMBRA_TRY_ASSIGN(const std::vector<Variant> variants, selected_variants(args));
   PENUMBRA_TRY_ASSIGN(const std::filesystem::path compiler, find_hlsl_compiler(args.hlsl_compiler));
@@ -200,6 +219,10 @@ Status run_build(const BuildArgs& args) {
     std::cout << "built " << summary.variants << " variants (" << summary.files << " shader files, "
               << summary.bytecode << " bytecode files, " << summary.cached
               << " shaders from the cache) into " << args.out << "\n";
+  }
+  if (args.profile && !current) {
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+    print_profile(summary, wall.count(), args.jobs);
   }
   if (compiler.empty() && has_hlsl(variants)) {
     std::cerr << "penumbra: no Direct3D bytecode made: no HLSL compiler (give --hlsl-compiler "
@@ -249,6 +272,9 @@ void add_build_command(CLI::App& app, int& exit_code) {
   auto* quiet =
       cmd->add_flag("-q,--quiet", args->quiet, "Print only warnings and errors (no summary line)");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress notes")->excludes(quiet);
+  cmd->add_flag("--profile", args->profile,
+                "After building, print the thread-seconds each stage took, the cache's and "
+                "index.json's (docs/performance.md)");
   cmd->callback([args, &exit_code] {
     const Status s = run_build(*args);
     exit_code = s ? kExitOk : report(s.error());

@@ -94,6 +94,26 @@ TEST_F(BuildOptions, QuietPrintsNoSummaryButKeepsWarnings) {
   EXPECT_TRUE(std::filesystem::exists(out() / "index.json"));
 }
 
+// --profile: a row per stage that ran, each with the shaders it ran on, then
+// the index's, whose runs are the variant records; even with -q.
+TEST_F(BuildOptions, ProfileSaysWhereTheTimeWent) {
+  const CliRun run = build("-q --profile --no-cache");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("profile: "));
+  const auto runs_of = [&](const std::string& stage) {
+    std::smatch match;
+    const std::regex row("\n" + stage + " +[0-9.]+ +[0-9.]+% +([0-9]+) ");
+    return std::regex_search(run.out, match, row) ? std::stoi(match[1]) : -1;
+  };
+  const int shaders = runs_of("preprocess");
+  EXPECT_GT(shaders, 0) << run.out;
+  for (const char* stage : {"compile", "validate", "optimize", "cross-compile", "write"}) {
+    EXPECT_EQ(runs_of(stage), shaders) << stage << "\n" << run.out;
+  }
+  EXPECT_EQ(runs_of("index"), 3) << run.out;  // the manifest's three variants
+  EXPECT_EQ(runs_of("cache"), -1) << "--no-cache: no cache row\n" << run.out;
+}
+
 TEST_F(BuildOptions, QuietAndVerboseExcludeEachOther) {
   const CliRun run = build("-q -v");
   EXPECT_EQ(run.exit_code, 2);

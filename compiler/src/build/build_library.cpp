@@ -179,11 +179,14 @@ Result<BuildSummary> build_library(std::span<const Variant> variants,
   }
   std::set<std::string> inputs;
   for (const std::string& path : index.inputs()) inputs.insert(shaderlib->location(path));
-  return BuildSummary{variants.size(),
-                      jobs.size(),
-                      index.bytecode(),
-                      index.cached(),
-                      {inputs.begin(), inputs.end()}};
+  std::vector<StageTime> profile = pipeline.profile();
+  profile.push_back({"index", index.seconds(), index.written()});
+  return BuildSummary{.variants = variants.size(),
+                      .files = jobs.size(),
+                      .bytecode = index.bytecode(),
+                      .cached = index.cached(),
+                      .inputs = {inputs.begin(), inputs.end()},
+                      .profile = std::move(profile)};
 }
 
 Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKind pass,

@@ -1,5 +1,7 @@
 #include "build/pipeline.hpp"
 
+#include <chrono>
+
 #include "cache/shader_cache.hpp"
 #include "stages/stages.hpp"
 #include "vkd3d/run_vkd3d.hpp"
@@ -41,29 +43,66 @@ Pipeline::Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
   stages_.push_back(std::make_unique<CrossCompileStage>());
   stages_.push_back(std::make_unique<ReflectStage>());
   stages_.push_back(std::make_unique<ExtractFunctionStage>());
-  if (!write_root_) return;
-  stages_.push_back(std::make_unique<WriteStage>(*write_root_));
-  if (!hlsl.compiler.empty()) {
-    stages_.push_back(std::make_unique<BytecodeStage>(*write_root_, hlsl));
+  if (write_root_) {
+    stages_.push_back(std::make_unique<WriteStage>(*write_root_));
+    if (!hlsl.compiler.empty()) {
+      stages_.push_back(std::make_unique<BytecodeStage>(*write_root_, hlsl));
+    }
+    if (!cache_dir.empty()) {
+      cache_ = std::make_unique<ShaderCache>(cache_dir, cache_toolchain(hlsl));
+    }
   }
-  if (!cache_dir.empty()) cache_ = std::make_unique<ShaderCache>(cache_dir, cache_toolchain(hlsl));
+  clocks_ = std::make_unique<StageClock[]>(stages_.size() + 1);
 }
 
 Pipeline::~Pipeline() = default;
 
+template <typename Work>
+auto Pipeline::timed(std::size_t i, Work&& work, bool counted) const {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = work();
+  const auto spent = std::chrono::steady_clock::now() - start;
+  clocks_[i].nanoseconds += std::chrono::duration_cast<std::chrono::nanoseconds>(spent).count();
+  if (counted) ++clocks_[i].runs;
+  return result;
+}
+
 Status Pipeline::run(ShaderJob& job) const {
-  PENUMBRA_TRY(run_stage(*stages_.front(), job));
+  PENUMBRA_TRY(timed(0, [&] { return run_stage(*stages_.front(), job); }));
+  const std::size_t cache_clock = stages_.size();
   std::string key;
   if (cache_) {
-    key = cache_->key(job);
-    if (cache_->restore(key, job, *write_root_)) {
+    const bool restored = timed(cache_clock, [&] {
+      key = cache_->key(job);
+      return cache_->restore(key, job, *write_root_);
+    });
+    if (restored) {
       job.from_cache = true;
       return {};
     }
   }
-  for (std::size_t i = 1; i < stages_.size(); ++i) PENUMBRA_TRY(run_stage(*stages_[i], job));
-  if (cache_) cache_->store(key, job, *write_root_);
+  for (std::size_t i = 1; i < stages_.size(); ++i) {
+    PENUMBRA_TRY(timed(i, [&] { return run_stage(*stages_[i], job); }));
+  }
+  if (cache_) {
+    const auto store = [&] {
+      cache_->store(key, job, *write_root_);
+      return true;
+    };
+    timed(cache_clock, store, /*counted=*/false);  // counted when it was looked up
+  }
   return {};
+}
+
+std::vector<StageTime> Pipeline::profile() const {
+  std::vector<StageTime> out;
+  const auto row = [&](std::string_view name, std::size_t i) {
+    const double seconds = static_cast<double>(clocks_[i].nanoseconds.load()) * 1e-9;
+    out.push_back({std::string(name), seconds, clocks_[i].runs.load()});
+  };
+  for (std::size_t i = 0; i < stages_.size(); ++i) row(stages_[i]->name(), i);
+  if (cache_) row("cache", stages_.size());
+  return out;
 }
 
 }  // namespace penumbra

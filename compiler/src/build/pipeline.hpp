@@ -1,6 +1,8 @@
 // The ordered stages a ShaderJob runs through.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -29,10 +31,25 @@ class Pipeline {
   // then `job.from_cache` is set.
   Status run(ShaderJob& job) const;
 
+  // The time each stage took over every run() so far, in stage order, then
+  // the cache's ("cache": keying, restoring, storing) when there is one.
+  std::vector<StageTime> profile() const;
+
  private:
+  // One stage's clock, added to by every worker thread.
+  struct StageClock {
+    std::atomic<std::int64_t> nanoseconds{0};
+    std::atomic<std::size_t> runs{0};
+  };
+  // Runs `work` on the clock of stage `i` (stages_.size(): the cache), and
+  // counts one shader there when `counted`.
+  template <typename Work>
+  auto timed(std::size_t i, Work&& work, bool counted = true) const;
+
   std::vector<std::unique_ptr<Stage>> stages_;  // preprocess first
   std::optional<std::filesystem::path> write_root_;
   std::unique_ptr<ShaderCache> cache_;
+  std::unique_ptr<StageClock[]> clocks_;  // per stage, then the cache
 };
 
 }  // namespace penumbra

@@ -1,6 +1,7 @@
 #include "build/streamed_index.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 namespace penumbra {
 
@@ -31,6 +32,7 @@ void StreamedIndex::finished(std::size_t i) {
   --left_[owner_[i]];
   // Every record needs the shared shaders: nothing before they are done.
   if (left_[variants_.size()] != 0) return;
+  const auto start = std::chrono::steady_clock::now();
   while (written_ < variants_.size() && left_[written_] == 0) {
     const Variant& variant = variants_[written_];
     index_.add(resolve_variant(variant, table_));
@@ -40,13 +42,17 @@ void StreamedIndex::finished(std::size_t i) {
     }
     ++written_;
   }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::string StreamedIndex::finish() {
+  const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < jobs_.size(); ++i) {
     if (owner_[i] == variants_.size()) take(jobs_[i]);
   }
-  return index_.finish();
+  std::string text = index_.finish();
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return text;
 }
 
 }  // namespace penumbra

@@ -28,6 +28,9 @@ class StreamedIndex {
 
   std::size_t bytecode() const { return bytecode_; }  // bytecode files
   std::size_t cached() const { return cached_; }      // jobs restored from the cache
+  std::size_t written() const { return written_; }    // variant records written
+  // Seconds spent writing records and index.json's text, under the lock.
+  double seconds() const { return seconds_; }
   // The shaderlib files the jobs read (paths relative to the shaderlib).
   const std::set<std::string>& inputs() const { return inputs_; }
 
@@ -45,6 +48,7 @@ class StreamedIndex {
   std::size_t written_ = 0;             // variants given to the index so far
   std::size_t bytecode_ = 0;
   std::size_t cached_ = 0;
+  double seconds_ = 0.0;
   std::set<std::string> inputs_;
   std::mutex mutex_;
 };

@@ -54,6 +54,14 @@ struct BuildOptions {
   std::function<void(std::size_t, std::size_t)> progress = {};
 };
 
+// Where a build's time went, one row per pipeline stage (penumbra build
+// --profile, docs/performance.md): seconds summed over the worker threads.
+struct StageTime {
+  std::string stage;        // a Stage's name(), "cache" (keying, restoring, storing) or "index"
+  double seconds = 0.0;     // thread-seconds spent in it
+  std::size_t shaders = 0;  // how many shaders ran it (for "index": variant records written)
+};
+
 struct BuildSummary {
   std::size_t variants = 0;  // variants written
   std::size_t files = 0;     // shader files written (text or SPIR-V)
@@ -62,6 +70,9 @@ struct BuildSummary {
   // The shaderlib files the built shaders read, as the source's locations
   // (ShaderlibSource::location), sorted and unique: a build's dependencies.
   std::vector<std::string> inputs;
+  // Each stage's time, in pipeline order, then the cache's and index.json's;
+  // empty for a build the cache's stamp found current.
+  std::vector<StageTime> profile;
 };
 
 // A kind of folder that penumbra replaces whole, for the messages and the
