@@ -132,11 +132,25 @@ PassFiles pass_files_from_json(const json& j) {
   return read;
 }
 
+// A constant texture of a shared reflection record: the variant that refers
+// to the record fills it from its own disk.
+struct ConstantTexture {
+  bool vertex = false;    // in the record's vert stage, else its frag stage
+  std::size_t index = 0;  // in that stage's textures
+  TextureId id = TextureId::pcf_disk;
+};
+
+// A reflection record as index.json shares it: constant textures empty.
+struct SharedReflection {
+  PassReflection reflection;
+  std::vector<ConstantTexture> constants;
+};
+
 // index.json's shared tables, read once; variants refer to their records by
 // position.
 struct SharedTables {
   std::vector<PassFiles> pass_files;
-  std::vector<PassReflection> reflections;
+  std::vector<SharedReflection> reflections;
   std::vector<Disk> disks;
 };
 
@@ -155,6 +169,39 @@ Result<const Record*> resolve(const std::filesystem::path& file, const json& ref
   return &table[ref.get<std::size_t>()];
 }
 
+// Takes each constant texture's `contents` out of reflection record `record`
+// (at `at`): {"disk": "pcf"}, the disk of the variant that refers to it.
+Status take_constants(const std::filesystem::path& file, const std::string& at, json& record,
+                      std::vector<ConstantTexture>& constants) {
+  for (const char* stage : {"vert", "frag"}) {
+    if (!record.is_object() || !record.contains(stage) || !record[stage].is_object() ||
+        !record[stage].contains("textures") || !record[stage]["textures"].is_array()) {
+      continue;
+    }
+    json& textures = record[stage]["textures"];
+    for (std::size_t t = 0; t < textures.size(); ++t) {
+      if (!textures[t].is_object() || !textures[t].contains("contents")) continue;
+      const std::string where = at + "/" + stage + "/textures/" + std::to_string(t);
+      const json& contents = textures[t]["contents"];
+      const json name = textures[t].value("name", json());
+      const TextureDescription* texture =
+          name.is_string() ? find_bound_texture(name.get<std::string>()) : nullptr;
+      if (!texture || contents_disk(texture->id).empty()) {
+        return index_error(file, where + "/name",
+                           "contents for " + shorten(name.dump()) +
+                               ", which is no constant texture; allowed: pcf_disk, blocker_disk");
+      }
+      const std::string disk(contents_disk(texture->id));
+      if (!contents.is_object() || contents.size() != 1 || contents.value("disk", json()) != disk) {
+        return type_error(file, where + "/contents", "{\"disk\": \"" + disk + "\"}", contents);
+      }
+      constants.push_back({std::strcmp(stage, "vert") == 0, t, texture->id});
+      textures[t].erase("contents");
+    }
+  }
+  return {};
+}
+
 Result<SharedTables> read_tables(const std::filesystem::path& file, const json& j) {
   SharedTables out;
   const json& pass_files = j.at("pass_files");
@@ -167,32 +214,19 @@ Result<SharedTables> read_tables(const std::filesystem::path& file, const json& 
           "malformed pass files (docs/shader-interface.md): " + json_exception_text(e));
     }
   }
-  // Each record's constant textures refer to texture_contents by position (a
-  // malformed one is reported at the record that uses it).
-  const json& contents_table = j.at("texture_contents");
-  const std::vector<json> contents(contents_table.begin(), contents_table.end());
   const json& reflections = j.at("reflections");
   for (std::size_t i = 0; i < reflections.size(); ++i) {
     const std::string at = "/reflections/" + std::to_string(i);
     json record = reflections[i];
-    for (const char* stage : {"vert", "frag"}) {
-      if (!record.contains(stage) || !record[stage].contains("textures")) continue;
-      json& textures = record[stage]["textures"];
-      for (std::size_t t = 0; t < textures.size(); ++t) {
-        if (!textures[t].is_object() || !textures[t].contains("contents")) continue;
-        auto texels = resolve(file, textures[t]["contents"],
-                              at + "/" + stage + "/textures/" + std::to_string(t) + "/contents",
-                              contents, "texture_contents");
-        if (!texels) return texels.error();
-        textures[t]["contents"] = **texels;
-      }
-    }
+    SharedReflection shared;
+    PENUMBRA_TRY(take_constants(file, at, record, shared.constants));
     try {
-      out.reflections.push_back(record.get<PassReflection>());
+      shared.reflection = record.get<PassReflection>();
     } catch (const json::exception& e) {
       return index_error(
           file, at, "malformed reflection (docs/shader-interface.md): " + json_exception_text(e));
     }
+    out.reflections.push_back(std::move(shared));
   }
   const json& disks = j.at("disks");
   for (std::size_t i = 0; i < disks.size(); ++i) {
@@ -245,6 +279,27 @@ Status read_forms(const std::filesystem::path& file, const json& j, const std::s
   }
   v.forms = built_forms(v);  // in kAllForms order, each once
   return {};
+}
+
+// Shared reflection record `ref` (at `path`) with `variant`'s disks in its
+// constant textures.
+Result<PassReflection> variant_reflection(const std::filesystem::path& file, const json& ref,
+                                          const std::string& path, const SharedTables& tables,
+                                          const Variant& variant) {
+  PENUMBRA_TRY_ASSIGN(const SharedReflection* shared,
+                      resolve(file, ref, path, tables.reflections, "reflections"));
+  PassReflection out = shared->reflection;
+  for (const ConstantTexture& constant : shared->constants) {
+    TextureBinding& texture = (constant.vertex ? out.vert : out.frag).textures[constant.index];
+    texture.contents = texture_contents(constant.id, variant);
+    if (!texture.contents) {
+      return index_error(file, path,
+                         "record " + ref.dump() + "'s texture '" + texture.name + "' holds the " +
+                             std::string(contents_disk(constant.id)) +
+                             " disk, and this variant has none in its /disks");
+    }
+  }
+  return out;
 }
 
 Result<LibraryVariant> read_variant(const std::filesystem::path& file, const json& j,
@@ -337,9 +392,8 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
       if (!j.contains(pointer)) {
         return index_error(file, path + at, "missing; every pass and target in /passes has one");
       }
-      auto reflection = resolve(file, j.at(pointer), path + at, tables.reflections, "reflections");
-      if (!reflection) return reflection.error();
-      out.reflection[pass][*target] = **reflection;
+      PENUMBRA_TRY_ASSIGN(out.reflection[pass][*target],
+                          variant_reflection(file, j.at(pointer), path + at, tables, v));
     }
   }
   if (!j.contains("function")) return out;
@@ -356,10 +410,9 @@ Result<LibraryVariant> read_variant(const std::filesystem::path& file, const jso
     PENUMBRA_TRY_ASSIGN(const json* path_json, member(file, form, at, "file"));
     PENUMBRA_TRY_ASSIGN(const std::string function_file, string_at(file, *path_json, at + "/file"));
     PENUMBRA_TRY_ASSIGN(const json* position, member(file, form, at, "reflection"));
-    auto reflection =
-        resolve(file, *position, at + "/reflection", tables.reflections, "reflections");
-    if (!reflection) return reflection.error();
-    out.function[*target] = {function_file, **reflection};
+    PENUMBRA_TRY_ASSIGN(PassReflection reflection,
+                        variant_reflection(file, *position, at + "/reflection", tables, v));
+    out.function[*target] = {function_file, std::move(reflection)};
   }
   return out;
 }

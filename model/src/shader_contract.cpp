@@ -235,6 +235,12 @@ const TextureDescription& describe(TextureId texture) {
   return kTextures[static_cast<std::size_t>(texture)];
 }
 
+std::string_view contents_disk(TextureId texture) {
+  if (texture == TextureId::pcf_disk) return "pcf";
+  if (texture == TextureId::blocker_disk) return "blocker";
+  return {};
+}
+
 std::optional<TextureContents> texture_contents(TextureId texture, const Variant& variant) {
   const std::optional<Disk>* disk = texture == TextureId::pcf_disk       ? &variant.pcf_disk
                                     : texture == TextureId::blocker_disk ? &variant.blocker_disk

@@ -76,7 +76,7 @@ TEST(LoadLibrary, NumbersThatDoNotFitTheirFieldAreErrors) {
   EXPECT_THAT(huge.error().to_string(), HasSubstr("is not a number that fits its field"));
   const std::string hard = seed("hard.json");
   std::string schema = hard;
-  schema.replace(schema.find("\"schema\": 3"), 11, "\"schema\": 1e300");
+  schema.replace(schema.find("\"schema\": 4"), 11, "\"schema\": 1e300");
   const auto bad_schema = parse_library(schema, "lib");
   ASSERT_FALSE(bad_schema.ok());
   EXPECT_THAT(bad_schema.error().to_string(), HasSubstr("/schema"));

@@ -13,11 +13,11 @@
 namespace penumbra {
 namespace {
 
-// A top-level table of index.json (`pass_files`, `reflections`,
-// `texture_contents`, `disks`): each distinct record once; variants refer to
-// a record by its position. Most records are shared: the depth and min-max
-// passes of every variant, the query pass's reflection of variants that
-// differ only in baked constants, a disk that variants bake.
+// A top-level table of index.json (`pass_files`, `reflections`, `disks`):
+// each distinct record once; variants refer to a record by its position.
+// Most records are shared: the depth and min-max passes of every variant, the
+// reflection of variants that differ only in baked constants or disks, a disk
+// that variants bake.
 // Records are kept as text: a parsed record takes several times the memory.
 class SharedTable {
  public:
@@ -58,7 +58,6 @@ nlohmann::json files_json(const ShaderJob* vert, const ShaderJob* frag) {
 struct IndexWriter::Tables {
   SharedTable pass_files;
   SharedTable reflections;
-  SharedTable texture_contents;
   SharedTable disks;
 };
 
@@ -137,23 +136,6 @@ ResolvedVariant resolve_variant(const Variant& variant, const JobTable& jobs) {
   return out;
 }
 
-namespace {
-
-// Reflection record `position` of `index`, its constant textures' contents in place.
-nlohmann::json resolve_record(const nlohmann::json& index, const nlohmann::json& position) {
-  nlohmann::json record = index.at("reflections").at(position.get<std::size_t>());
-  for (const char* stage : kStages) {
-    if (!record[stage].contains("textures")) continue;
-    for (nlohmann::json& texture : record[stage]["textures"]) {
-      if (!texture.contains("contents")) continue;
-      texture["contents"] = index.at("texture_contents").at(texture["contents"].get<std::size_t>());
-    }
-  }
-  return record;
-}
-
-}  // namespace
-
 ResolvedVariant resolve_variant(const nlohmann::json& index, std::size_t i) {
   nlohmann::json out = index.at("variants").at(i);
   for (auto& [role, position] : out["disks"].items()) {
@@ -164,12 +146,15 @@ ResolvedVariant resolve_variant(const nlohmann::json& index, std::size_t i) {
       position = index.at("pass_files").at(position.get<std::size_t>());
     }
   }
+  const nlohmann::json& reflections = index.at("reflections");
   for (auto& [pass, by_target] : out["reflection"].items()) {
-    for (auto& [target, position] : by_target.items()) position = resolve_record(index, position);
+    for (auto& [target, position] : by_target.items()) {
+      position = reflections.at(position.get<std::size_t>());
+    }
   }
   if (out.contains("function")) {
     for (auto& [target, form] : out["function"].items()) {
-      form["reflection"] = resolve_record(index, form["reflection"]);
+      form["reflection"] = reflections.at(form["reflection"].get<std::size_t>());
     }
   }
   return out;
@@ -209,8 +194,10 @@ void IndexWriter::share_record(nlohmann::json& record) {
   for (const char* stage : kStages) {
     if (!record[stage].contains("textures")) continue;
     for (nlohmann::json& texture : record[stage]["textures"]) {
-      if (!texture.contains("contents")) continue;
-      texture["contents"] = tables_->texture_contents.add(texture["contents"]);
+      if (!texture.contains("contents") || texture["contents"].contains("disk")) continue;
+      // The reflect stage gives contents only to the disk textures.
+      const TextureDescription* described = find_bound_texture(texture["name"].get<std::string>());
+      texture["contents"] = {{"disk", contents_disk(described->id)}};
     }
   }
   record = tables_->reflections.add(record);
@@ -253,7 +240,6 @@ std::string IndexWriter::finish() {
   append_array(out, "pass_files", tables_->pass_files.records());
   append_array(out, "reflections", tables_->reflections.records());
   out += ",\n  \"schema\": " + std::to_string(kIndexSchema);
-  append_array(out, "texture_contents", tables_->texture_contents.records());
   std::vector<const std::string*> variants;
   for (const std::string& variant : variants_) variants.push_back(&variant);
   append_array(out, "variants", variants);

@@ -17,7 +17,8 @@ nlohmann::json variant_keys_json(const VariantKeys& keys);
 
 // A variant's record with nothing shared: `disks`, `passes` and `reflection`
 // hold their records themselves instead of positions in index.json's
-// top-level tables (constant textures keep their `contents`).
+// top-level tables (a constant texture's `contents` is its texels, from a
+// build, or the disk it holds, from an index.json).
 using ResolvedVariant = nlohmann::json;
 
 // The finished jobs of a build, found by what they are.
@@ -58,7 +59,8 @@ class IndexWriter {
  private:
   struct Tables;
   // Replaces a reflection record with its position in `reflections`, its
-  // constant textures' contents with theirs in `texture_contents`.
+  // constant textures' contents with the variant's disk they hold
+  // ({"disk": "pcf"}), so that records differing only in disks are one.
   void share_record(nlohmann::json& record);
 
   std::unique_ptr<Tables> tables_;

@@ -49,10 +49,13 @@ struct LibraryVariant {
   std::map<Target, FunctionForm> function;  // the text targets, for techniques that have one
 };
 
-// index.json's `schema`: 3 since identical reflection records and disks are
-// stored once, in the top-level `reflections` and `disks` tables, and each
-// variant refers to them by position (2 repeated them in every variant).
-inline constexpr int kIndexSchema = 3;
+// index.json's `schema`: 4 since a constant texture's contents name the
+// variant's disk, so records that differ only in their disks are one (3 kept
+// the texels in a `texture_contents` table, one record per disk); since 3
+// identical reflection records and disks are stored once, in the top-level
+// `reflections` and `disks` tables, and each variant refers to them by
+// position (2 repeated them in every variant).
+inline constexpr int kIndexSchema = 4;
 
 struct Library {
   std::filesystem::path root;

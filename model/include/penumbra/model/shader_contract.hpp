@@ -96,6 +96,9 @@ struct TextureContents {
 // The contents of constant texture `texture` for `variant` (a disk: point i
 // at texel (i, 0)); none when the variant has no such data.
 std::optional<TextureContents> texture_contents(TextureId texture, const Variant& variant);
+// The disk constant texture `texture` holds, as index.json's variant "disks"
+// names it ("pcf", "blocker"); empty for any other texture.
+std::string_view contents_disk(TextureId texture);
 std::span<const TextureDescription> all_textures();
 // The texture named `name` in the text, or none.
 const TextureDescription* find_texture(std::string_view name);
