@@ -2,12 +2,19 @@
 
 #include <chrono>
 
+#include "build/module_memo.hpp"
 #include "cache/shader_cache.hpp"
 #include "stages/stages.hpp"
 #include "vkd3d/run_vkd3d.hpp"
 
 namespace penumbra {
 namespace {
+
+// stages_[1, 1 + kModuleStages): compile, validate, optimize.
+constexpr std::size_t kModuleStages = 3;
+// Modules remembered for the jobs after: one variant's targets follow each
+// other in plan order, a few jobs apart.
+constexpr std::size_t kRememberedModules = 64;
 
 Status run_stage(const Stage& stage, ShaderJob& job) {
   Status status = stage.process(job);
@@ -40,6 +47,7 @@ Pipeline::Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
   stages_.push_back(std::make_unique<CompileStage>(std::move(shaderlib)));
   stages_.push_back(std::make_unique<ValidateStage>());
   stages_.push_back(std::make_unique<OptimizeStage>());
+  stages_.push_back(std::make_unique<BannerStage>());
   stages_.push_back(std::make_unique<CrossCompileStage>());
   stages_.push_back(std::make_unique<ReflectStage>());
   stages_.push_back(std::make_unique<ExtractFunctionStage>());
@@ -52,7 +60,8 @@ Pipeline::Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
       cache_ = std::make_unique<ShaderCache>(cache_dir, cache_toolchain(hlsl));
     }
   }
-  clocks_ = std::make_unique<StageClock[]>(stages_.size() + 1);
+  modules_ = std::make_unique<ModuleMemo>(kRememberedModules);
+  clocks_ = std::make_unique<StageClock[]>(stages_.size() + 2);
 }
 
 Pipeline::~Pipeline() = default;
@@ -81,9 +90,8 @@ Status Pipeline::run(ShaderJob& job) const {
       return {};
     }
   }
-  for (std::size_t i = 1; i < stages_.size(); ++i) {
-    PENUMBRA_TRY(timed(i, [&] { return run_stage(*stages_[i], job); }));
-  }
+  PENUMBRA_TRY(make_module(job));
+  PENUMBRA_TRY(run_stages(1 + kModuleStages, stages_.size(), job));
   if (cache_) {
     const auto store = [&] {
       cache_->store(key, job, *write_root_);
@@ -94,6 +102,32 @@ Status Pipeline::run(ShaderJob& job) const {
   return {};
 }
 
+Status Pipeline::run_stages(std::size_t first, std::size_t last, ShaderJob& job) const {
+  for (std::size_t i = first; i < last; ++i) {
+    PENUMBRA_TRY(timed(i, [&] { return run_stage(*stages_[i], job); }));
+  }
+  return {};
+}
+
+// A failed module is not remembered: each job that needs it fails with an
+// error naming its own target.
+Status Pipeline::make_module(ShaderJob& job) const {
+  const std::size_t memo_clock = stages_.size() + 1;
+  std::string key;
+  const auto find = [&] {
+    key = module_key(job);
+    return modules_->find(key);
+  };
+  if (std::optional<std::vector<std::uint32_t>> made = timed(memo_clock, find, false)) {
+    job.spirv = std::move(*made);
+    ++clocks_[memo_clock].runs;
+    return {};
+  }
+  PENUMBRA_TRY(run_stages(1, 1 + kModuleStages, job));
+  modules_->add(key, job.spirv);
+  return {};
+}
+
 std::vector<StageTime> Pipeline::profile() const {
   std::vector<StageTime> out;
   const auto row = [&](std::string_view name, std::size_t i) {
@@ -101,6 +135,7 @@ std::vector<StageTime> Pipeline::profile() const {
     out.push_back({std::string(name), seconds, clocks_[i].runs.load()});
   };
   for (std::size_t i = 0; i < stages_.size(); ++i) row(stages_[i]->name(), i);
+  row("shared-module", stages_.size() + 1);
   if (cache_) row("cache", stages_.size());
   return out;
 }

@@ -41,7 +41,6 @@ Status CompileStage::process(ShaderJob& job) const {
   if (job.variant) name_baked_constants(job.spirv, *job.variant);
   if (job.form == ShaderForm::function)
     prefix_global_names(job.spirv, std::string(kFunctionPrefix));
-  add_banner_string(job.spirv, job.banner());
   return {};
 }
 

@@ -24,7 +24,8 @@ class PreprocessStage final : public Stage {
 };
 
 // Compiles the preprocessed GLSL to SPIR-V 1.0 with glslang, in process. Its
-// errors are located in the shaderlib file and line they are about.
+// errors are located in the shaderlib file and line they are about. The
+// module it makes depends on what module_key() names, not on the target.
 class CompileStage final : public Stage {
  public:
   explicit CompileStage(std::shared_ptr<const ShaderlibSource> shaderlib)
@@ -44,10 +45,18 @@ class ValidateStage final : public Stage {
 };
 
 // Runs spirv-opt passes that remove dead code but keep names and functions,
-// so that cross-compiled text stays readable; re-validates the result.
+// so that cross-compiled text stays readable.
 class OptimizeStage final : public Stage {
  public:
   std::string_view name() const override { return "optimize"; }
+  Status process(ShaderJob& job) const override;
+};
+
+// Heads the module with the job's banner, an OpString naming variant, target,
+// pass and stage: the first of the stages that are the target's own.
+class BannerStage final : public Stage {
+ public:
+  std::string_view name() const override { return "banner"; }
   Status process(ShaderJob& job) const override;
 };
 
