@@ -6,7 +6,9 @@
 // unless --bytecode), the chain at the same parallelism, a build into a new
 // OUT from a warm cache, a rebuild that does nothing, each build's peak RSS,
 // index.json's bytes per variant and, with --groups, a split build joined by
-// `penumbra merge` and compared with the single build byte for byte.
+// `penumbra merge` and compared with the single build byte for byte. With
+// --cold-only, for a manifest too large for all that: cold builds alone, in
+// every form, in each --form, and by a --baseline executable (build_cold.hpp).
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -29,6 +31,8 @@
 
 #include "bench_child.hpp"
 #include "bench_files.hpp"
+#include "build_cold.hpp"
+#include "build_runs.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/library/library.hpp"
@@ -47,11 +51,14 @@ double seconds_since(Clock::time_point start) {
 
 struct Options {
   std::vector<std::filesystem::path> manifests;
-  int jobs = 1;           // N: build threads, chain workers and group processes at once
-  int chain_sample = 1;   // the chain runs on every K-th shader; its time is scaled up
-  int groups = 0;         // split build: G `penumbra build --group I/G`; 0: none
-  bool bytecode = false;  // also a cold build with vkd3d-compiler, timed apart
-  bool skip_j1 = false;   // no -j1 build or chain (manifests too large to build twice)
+  int jobs = 1;                    // N: build threads, chain workers and group processes at once
+  int chain_sample = 1;            // the chain runs on every K-th shader; its time is scaled up
+  int groups = 0;                  // split build: G `penumbra build --group I/G`; 0: none
+  bool bytecode = false;           // also a cold build with vkd3d-compiler, timed apart
+  bool skip_j1 = false;            // no -j1 build or chain (manifests too large to build twice)
+  bool cold_only = false;          // cold builds only, side by side (build_cold.hpp)
+  std::vector<std::string> forms;  // with cold_only: also a build in each form alone
+  std::filesystem::path baseline;  // with cold_only: also this executable's build
   std::filesystem::path hlsl_compiler = {};  // with --bytecode
   std::filesystem::path penumbra = {};       // the executable measured (bench::penumbra_executable)
 };
@@ -65,11 +72,11 @@ struct TempDir {
   }
 };
 
-using bench::ChildRun;
+using bench::BuildRunner;
+using bench::Measured;
+using bench::print_row;
 using bench::read_text;
 using bench::run_child;
-
-using bench::Environment;
 
 // A program on PATH, as a path (posix_spawn does not search).
 std::filesystem::path find_program(const std::string& name) {
@@ -81,78 +88,6 @@ std::filesystem::path find_program(const std::string& name) {
   }
   return {};
 }
-
-// `penumbra build`'s summary line: "built V variants (F shader files, B
-// bytecode files, C shaders from the cache) into OUT".
-struct BuildCounts {
-  std::size_t variants = 0;
-  std::size_t files = 0;
-  std::size_t bytecode = 0;
-  std::size_t cached = 0;
-  bool up_to_date = false;  // "OUT is up to date": nothing built
-};
-
-BuildCounts parse_summary(const std::string& output) {
-  BuildCounts counts;
-  counts.up_to_date = output.find(" is up to date\n") != std::string::npos;
-  const std::size_t line = output.rfind("built ");
-  if (line != std::string::npos) {
-    std::sscanf(output.c_str() + line,
-                "built %zu variants (%zu shader files, %zu bytecode files, %zu shaders from",
-                &counts.variants, &counts.files, &counts.bytecode, &counts.cached);
-  }
-  return counts;
-}
-
-// One run of `penumbra`, or of several at once (a split build).
-struct Measured {
-  double seconds = 0.0;
-  long peak_rss_kb = 0;
-  BuildCounts counts;
-};
-
-class Bench {
- public:
-  Bench(std::filesystem::path root, std::filesystem::path penumbra)
-      : root_(std::move(root)),
-        penumbra_(std::move(penumbra)),
-        // No HLSL compiler is found unless given: PENUMBRA_HLSL_COMPILER is
-        // empty and the default install (~/.cache/penumbra/vkd3d) is not
-        // under this HOME. Every build names its cache, or --no-cache.
-        env_({{"PENUMBRA_HLSL_COMPILER", ""},
-              {"XDG_CACHE_HOME", ""},
-              {"HOME", (root_ / "home").string()}}) {
-    std::filesystem::create_directories(root_ / "home");
-  }
-
-  const std::filesystem::path& root() const { return root_; }
-
-  // `penumbra ARGS`, which must succeed; `log` names its output file.
-  Result<Measured> penumbra(std::vector<std::string> args, const std::string& log) const {
-    args.insert(args.begin(), penumbra_.string());
-    auto run = run_child(args, env_.get(), root_ / (log + ".log"));
-    if (!run) return run.error();
-    if (run->exit_code != 0) {
-      return make_error(Error::Kind::compile, "penumbra " + args[1],
-                        "exited with " + std::to_string(run->exit_code) + ":\n" + run->output);
-    }
-    return Measured{run->seconds, run->peak_rss_kb, parse_summary(run->output)};
-  }
-
-  // `penumbra build MANIFEST -o OUT -j JOBS EXTRA...`.
-  Result<Measured> build(const std::filesystem::path& manifest, const std::filesystem::path& out,
-                         int jobs, const std::vector<std::string>& extra) const {
-    std::vector<std::string> args = {"build", manifest.string(),   "-o", out.string(),
-                                     "-j",    std::to_string(jobs)};
-    args.insert(args.end(), extra.begin(), extra.end());
-    return penumbra(std::move(args), out.filename().string());
-  }
-
- private:
-  std::filesystem::path root_;
-  std::filesystem::path penumbra_;  // the executable run
-  Environment env_;
-};
 
 // One shader of the library, as the chain compiles it.
 struct ChainShader {
@@ -178,22 +113,34 @@ Result<ChainPlan> plan_chain(const std::filesystem::path& manifest, const Librar
   std::filesystem::create_directories(dir);
   ChainPlan plan;
   std::set<std::string> seen;
+  // One file of the library; its preprocessed text from `preprocess` when sampled.
+  const auto add = [&](const std::string& file, ShaderStage stage, Target target,
+                       const auto& preprocess) -> Status {
+    if (!seen.insert(file).second) return {};
+    if (plan.total++ % static_cast<std::size_t>(sample) != 0) return {};
+    PENUMBRA_TRY_ASSIGN(const std::string text, preprocess());
+    const std::filesystem::path source =
+        dir / (std::to_string(plan.sampled.size()) + "." + std::string(stage_key(stage)));
+    std::ofstream(source, std::ios::binary) << text;
+    plan.sampled.push_back({source, stage, target});
+    return {};
+  };
   for (const LibraryVariant& built : library.variants) {
     const Variant& variant = *by_name.at(built.variant.name);
     for (const auto& [pass, by_target] : built.passes) {
       for (const auto& [target, files] : by_target) {
         for (const auto& [stage, file] : {std::pair{ShaderStage::vertex, files.vert},
                                           std::pair{ShaderStage::fragment, files.frag}}) {
-          if (!seen.insert(file).second) continue;
-          if (plan.total++ % static_cast<std::size_t>(sample) != 0) continue;
-          auto text = preprocess_shader(variant, target, pass, stage);
-          if (!text) return text.error();
-          const std::filesystem::path source =
-              dir / (std::to_string(plan.sampled.size()) + "." + std::string(stage_key(stage)));
-          std::ofstream(source, std::ios::binary) << *text;
-          plan.sampled.push_back({source, stage, target});
+          PENUMBRA_TRY(add(file, stage, target, [&, target = target, pass = pass, stage = stage] {
+            return preprocess_shader(variant, target, pass, stage);
+          }));
         }
       }
+    }
+    // The function forms: the chain compiles each as a fragment shader.
+    for (const auto& [target, form] : built.function) {
+      PENUMBRA_TRY(add(form.file, ShaderStage::fragment, target,
+                       [&, target = target] { return preprocess_function(variant, target); }));
     }
   }
   return plan;
@@ -318,7 +265,7 @@ struct SplitBuild {
   std::optional<std::string> difference;  // from the single build; none: identical
 };
 
-Result<SplitBuild> split_build(const Bench& bench, const Options& options,
+Result<SplitBuild> split_build(const BuildRunner& bench, const Options& options,
                                const std::filesystem::path& manifest,
                                const std::filesystem::path& single) {
   const std::filesystem::path parts = bench.root() / "parts";
@@ -361,25 +308,11 @@ Result<SplitBuild> split_build(const Bench& bench, const Options& options,
   return split;
 }
 
-double mib(long kb) {
-  return static_cast<double>(kb) / 1024.0;
-}
-
-void print_row(const std::string& what, double seconds, std::size_t shaders, long rss_kb,
-               const std::string& note = "") {
-  const std::string rate =
-      shaders > 0 ? std::to_string(static_cast<long>(static_cast<double>(shaders) / seconds)) : "-";
-  char rss[32] = "-";
-  if (rss_kb > 0) std::snprintf(rss, sizeof rss, "%.0f", mib(rss_kb));
-  std::printf("| %s | %.3f | %s | %s | %s |\n", what.c_str(), seconds, rate.c_str(), rss,
-              note.c_str());
-}
-
 Status bench_manifest(const Options& options, const ChainTools& tools,
                       const std::filesystem::path& manifest) {
   TempDir temp{std::filesystem::temp_directory_path() /
                ("penumbra-bench-build-" + std::to_string(::getpid()))};
-  const Bench bench(temp.root, options.penumbra);
+  const BuildRunner bench(temp.root, options.penumbra);
   const std::string j = "-j" + std::to_string(options.jobs);
   const std::vector<std::string> no_cache = {"--no-cache"};
 
@@ -538,6 +471,15 @@ int main(int argc, char** argv) {
   app.add_flag("--bytecode", options.bytecode,
                "also a cold build with vkd3d-compiler ($PENUMBRA_HLSL_COMPILER), timed apart");
   app.add_flag("--skip-j1", options.skip_j1, "no -j1 build or chain, for large manifests");
+  auto* cold_only = app.add_flag(
+      "--cold-only", options.cold_only,
+      "only cold builds at -jN, side by side: every form, each --form, the --baseline's");
+  app.add_option("--form", options.forms, "with --cold-only: also a build in this form alone")
+      ->needs(cold_only);
+  app.add_option("--baseline", options.baseline,
+                 "with --cold-only: also a build by this penumbra executable (an older one)")
+      ->needs(cold_only)
+      ->check(CLI::ExistingFile);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -580,7 +522,11 @@ int main(int argc, char** argv) {
               penumbra::cpu_model().c_str(), penumbra::load_average().c_str(),
               options.penumbra.c_str());
   for (const auto& manifest : options.manifests) {
-    const penumbra::Status status = penumbra::bench_manifest(options, tools, manifest);
+    const penumbra::Status status =
+        options.cold_only
+            ? penumbra::bench::bench_cold_builds(
+                  {options.jobs, options.forms, options.penumbra, options.baseline}, manifest)
+            : penumbra::bench_manifest(options, tools, manifest);
     if (!status) {
       std::fprintf(stderr, "penumbra_bench_build: %s\n", status.error().to_string().c_str());
       return 1;

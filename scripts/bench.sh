@@ -5,9 +5,13 @@
 #   scripts/bench.sh bytecode [ARGS]  vkd3d-compiler's time and Shader Model 3
 #                                     slots per Direct3D file, slowest first
 #                                     (penumbra_bench_bytecode)
-#   scripts/bench.sh build [ARGS]     penumbra build's cold, warm and no-op times,
+#   scripts/bench.sh build [--baseline REV] [ARGS]
+#                                     penumbra build's cold, warm and no-op times,
 #                                     memory and index size, against a chain of
-#                                     separate tools (penumbra_bench_build)
+#                                     separate tools (penumbra_bench_build); with
+#                                     --cold-only, cold builds alone: every form,
+#                                     each --form F, and commit REV's penumbra
+#                                     (built in build-baseline/), side by side
 #   scripts/bench.sh accuracy [ARGS]  every variant's error against the exact
 #                                     area light on the accuracy suite, with its
 #                                     texel reads and time (penumbra_bench_accuracy)
@@ -67,7 +71,7 @@ build_baseline() {
 }
 
 args=("$@")
-if [[ $bench == verify ]]; then
+if [[ $bench == verify || $bench == build ]]; then
   args=()
   while [[ $# -gt 0 ]]; do
     if [[ $1 == --baseline && $# -gt 1 ]]; then

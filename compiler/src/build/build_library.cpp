@@ -209,8 +209,10 @@ Result<CompiledPass> compile_pass(const Variant& variant, Target target, PassKin
   return out;
 }
 
-Result<CompiledFunction> compile_function(const Variant& variant, Target target,
-                                          std::shared_ptr<const ShaderlibSource> shaderlib) {
+namespace {
+
+// A function form that cannot be made is bad input.
+Status check_function_form(const Variant& variant, Target target) {
   if (!has_function_form(variant.technique)) {
     return make_error(Error::Kind::bad_input, "variant " + variant.name,
                       "has no function form (technique " +
@@ -223,6 +225,25 @@ Result<CompiledFunction> compile_function(const Variant& variant, Target target,
                       "has no function form: it is not text (a Vulkan engine includes the "
                       "glsl450 one)");
   }
+  return {};
+}
+
+// `job`'s preprocessed text.
+Result<std::string> preprocessed(ShaderJob job, std::shared_ptr<const ShaderlibSource> shaderlib) {
+  const PreprocessStage preprocess(shaderlib ? std::move(shaderlib) : embedded_shaderlib());
+  if (Status status = preprocess.process(job); !status) {
+    Error error = status.error();
+    error.message = "preprocess: " + error.message;
+    return error;
+  }
+  return std::move(job.preprocessed);
+}
+
+}  // namespace
+
+Result<CompiledFunction> compile_function(const Variant& variant, Target target,
+                                          std::shared_ptr<const ShaderlibSource> shaderlib) {
+  PENUMBRA_TRY(check_function_form(variant, target));
   const Pipeline pipeline(shaderlib ? std::move(shaderlib) : embedded_shaderlib(), std::nullopt);
   ShaderJob job = make_function_job(target, variant);
   PENUMBRA_TRY(pipeline.run(job));
@@ -236,14 +257,13 @@ Result<std::string> preprocess_shader(const Variant& variant, Target target, Pas
   const auto source = std::ranges::find_if(
       pass_plan(), [&](const PassStageSource& s) { return s.pass == pass && s.stage == stage; });
   // pass_plan() lists both stages of every pass.
-  ShaderJob job = make_job(*source, target, variant);
-  const PreprocessStage preprocess(shaderlib ? std::move(shaderlib) : embedded_shaderlib());
-  if (Status status = preprocess.process(job); !status) {
-    Error error = status.error();
-    error.message = "preprocess: " + error.message;
-    return error;
-  }
-  return std::move(job.preprocessed);
+  return preprocessed(make_job(*source, target, variant), std::move(shaderlib));
+}
+
+Result<std::string> preprocess_function(const Variant& variant, Target target,
+                                        std::shared_ptr<const ShaderlibSource> shaderlib) {
+  PENUMBRA_TRY(check_function_form(variant, target));
+  return preprocessed(make_function_job(target, variant), std::move(shaderlib));
 }
 
 }  // namespace penumbra

@@ -151,5 +151,9 @@ Result<CompiledFunction> compile_function(
 Result<std::string> preprocess_shader(
     const Variant& variant, Target target, PassKind pass, ShaderStage stage,
     std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
+// The same for `variant`'s function form for `target`.
+Result<std::string> preprocess_function(
+    const Variant& variant, Target target,
+    std::shared_ptr<const ShaderlibSource> shaderlib = embedded_shaderlib());
 
 }  // namespace penumbra
