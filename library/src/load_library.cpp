@@ -272,8 +272,8 @@ Status read_forms(const std::filesystem::path& file, const json& j, const std::s
     if (!form || !has_form(v.technique, *form)) {
       return index_error(file, at,
                          "unknown form '" + shorten(form_name) + "' for technique " +
-                             std::string(to_string(v.technique)) + "; allowed: " +
-                             (has_function_form(v.technique) ? allowed_forms() : "query"));
+                             std::string(to_string(v.technique)) +
+                             "; allowed: " + to_string(technique_forms(v.technique)));
     }
     v.forms.push_back(*form);
   }

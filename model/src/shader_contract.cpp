@@ -333,6 +333,14 @@ bool has_form(Technique technique, Form form) {
   return form == Form::query || has_function_form(technique);
 }
 
+std::vector<Form> technique_forms(Technique technique) {
+  std::vector<Form> out;
+  for (Form form : kAllForms) {
+    if (has_form(technique, form)) out.push_back(form);
+  }
+  return out;
+}
+
 bool builds_form(const Variant& variant, Form form) {
   return has_form(variant.technique, form) &&
          std::ranges::find(variant.forms, form) != variant.forms.end();
@@ -348,11 +356,16 @@ std::vector<Form> built_forms(const Variant& variant) {
 
 std::string form_not_built(const Variant& variant, Form form) {
   if (builds_form(variant, form)) return {};
-  const std::string name(to_string(form));
   if (!has_form(variant.technique, form)) {
-    return "technique " + std::string(to_string(variant.technique)) + " has no " + name + " form";
+    return "technique " + std::string(to_string(variant.technique)) + " has no " +
+           std::string(to_string(form)) + " form";
   }
-  return "built without the " + name + " form (its forms: " + to_string(built_forms(variant)) + ")";
+  return built_without(form, built_forms(variant));
+}
+
+std::string built_without(Form form, std::span<const Form> built) {
+  return "built without the " + std::string(to_string(form)) +
+         " form (its forms: " + to_string(built) + ")";
 }
 
 }  // namespace penumbra

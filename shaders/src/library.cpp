@@ -31,8 +31,7 @@ auto function_key(std::string_view variant, Target target) {
 // empty when `forms` holds `form`.
 std::string without(std::string_view variant, Form form, const std::vector<Form>& forms) {
   if (std::ranges::find(forms, form) != forms.end()) return {};
-  return "variant " + std::string(variant) + " was built without the " +
-         std::string(to_string(form)) + " form (its forms: " + to_string(forms) + ")";
+  return "variant " + std::string(variant) + " was " + built_without(form, forms);
 }
 
 }  // namespace

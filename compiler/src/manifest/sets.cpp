@@ -104,15 +104,6 @@ constexpr std::array<std::string_view, kAxisKeys.size() + 1> kSetKeys = [] {
   return keys;
 }();
 
-// The forms `technique` has, in kAllForms order.
-std::vector<Form> forms_of(Technique technique) {
-  std::vector<Form> out;
-  for (Form form : kAllForms) {
-    if (has_form(technique, form)) out.push_back(form);
-  }
-  return out;
-}
-
 // Every technique of the set is built in at least one of its forms: one
 // with none of them would leave a variant with nothing to draw.
 Status check_set_forms(const JsonNode& node, const VariantSet& set) {
@@ -122,7 +113,7 @@ Status check_set_forms(const JsonNode& node, const VariantSet& set) {
     }
     const std::string what =
         "technique " + std::string(to_string(technique)) +
-        " has none of the forms asked; its forms: " + to_string(forms_of(technique));
+        " has none of the forms asked; its forms: " + to_string(technique_forms(technique));
     if (node.has("forms")) return node.member("forms").error(what);
     return node.error(what + " (this set takes the top-level forms; give it a 'forms' list)");
   }

@@ -206,6 +206,8 @@ bool has_function_form(Technique technique);
 // Whether `technique` has `form`: every technique the query form, and those
 // with has_function_form() the deferred and function forms.
 bool has_form(Technique technique, Form form);
+// The forms `technique` has, in kAllForms order.
+std::vector<Form> technique_forms(Technique technique);
 // Whether `variant` is built in `form`: it asks for it and its technique has it.
 bool builds_form(const Variant& variant, Form form);
 // The forms `variant` is built in, in kAllForms order.
@@ -214,5 +216,8 @@ std::vector<Form> built_forms(const Variant& variant);
 // (its forms: function)", "technique screen_blur has no function form"), or
 // empty when it is built in it.
 std::string form_not_built(const Variant& variant, Form form);
+// "built without the query form (its forms: function)": the reason for a
+// variant built in `built` only, for messages that know no Variant.
+std::string built_without(Form form, std::span<const Form> built);
 
 }  // namespace penumbra
