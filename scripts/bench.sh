@@ -67,6 +67,10 @@ build_baseline() {
   fi
   git -C "$dir/source" checkout --quiet --detach "$rev"
   (cd "$dir/source" && configure_and_build ../build penumbra_cli "${PENUMBRA_DEVELOPER_CONFIG[@]}" >&2)
+  # verify's Wine paths need the Direct3D host, a target of its own.
+  if cmake --build "$dir/build" --target help | grep -q '^[^ ]*penumbra_d3d_host'; then
+    cmake --build "$dir/build" --target penumbra_d3d_host >&2
+  fi
   echo "$PWD/$dir/build/penumbra"
 }
 

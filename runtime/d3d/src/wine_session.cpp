@@ -120,13 +120,19 @@ Result<std::shared_ptr<WineSession>> WineSession::start(const WineSessionOptions
 }
 
 std::map<std::string, std::string> WineSession::environment() const {
-  return {{"WINEPREFIX", prefix_.string()},
-          {"DISPLAY", display_},
-          {"WINEDEBUG", "-all"},
-          // No Mono or Gecko install prompts in a new prefix.
-          {"WINEDLLOVERRIDES", "mscoree,mshtml="},
-          // What a sanitized test preloads is for our code, not Wine's.
-          {"LD_PRELOAD", ""}};
+  std::map<std::string, std::string> environment = {
+      {"WINEPREFIX", prefix_.string()},
+      {"DISPLAY", display_},
+      {"WINEDEBUG", "-all"},
+      // No Mono or Gecko install prompts in a new prefix.
+      {"WINEDLLOVERRIDES", "mscoree,mshtml="},
+      // What a sanitized test preloads is for our code, not Wine's.
+      {"LD_PRELOAD", ""}};
+  // wined3d's command-stream thread spin-waits for the application thread,
+  // taking a core from the other hosts and from verify's own threads; the
+  // draws are the same without it. A user's own setting wins.
+  if (!std::getenv("WINE_D3D_CONFIG")) environment.emplace("WINE_D3D_CONFIG", "csmt=0x0");
+  return environment;
 }
 
 WineSession::~WineSession() {

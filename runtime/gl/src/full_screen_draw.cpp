@@ -81,13 +81,19 @@ Status draw_full_screen(const PassProgram& pass, const ParamBlock& params, PassI
   const Geometry geometry = full_screen_triangle(*pass.reflection);
   PENUMBRA_TRY(check_gl("setting up " + what));
 
-  // Depth test, blending and culling stay off: this context never enables them.
+  // Depth test and culling stay off, and blending but for pass_through_blend:
+  // this context enables none of them otherwise.
   const ProgramInUse in_use(pass.program.get());
   PENUMBRA_TRY(bind_pass_textures(pass, inputs));
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer->get());
   glViewport(0, 0, target.width, target.height);
   glBindVertexArray(geometry.layout.get());
+  if (target.pass_through_blend) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+  }
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
   return check_gl("drawing " + what);

@@ -16,6 +16,10 @@ struct DrawTarget {
   const Texture& texture;  // level 0 is drawn, width x height, in the pass's target format
   int width = 0;
   int height = 0;
+  // Blend ONE, ZERO: the target gets what the shader writes, as with blending
+  // off, but llvmpipe then compiles one fragment function for the draw
+  // instead of two (whole tiles and tile edges). Every pass target is float.
+  bool pass_through_blend = false;
 };
 
 // glUseProgram for one draw; a program in use outlives glDeleteProgram.

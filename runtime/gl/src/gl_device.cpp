@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "context_info.hpp"
 #include "full_screen_draw.hpp"
 #include "gl_check.hpp"
 #include "penumbra/support/minmax_levels.hpp"
@@ -62,6 +63,8 @@ Result<runtime::Texture> GlDevice::upload(TextureId as, const FloatImage& image)
   return hold(std::move(held), image.width, image.height);
 }
 
+GlDevice::GlDevice() : software_(current_context_info().renderer.starts_with("llvmpipe")) {}
+
 // Each draw reads only what it is offered; the uploads stay for the next.
 Status GlDevice::offer(const runtime::Draw& draw) {
   inputs_.withdraw();
@@ -89,8 +92,8 @@ Result<runtime::Drawn> GlDevice::draw(const runtime::Draw& draw) {
   PENUMBRA_TRY_ASSIGN(Texture target,
                       create_pass_target(pass, draw.width, draw.height, "the target of " + what));
   if (draw.triangles.empty()) {
-    PENUMBRA_TRY(
-        draw_full_screen(pass, draw.params, inputs_, {target, draw.width, draw.height}, what));
+    PENUMBRA_TRY(draw_full_screen(pass, draw.params, inputs_,
+                                  {target, draw.width, draw.height, software_}, what));
   } else {
     PENUMBRA_TRY(draw_triangles(pass, draw.params, inputs_, draw.triangles,
                                 {target, draw.width, draw.height}));

@@ -22,6 +22,9 @@ namespace penumbra::gl {
 
 class GlDevice final : public runtime::Device {
  public:
+  // On the GL context current on this thread.
+  GlDevice();
+
   // `pass` prepared as the `kind` pass. Errors: prepare_pass's.
   Result<runtime::Program> load(const GlPass& pass, PassKind kind);
   // An engine's own program drawing triangles (3 floats per vertex), as `where`.
@@ -56,6 +59,7 @@ class GlDevice final : public runtime::Device {
   Result<Held*> find(runtime::Texture texture, std::string_view where);
   Status offer(const runtime::Draw& draw);
 
+  bool software_ = false;              // llvmpipe: full-screen draws pass_through_blend
   std::vector<PassProgram> programs_;  // Program::id - 1
   std::map<int, Held> textures_;
   PassInputs inputs_;  // its uploads serve every draw

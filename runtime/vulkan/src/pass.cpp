@@ -184,7 +184,8 @@ Result<std::optional<double>> draw_pass(Context& context, const PassDraw& draw) 
   if (!framebuffer) return framebuffer.error();
 
   auto pipeline =
-      PassPipeline::create(device, *draw.program, *plan, draw.shape, render_pass->get());
+      PassPipeline::create(device, *draw.program, *plan, draw.shape, render_pass->get(),
+                           context.device->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
   if (!pipeline) return pipeline.error();
   auto descriptors = PassDescriptors::create(context, *plan, *pipeline, draw.resources,
                                              draw.program->target, draw.shape.name);

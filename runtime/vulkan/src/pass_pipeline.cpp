@@ -130,7 +130,7 @@ Result<std::vector<vk::DescriptorSetLayout>> create_set_layouts(VkDevice device,
 
 Result<PassPipeline> PassPipeline::create(VkDevice device, const PassProgram& program,
                                           const BindingPlan& plan, const PassShape& shape,
-                                          VkRenderPass render_pass) {
+                                          VkRenderPass render_pass, bool software) {
   PENUMBRA_TRY(check_interface(program, shape));
   const std::string pass(shape.name);
   auto vertex = vk::create_shader_module(device, program.vert.spirv, pass + " vertex shader");
@@ -157,6 +157,8 @@ Result<PassPipeline> PassPipeline::create(VkDevice device, const PassProgram& pr
   desc.depth_test = shape.depth_test;
   desc.depth_greater = shape.depth_greater;
   desc.gl_clip_depth = program.gl_clip_depth;
+  // A depth-tested pass already compiles once; every colour target is float.
+  desc.pass_through_blend = software && !shape.depth_test;
   auto pipeline = vk::create_graphics_pipeline(device, desc);
   if (!pipeline) return pipeline.error();
   return PassPipeline(std::move(*set_layouts), std::move(*layout), std::move(*pipeline));

@@ -36,9 +36,12 @@ class PassPipeline {
   // (location 0 only, with at least the target's components) and, where the
   // shape asks, the fragment depth. Then
   // builds one descriptor set layout per set of `plan`.
+  // `software`: the device is a CPU rasterizer (lavapipe), whose passes
+  // without a depth test blend ONE, ZERO to compile once (see
+  // vk::GraphicsPipelineDesc::pass_through_blend).
   static Result<PassPipeline> create(VkDevice device, const PassProgram& program,
                                      const BindingPlan& plan, const PassShape& shape,
-                                     VkRenderPass render_pass);
+                                     VkRenderPass render_pass, bool software);
 
   VkPipeline get() const { return pipeline_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }

@@ -30,6 +30,10 @@ struct GraphicsPipelineDesc {
   bool depth_greater = false;  // with depth_test: GREATER instead (a reversed-Z map)
   // OpenGL's clip volume, z in [-w, w] (VK_EXT_depth_clip_control enabled).
   bool gl_clip_depth = false;
+  // Blend ONE, ZERO: the attachment gets what the shader writes, as with
+  // blending off, but llvmpipe (lavapipe) then compiles one fragment function
+  // instead of two (whole tiles and tile edges). Needs a blendable format.
+  bool pass_through_blend = false;
 };
 
 Result<GraphicsPipeline> create_graphics_pipeline(VkDevice device,

@@ -45,7 +45,8 @@ class WineSession {
   ~WineSession();
 
   const std::string& wine() const { return wine_; }
-  // WINEPREFIX, DISPLAY, WINEDEBUG and DLL overrides for a Wine process.
+  // WINEPREFIX, DISPLAY, WINEDEBUG, DLL overrides and wined3d settings (no
+  // command-stream thread, unless WINE_D3D_CONFIG is set) for a Wine process.
   std::map<std::string, std::string> environment() const;
   // Where the hosts' stderr (Wine's messages) goes.
   std::filesystem::path log() const { return scratch_ / "wine.log"; }
