@@ -5,16 +5,14 @@
 
 #include "common/map_encoding.glsl"
 
-#if defined(PENUMBRA_TARGET_HLSL_DX9) || defined(PENUMBRA_TARGET_HLSL_DX10) || \
-    defined(PENUMBRA_TARGET_HLSL_DX11)
+#if PENUMBRA_CLIP_Y_DOWN
 // Direct3D's viewport puts clip-space y = +1 in a target's row 0.
 #define PENUMBRA_CLIP_Y_TO_V (-0.5)
 #else
 #define PENUMBRA_CLIP_Y_TO_V 0.5
 #endif
 
-#if defined(PENUMBRA_TARGET_HLSL_DX9) || defined(PENUMBRA_TARGET_HLSL_DX10) || \
-    defined(PENUMBRA_TARGET_HLSL_DX11) || defined(PENUMBRA_TARGET_SPIRV)
+#if PENUMBRA_CLIP_Z_FROM_ZERO
 // Direct3D's and Vulkan's projections map depth to clip z / w in [0, 1].
 #define PENUMBRA_CLIP_Z_TO_DEPTH(z) (z)
 #else

@@ -31,6 +31,8 @@ constexpr std::string_view kAttributesGuard = "#if defined(GL_EXT_control_flow_a
 
 // `line` without SPIRV-Cross's control-flow markers.
 std::string without_markers(const std::string& line) {
+  // Most lines have none; std::regex is slow enough to show in a build.
+  if (line.find("SPIRV_CROSS_") == std::string::npos) return line;
   static const std::regex kMarker(R"(\bSPIRV_CROSS_(FLATTEN|BRANCH|UNROLL|LOOP)\b ?)");
   return std::regex_replace(line, kMarker, "");
 }
@@ -58,7 +60,7 @@ Status ExtractFunctionStage::process(ShaderJob& job) const {
       line = bare;
     }
     std::smatch match;
-    if (std::regex_match(line, match, kExtension)) {
+    if (line.starts_with("#extension ") && std::regex_match(line, match, kExtension)) {
       extensions.push_back(match[1]);
       continue;
     }

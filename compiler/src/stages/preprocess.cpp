@@ -16,6 +16,12 @@ Status PreprocessStage::process(ShaderJob& job) const {
                         why + "; build it for the other targets, or with a smaller kernel");
     }
   }
+  const std::string header = variant_header(job.variant, job.target, job.map_encoding);
+  if (std::optional<Preprocessed> made = memo_.find(job.stage, job.source_path, header)) {
+    job.preprocessed = std::move(made->text);
+    job.inputs = std::move(made->inputs);
+    return {};
+  }
   auto source = shaderlib_->read(job.source_path);
   if (!source) {
     return make_error(Error::Kind::bad_input, job.describe(),
@@ -30,8 +36,7 @@ Status PreprocessStage::process(ShaderJob& job) const {
   shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
   configure_environment(shader, job.stage);
 
-  ShaderlibIncluder includer(*shaderlib_, variant_header(job.variant, job.target, job.map_encoding),
-                             job.inputs);
+  ShaderlibIncluder includer(*shaderlib_, header, job.inputs);
   std::string output;
   if (!shader.preprocess(GetDefaultResources(), 450, ENoProfile, false, false, EShMsgDefault,
                          &output, includer)) {
@@ -39,6 +44,7 @@ Status PreprocessStage::process(ShaderJob& job) const {
                          job.source_path);
   }
   job.preprocessed = std::move(output);
+  memo_.add(job.stage, job.source_path, header, {job.preprocessed, job.inputs});
   return {};
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "glsl/preprocess_memo.hpp"
 #include "penumbra/compiler/build.hpp"
 #include "penumbra/compiler/shaderlib_source.hpp"
 #include "penumbra/compiler/stage.hpp"
@@ -12,15 +13,21 @@ namespace penumbra {
 
 // Resolves includes and defines (variant.glsl) with glslang's preprocessor,
 // reading shaderlib files from `shaderlib` and recording them in job.inputs.
+// A job whose variant.glsl differs from a recent one's only in macros none
+// of its files mention takes that one's text (PreprocessMemo).
 class PreprocessStage final : public Stage {
  public:
   explicit PreprocessStage(std::shared_ptr<const ShaderlibSource> shaderlib)
-      : shaderlib_(std::move(shaderlib)) {}
+      : shaderlib_(std::move(shaderlib)), memo_(kRecentTexts, *shaderlib_) {}
   std::string_view name() const override { return "preprocess"; }
   Status process(ShaderJob& job) const override;
 
  private:
+  // A pass's targets follow each other in a build's plan: a short memory
+  // finds them.
+  static constexpr std::size_t kRecentTexts = 64;
   std::shared_ptr<const ShaderlibSource> shaderlib_;
+  mutable PreprocessMemo memo_;
 };
 
 // Compiles the preprocessed GLSL to SPIR-V 1.0 with glslang, in process. Its

@@ -9,6 +9,17 @@ std::string target_defines(Target target) {
   out += traits(target).comparison_sampler ? "1\n" : "0\n";
   out += "#define PENUMBRA_DISK_TEXTURES ";
   out += traits(target).disk_textures ? "1\n" : "0\n";
+  // Direct3D's viewport puts clip-space y = +1 in a target's row 0; Direct3D's
+  // and Vulkan's projections map depth to clip z / w in [0, 1], OpenGL's to
+  // [-1, 1] (common/light_clip.glsl).
+  const ReflectionDialect dialect = traits(target).dialect;
+  const bool gl_clip = dialect == ReflectionDialect::glsl450 ||
+                       dialect == ReflectionDialect::glsl330 ||
+                       dialect == ReflectionDialect::essl300;
+  out += "#define PENUMBRA_CLIP_Y_DOWN ";
+  out += traits(target).is_hlsl ? "1\n" : "0\n";
+  out += "#define PENUMBRA_CLIP_Z_FROM_ZERO ";
+  out += gl_clip ? "0\n" : "1\n";
   // PENUMBRA_SAMPLE_LOOP heads the loops over filter samples.
   out += "#define PENUMBRA_SAMPLE_LOOP";
   out += traits(target).rolled_sample_loops ? " [[dont_unroll]]\n" : "\n";
