@@ -89,6 +89,9 @@ Status draw_full_screen(const PassProgram& pass, const ParamBlock& params, PassI
   glViewport(0, 0, target.width, target.height);
   glBindVertexArray(geometry.layout.get());
   if (target.pass_through_blend) {
+    // A new target's texels are undefined; the blend must read finite ones.
+    const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, zero);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ZERO);
   }

@@ -18,7 +18,8 @@ struct DrawTarget {
   int height = 0;
   // Blend ONE, ZERO: the target gets what the shader writes, as with blending
   // off, but llvmpipe then compiles one fragment function for the draw
-  // instead of two (whole tiles and tile edges). Every pass target is float.
+  // instead of two (whole tiles and tile edges). Every pass target is float,
+  // and is cleared to 0 first, so that the blend reads finite texels.
   bool pass_through_blend = false;
 };
 
