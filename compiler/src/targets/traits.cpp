@@ -4,25 +4,23 @@
 namespace penumbra {
 
 std::string target_defines(Target target) {
+  const TargetTraits t = traits(target);
   std::string out = "#define PENUMBRA_TARGET_" + ascii_upper(to_string(target)) + " 1\n";
   out += "#define PENUMBRA_HAS_COMPARISON_SAMPLER ";
-  out += traits(target).comparison_sampler ? "1\n" : "0\n";
+  out += t.comparison_sampler ? "1\n" : "0\n";
   out += "#define PENUMBRA_DISK_TEXTURES ";
-  out += traits(target).disk_textures ? "1\n" : "0\n";
+  out += t.disk_textures ? "1\n" : "0\n";
   // Direct3D's viewport puts clip-space y = +1 in a target's row 0; Direct3D's
-  // and Vulkan's projections map depth to clip z / w in [0, 1], OpenGL's to
-  // [-1, 1] (common/light_clip.glsl).
-  const ReflectionDialect dialect = traits(target).dialect;
-  const bool gl_clip = dialect == ReflectionDialect::glsl450 ||
-                       dialect == ReflectionDialect::glsl330 ||
-                       dialect == ReflectionDialect::essl300;
+  // and Vulkan's projections map depth to clip z / w in [0, 1], OpenGL's (the
+  // GLSL text targets', as the engines' gl_clip_depth) to [-1, 1]
+  // (common/light_clip.glsl).
   out += "#define PENUMBRA_CLIP_Y_DOWN ";
-  out += traits(target).is_hlsl ? "1\n" : "0\n";
+  out += t.is_hlsl ? "1\n" : "0\n";
   out += "#define PENUMBRA_CLIP_Z_FROM_ZERO ";
-  out += gl_clip ? "0\n" : "1\n";
+  out += t.is_text && !t.is_hlsl ? "0\n" : "1\n";
   // PENUMBRA_SAMPLE_LOOP heads the loops over filter samples.
   out += "#define PENUMBRA_SAMPLE_LOOP";
-  out += traits(target).rolled_sample_loops ? " [[dont_unroll]]\n" : "\n";
+  out += t.rolled_sample_loops ? " [[dont_unroll]]\n" : "\n";
   return out;
 }
 
