@@ -72,6 +72,7 @@ Status run_report(const ReportArgs& args) {
   PENUMBRA_TRY(check_report_directory(out));
   PENUMBRA_TRY(check_report_parent(out, args.output.empty()));
   limit_software_rasterizers(args.jobs);
+  keep_freed_memory();
   PENUMBRA_TRY_ASSIGN(auto engine,
                       Engine::create({.device = args.device, .validation = args.validation},
                                      stderr_diagnostics(args.verbose)));

@@ -199,6 +199,7 @@ Result<int> run_verify(const VerifyArgs& args) {
   PENUMBRA_TRY_ASSIGN(const std::filesystem::path results, results_file(args, library));
   limit_software_rasterizers(args.jobs);
   if (!args.optimized_jit) skip_software_jit_optimization();
+  keep_freed_memory();
   std::vector<std::unique_ptr<Engine>> engines;
   std::vector<Engine*> devices;
   for (int t = 0; t < args.device_threads; ++t) {

@@ -5,6 +5,10 @@
 #include <iostream>
 #include <string>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace penumbra::cli {
 
 void add_jobs_option(CLI::App* cmd, int& jobs) {
@@ -25,6 +29,17 @@ void skip_software_jit_optimization() {
   // lavapipe and llvmpipe (Wine's runtimes draw through it too) read it when
   // their first screen is made; a device that is not Mesa's ignores it.
   setenv("GALLIVM_PERF", "nopt", 0);
+}
+
+void keep_freed_memory() {
+#ifdef __GLIBC__
+  // Blocks up to 32 MiB (glibc's largest threshold) come from the heap
+  // rather than a mapping of their own, and the heap's free top goes back to
+  // the kernel only above 1 GiB: a run keeps its peak memory, which it
+  // reaches again within seconds anyway.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
 }
 
 ProgressConsumer stderr_progress(bool quiet) {

@@ -24,6 +24,13 @@ void limit_software_rasterizers(int jobs);
 // for report, whose GPU costs time the draws. Before the first device.
 void skip_software_jit_optimization();
 
+// Has the allocator keep freed memory for the next allocation instead of
+// handing every large block back to the kernel: verify and report allocate
+// and free images of megabytes per check, and each block handed back costs
+// its page faults again when the next image takes it (docs/performance.md,
+// "Nothing made that no check reads"). glibc only; elsewhere nothing.
+void keep_freed_memory();
+
 // Prints "[done/total] elapsed unit" lines to stderr; none when `quiet`.
 ProgressConsumer stderr_progress(bool quiet);
 

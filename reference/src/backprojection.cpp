@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "backprojection_walk.hpp"
 #include "penumbra/reference/sampling.hpp"
@@ -60,21 +61,30 @@ TexelRect backprojection_window(const ShadowMapView& map, const LightParams& lig
 double backprojected_area(const ShadowMapView& map, const LightParams& light, const Query& q,
                           const TexelRect& texels) {
   const TexelRect inside = clip(texels, map.width(), map.height());
+  if (inside.empty()) return 0.0;
   const float z_ref = float_reference(q.z, light.bias);
   const double to_slope = backprojection_to_slope(light);
   const double L = light.light_world_size;
   const double a_r = (q.u - 0.5) * to_slope;
   const double b_r = (q.v - 0.5) * to_slope;
+  // Column i spans slopes edges[i - x0] to edges[i - x0 + 1], computed
+  // once per column rather than once per texel: the same values.
+  thread_local std::vector<double> edges;
+  edges.resize(std::size_t(inside.x1 - inside.x0 + 2));
+  for (int i = inside.x0; i <= inside.x1 + 1; ++i) {
+    edges[std::size_t(i - inside.x0)] = (double(i) / map.width() - 0.5) * to_slope - a_r;
+  }
   double area = 0.0;
   for (int j = inside.y0; j <= inside.y1; ++j) {
     const double b0 = (double(j) / map.height() - 0.5) * to_slope - b_r;
     const double b1 = (double(j + 1) / map.height() - 0.5) * to_slope - b_r;
+    const double* depths = map.row(j);
     for (int i = inside.x0; i <= inside.x1; ++i) {
-      const double z = map.depth(i, j);
+      const double z = depths[i];
       if (!(float(z) < z_ref) || z >= q.z) continue;
       const double g = backprojection_gain(light, z, q.z);
-      const double a0 = (double(i) / map.width() - 0.5) * to_slope - a_r;
-      const double a1 = (double(i + 1) / map.width() - 0.5) * to_slope - a_r;
+      const double a0 = edges[std::size_t(i - inside.x0)];
+      const double a1 = edges[std::size_t(i - inside.x0 + 1)];
       area += detail::overlap(a0 * g, a1 * g, L) * detail::overlap(b0 * g, b1 * g, L);
     }
   }

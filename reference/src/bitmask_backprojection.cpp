@@ -11,7 +11,9 @@
 // the other, which a compiler may evaluate differently where nothing is
 // `precise`, and overlapped by twice the margin one of them surely covers
 // a sample near it wherever its error is below the margin.
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -46,7 +48,15 @@ class LightSamples {
                          unit(r.x1) + kEdgeMargin, unit(r.y1) + kEdgeMargin};
     const double maybe[4] = {t[0] - e[0], t[1] - e[1], t[2] + e[2], t[3] + e[3]};
     const double sure[4] = {t[0] + e[0], t[1] + e[1], t[2] - e[2], t[3] - e[3]};
-    for (int row = 0; row < side_; ++row) {
+    // Row r's samples lie at y in [r G, r G + G - 1]: rows a whole row
+    // below or above the patch's widest edges hold none of them.
+    int first = 0, last = side_ - 1;
+    if (std::isfinite(maybe[1]) && std::isfinite(maybe[3])) {
+      const double g = side_;
+      first = int(std::clamp(std::floor((maybe[1] - g + 1.0) / g) - 1.0, 0.0, g));
+      last = int(std::clamp(std::floor(maybe[3] / g) + 1.0, -1.0, g - 1.0));
+    }
+    for (int row = first; row <= last; ++row) {
       maybe_[std::size_t(row)] |= row_mask(maybe, row);
       // Counted as they are set, as the shader's state.set: covered() asks
       // after every step of the walk.

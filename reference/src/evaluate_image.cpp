@@ -64,23 +64,28 @@ Status check_inputs(const FloatImage& shadow_map, const FloatImage& receivers) {
   return check_receivers(receivers);
 }
 
-// Evaluates pixels of `receivers` against `map`, the inputs checked.
+// The min-max mip of `map`, for a technique whose reference reads one.
+std::optional<MinMaxMip> mip_for(const Variant& variant, const ShadowMapView& map) {
+  if (!reference_reads_mip(variant.technique)) return std::nullopt;
+  return MinMaxMip(map);
+}
+
+// Evaluates pixels of `receivers` against `map` (and `mip`, built from it
+// where the technique reads one), the inputs checked.
 class PixelEvaluator {
  public:
-  PixelEvaluator(const Variant& variant, const ShadowMapView& map, const LightParams& light,
-                 const FloatImage& receivers, const SamplingPrecision& precision,
-                 const ShaderLimits& limits)
+  PixelEvaluator(const Variant& variant, const ShadowMapView& map, const MinMaxMip* mip,
+                 const LightParams& light, const FloatImage& receivers,
+                 const SamplingPrecision& precision, const ShaderLimits& limits)
       : variant_(variant),
         map_(map),
+        mip_(mip),
         light_(light),
         receivers_(receivers),
         precision_(precision),
         limits_(limits),
         plane_(variant.keys.receiver_plane.value_or(false)),
-        tol_(tolerance(variant.technique, precision)) {
-    // Built once for the image, and only for a technique whose reference reads it.
-    if (reference_reads_mip(variant.technique)) mip_.emplace(map);
-  }
+        tol_(tolerance(variant.technique, precision)) {}
 
   Sample operator()(int i, int j) const {
     const Query query{receivers_.at(i, j, 0), receivers_.at(i, j, 1), receivers_.at(i, j, 2), i, j};
@@ -95,20 +100,23 @@ class PixelEvaluator {
  private:
   const Variant& variant_;
   const ShadowMapView& map_;
+  const MinMaxMip* mip_;
   const LightParams& light_;
   const FloatImage& receivers_;
   const SamplingPrecision& precision_;
   const ShaderLimits& limits_;
   bool plane_;
   double tol_;
-  std::optional<MinMaxMip> mip_;
 };
 
 // Every receiver against `map`, the inputs checked.
 ReferenceImage evaluate_view(const Variant& variant, const ShadowMapView& map,
                              const LightParams& light, const FloatImage& receivers,
                              const SamplingPrecision& precision, const ShaderLimits& limits) {
-  const PixelEvaluator sample_at(variant, map, light, receivers, precision, limits);
+  // Built once for the image, and only for a technique whose reference reads it.
+  const std::optional<MinMaxMip> mip = mip_for(variant, map);
+  const PixelEvaluator sample_at(variant, map, mip ? &*mip : nullptr, light, receivers, precision,
+                                 limits);
   ReferenceImage result{FloatImage(receivers.width, receivers.height, 1),
                         FloatImage(receivers.width, receivers.height, 1), FloatImage(),
                         FloatImage()};
@@ -167,31 +175,45 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
   return result;
 }
 
-Result<FloatImage> evaluate_visibility(const Variant& variant, const ShadowMapView& map,
-                                       const LightParams& light, const FloatImage& receivers,
-                                       std::span<const std::size_t> pixels,
-                                       const SamplingPrecision& precision,
-                                       const ShaderLimits& limits) {
+Result<std::vector<FloatImage>> evaluate_visibility(
+    const Variant& variant, const ShadowMapView& map, const LightParams& light,
+    std::span<const FloatImage> receivers, std::span<const std::size_t> pixels,
+    const SamplingPrecision& precision, const ShaderLimits& limits) {
   PENUMBRA_TRY(check_variant(variant));
   if (map.width() == 0 || map.height() == 0) {
     return make_error(Error::Kind::bad_input, "shadow map", "needs a non-empty image of depth");
   }
-  PENUMBRA_TRY(check_receivers(receivers));
-  for (const std::size_t k : pixels) {
-    if (k >= receivers.pixel_count()) {
-      return make_error(Error::Kind::bad_input, "pixels",
-                        "index " + std::to_string(k) + " is outside the " +
-                            std::to_string(receivers.pixel_count()) + "-pixel receivers image");
+  for (const FloatImage& image : receivers) {
+    PENUMBRA_TRY(check_receivers(image));
+    if (image.width != receivers[0].width || image.height != receivers[0].height) {
+      return make_error(Error::Kind::bad_input, "receivers",
+                        "every image must be " + std::to_string(receivers[0].width) + "x" +
+                            std::to_string(receivers[0].height) + ", got " +
+                            std::to_string(image.width) + "x" + std::to_string(image.height));
     }
   }
-  FloatImage out(receivers.width, receivers.height, 1);
-  if (pixels.empty()) return out;
-  const PixelEvaluator sample_at(variant, map, light, receivers, precision, limits);
-  tbb::parallel_for(std::size_t(0), pixels.size(), [&](std::size_t n) {
-    const std::size_t k = pixels[n];
-    out.data[k] = float(
-        sample_at(int(k % std::size_t(receivers.width)), int(k / std::size_t(receivers.width)))
-            .visibility);
+  const std::size_t count = receivers.empty() ? 0 : receivers[0].pixel_count();
+  for (const std::size_t k : pixels) {
+    if (k >= count) {
+      return make_error(Error::Kind::bad_input, "pixels",
+                        "index " + std::to_string(k) + " is outside the " + std::to_string(count) +
+                            "-pixel receivers image");
+    }
+  }
+  std::vector<FloatImage> out;
+  for (const FloatImage& image : receivers) out.emplace_back(image.width, image.height, 1);
+  if (pixels.empty() || receivers.empty()) return out;
+  const std::optional<MinMaxMip> mip = mip_for(variant, map);
+  std::vector<PixelEvaluator> evaluators;
+  for (const FloatImage& image : receivers) {
+    evaluators.emplace_back(variant, map, mip ? &*mip : nullptr, light, image, precision, limits);
+  }
+  // Every (image, pixel) pair in parallel, each written to its own place.
+  const std::size_t width = std::size_t(receivers[0].width);
+  tbb::parallel_for(std::size_t(0), receivers.size() * pixels.size(), [&](std::size_t n) {
+    const std::size_t image = n / pixels.size();
+    const std::size_t k = pixels[n % pixels.size()];
+    out[image].data[k] = float(evaluators[image](int(k % width), int(k / width)).visibility);
   });
   return out;
 }

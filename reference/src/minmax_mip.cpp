@@ -17,8 +17,9 @@ MinMaxMip::MinMaxMip(const ShadowMapView& map) {
   Level base{map.width(), map.height(), {}};
   base.nodes.reserve(std::size_t(base.width) * base.height);
   for (int j = 0; j < base.height; ++j) {
+    const double* depths = map.row(j);
     for (int i = 0; i < base.width; ++i) {
-      const float depth = float(map.depth(i, j));
+      const float depth = float(depths[i]);
       base.nodes.push_back({depth, depth});
     }
   }

@@ -22,6 +22,15 @@ double tie_margin(const EncodedDepth& encoded, double z) {
   return stored_reach * depth_per_unit(encoded.encoding, z, encoded.range) + kReceiverReach * z;
 }
 
+ShadowMapView::ShadowMapView(const FloatImage& depth) : width_(depth.width), height_(depth.height) {
+  std::vector<double> depths(depth.pixel_count());
+  for (std::size_t k = 0; k < depths.size(); ++k) {
+    const double z = depth.data[k * std::size_t(depth.channels)];
+    depths[k] = std::isnan(z) ? std::numeric_limits<double>::infinity() : z;
+  }
+  depths_ = std::make_shared<const std::vector<double>>(std::move(depths));
+}
+
 ShadowMapView::ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded, int shift)
     : width_(stored.width), height_(stored.height) {
   std::vector<double> depths(stored.pixel_count());
@@ -31,7 +40,7 @@ ShadowMapView::ShadowMapView(const FloatImage& stored, const EncodedDepth& encod
                                    : decode_depth(encoded.encoding, d, encoded.range);
     depths[k] = std::isfinite(z) ? z + shift * tie_margin(encoded, z) : z;
   }
-  decoded_ = std::make_shared<const std::vector<double>>(std::move(depths));
+  depths_ = std::make_shared<const std::vector<double>>(std::move(depths));
 }
 
 }  // namespace penumbra::reference

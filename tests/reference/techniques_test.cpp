@@ -124,5 +124,55 @@ TEST(EvaluateImage, RejectsWrongChannelCounts) {
   EXPECT_EQ(bad_map.error().where, "shadow map");
 }
 
+// Receivers across the half-occluded map at x = 0.5, 3.5 and 6.5 texels,
+// moved `dx` texels right.
+FloatImage row_of_receivers(double dx) {
+  FloatImage receivers(3, 2, 3);
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      receivers.at(i, j, 0) = float((0.5 + 3.0 * i + dx) / 8);
+      receivers.at(i, j, 1) = 0.5f;
+      receivers.at(i, j, 2) = 10.0f;
+    }
+  }
+  return receivers;
+}
+
+TEST(EvaluateVisibility, EachImageAtTheGivenPixelsAsEvaluateImage) {
+  const std::vector<FloatImage> receivers{row_of_receivers(0.0), row_of_receivers(0.25),
+                                          row_of_receivers(-0.25)};
+  const std::vector<std::size_t> pixels{1, 3, 4};
+  for (const Variant& variant : {grid_variant(3), testing::minmax_pcf_variant(3)}) {
+    SCOPED_TRACE(variant.name);
+    const auto some = evaluate_visibility(variant, ShadowMapView(half_occluded()), LightParams{},
+                                          receivers, pixels);
+    ASSERT_TRUE(some.ok()) << some.error().to_string();
+    ASSERT_EQ(some->size(), receivers.size());
+    for (std::size_t r = 0; r < receivers.size(); ++r) {
+      const auto whole = evaluate_image(variant, half_occluded(), LightParams{}, receivers[r]);
+      ASSERT_TRUE(whole.ok()) << whole.error().to_string();
+      for (std::size_t k = 0; k < 6; ++k) {
+        const bool asked = k == 1 || k == 3 || k == 4;
+        EXPECT_EQ((*some)[r].data[k], asked ? whole->visibility.data[k] : 0.0f)
+            << "image " << r << ", pixel " << k;
+      }
+    }
+  }
+}
+
+TEST(EvaluateVisibility, RejectsImagesOfDifferentSizesAndPixelsOutside) {
+  const ShadowMapView map(half_occluded());
+  const std::vector<FloatImage> mixed{row_of_receivers(0.0), FloatImage(2, 2, 3)};
+  const std::vector<std::size_t> first{0};
+  const auto sizes = evaluate_visibility(grid_variant(1), map, LightParams{}, mixed, first);
+  ASSERT_FALSE(sizes.ok());
+  EXPECT_EQ(sizes.error().where, "receivers");
+  const std::vector<FloatImage> one{row_of_receivers(0.0)};
+  const std::vector<std::size_t> outside{6};
+  const auto index = evaluate_visibility(grid_variant(1), map, LightParams{}, one, outside);
+  ASSERT_FALSE(index.ok());
+  EXPECT_EQ(index.error().where, "pixels");
+}
+
 }  // namespace
 }  // namespace penumbra::reference

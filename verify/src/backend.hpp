@@ -128,6 +128,11 @@ class Backend {
   virtual std::string not_executed(const LibraryVariant& /*entry*/, Target /*target*/) const {
     return {};
   }
+  // Runs of `target` on this path follow soon: a path whose device takes
+  // seconds to start begins starting it now, without waiting, so that it
+  // boots while the other paths draw (Wine's runtimes). Its errors show
+  // at load().
+  virtual void expect(Target /*target*/) {}
   // `entry`'s passes for `target` (its query and the passes the query needs,
   // or screen_blur's chain), ready to run on each of `scenes`. An error
   // (a file, a front end, a mip the scenes lack) fails the run.

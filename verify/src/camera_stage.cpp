@@ -102,8 +102,11 @@ std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage
     }
     if (centre || (!corner && !exact_count)) continue;
     FloatImage& bound = out.emplace_back(exact);
-    for (std::size_t k = 0; k < bound.data.size(); ++k) {
-      bound.data[k] += float(step[k % std::size_t(exact.channels)]) * reach.data[k];
+    const auto channels = std::size_t(exact.channels);
+    for (std::size_t k = 0; k < bound.data.size(); k += channels) {
+      for (std::size_t c = 0; c < channels; ++c) {
+        bound.data[k + c] += float(step[c]) * reach.data[k + c];
+      }
     }
   }
   return out;
@@ -112,7 +115,7 @@ std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage
 Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVariant& entry,
                      const CameraStage& camera, const std::shared_ptr<const FloatImage>& own_map,
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
-                     std::span<const FloatImage> rounded) {
+                     const RoundedReceivers& rounded) {
   const SceneFixture& fixture = camera.fixture;
   // A path's own map (Wine's runtimes draw theirs) is in the fixture's depth
   // format, as the Vulkan one is.

@@ -12,6 +12,7 @@
 #include "backend.hpp"
 #include "penumbra/reference/stage.hpp"
 #include "penumbra/verify/function_form.hpp"
+#include "penumbra/verify/stage_picture.hpp"
 #include "scene_fixture.hpp"
 #include "scene_truths.hpp"
 
@@ -87,6 +88,6 @@ std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage
 Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVariant& entry,
                      const CameraStage& camera, const std::shared_ptr<const FloatImage>& own_map,
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
-                     std::span<const FloatImage> rounded = {});
+                     const RoundedReceivers& rounded = {});
 
 }  // namespace penumbra

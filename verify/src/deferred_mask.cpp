@@ -249,25 +249,28 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, Ca
   const double v_sign = traits(target).is_hlsl ? -0.5 : 0.5;
   const FloatImage receivers = rebuilt_receivers<double>(draw.camera_depth, camera_inverse, light,
                                                          light_depth, convention, v_sign);
-  std::vector<FloatImage> rounded;
-  for (Rounding rounding : {Rounding::separate, Rounding::fused}) {
-    rounded.push_back(rebuilt_receivers<float>(draw.camera_depth, camera_inverse, light,
-                                               light_depth, convention, v_sign, rounding));
-  }
-  // screen_uv within 2 ulps of the pixel's centre, along each axis.
-  constexpr double kNudge = 0x1p-22;
-  std::vector<FloatImage> nudged;
-  for (const std::array<double, 2> nudge : {std::array{kNudge, 0.0}, std::array{0.0, kNudge}}) {
-    nudged.push_back(rebuilt_receivers<double>(draw.camera_depth, camera_inverse, light,
-                                               light_depth, convention, v_sign, Rounding::separate,
-                                               nudge));
-  }
-  const FloatImage error_bound = rebuild_error_bound(draw.camera_depth, camera_inverse, light,
-                                                     light_depth, convention, v_sign);
-  for (FloatImage& bound :
-       receiver_bounds(entry.variant, receivers, rounded, nudged, error_bound)) {
-    rounded.push_back(std::move(bound));
-  }
+  // The receivers as the pass may have rebuilt them in float32.
+  const auto rounded = [&] {
+    std::vector<FloatImage> out;
+    for (Rounding rounding : {Rounding::separate, Rounding::fused}) {
+      out.push_back(rebuilt_receivers<float>(draw.camera_depth, camera_inverse, light, light_depth,
+                                             convention, v_sign, rounding));
+    }
+    // screen_uv within 2 ulps of the pixel's centre, along each axis.
+    constexpr double kNudge = 0x1p-22;
+    std::vector<FloatImage> nudged;
+    for (const std::array<double, 2> nudge : {std::array{kNudge, 0.0}, std::array{0.0, kNudge}}) {
+      nudged.push_back(rebuilt_receivers<double>(draw.camera_depth, camera_inverse, light,
+                                                 light_depth, convention, v_sign,
+                                                 Rounding::separate, nudge));
+    }
+    const FloatImage error_bound = rebuild_error_bound(draw.camera_depth, camera_inverse, light,
+                                                       light_depth, convention, v_sign);
+    for (FloatImage& bound : receiver_bounds(entry.variant, receivers, out, nudged, error_bound)) {
+      out.push_back(std::move(bound));
+    }
+    return out;
+  };
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,
                              drawn.visibility, 0, rounded));
   return check;

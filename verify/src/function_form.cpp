@@ -91,8 +91,10 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, Ca
       drawn.clip, 3, traits(target).is_hlsl ? -0.5 : 0.5, draw.light_depth.orthographic);
   // The function derived its receivers in float32: a back-projection's
   // patches move with their last bits (g(z) grows near an occluder).
-  const std::vector<FloatImage> rounded = receiver_bounds(
-      entry.variant, receivers, {}, {}, clip_error_bound(drawn.clip, 3, draw.light_depth));
+  const auto rounded = [&] {
+    return receiver_bounds(entry.variant, receivers, {}, {},
+                           clip_error_bound(drawn.clip, 3, draw.light_depth));
+  };
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,
                              drawn.clip, 2, rounded));
   return check;

@@ -74,19 +74,20 @@ Result<reference::ReferenceImage> reference_at(const Variant& variant, const Eng
 // an encoded map's depth-tie evaluations.
 Status widen_by_rounding(reference::ReferenceImage& expected, const Variant& variant,
                          const EngineMap& map, const LightParams& light,
-                         std::span<const FloatImage> rounded, std::span<const std::size_t> pixels,
+                         const RoundedReceivers& rounded, std::span<const std::size_t> pixels,
                          const reference::SamplingPrecision& precision,
                          const reference::ShaderLimits& limits) {
-  if (pixels.empty()) return {};
+  if (pixels.empty() || !rounded) return {};
+  const std::vector<FloatImage> alternatives = rounded();
   const FloatImage linear = map.encoded ? FloatImage() : linear_depths(map);
   const reference::ShadowMapView view = map.encoded
                                             ? reference::ShadowMapView(map.stored, *map.encoded)
                                             : reference::ShadowMapView(linear);
   const double half_tolerance = 0.5 * reference::tolerance(variant.technique, precision);
-  for (const FloatImage& alternative : rounded) {
-    PENUMBRA_TRY_ASSIGN(const FloatImage other,
-                        reference::evaluate_visibility(variant, view, light, alternative, pixels,
-                                                       precision, limits));
+  PENUMBRA_TRY_ASSIGN(const std::vector<FloatImage> others,
+                      reference::evaluate_visibility(variant, view, light, alternatives, pixels,
+                                                     precision, limits));
+  for (const FloatImage& other : others) {
     for (const std::size_t at : pixels) {
       const float value = other.data[at];
       const double apart = std::abs(double(expected.visibility.data[at]) - value);
@@ -126,11 +127,17 @@ FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_s
 std::vector<std::size_t> face_pixels(const reference::Stage& stage,
                                      const reference::StageView& view,
                                      const FloatImage& receivers) {
-  const auto face = [&](int x, int y) {
-    const std::size_t k = std::size_t(y) * receivers.width + x;
-    return receivers.at(x, y, 2) > 0.0f ? face_of(stage.scene, view.points[k], view.surfaces[k])
-                                        : -1;
-  };
+  // Each pixel's face, found once: every pixel is read by its quad's four.
+  std::vector<int> faces(receivers.pixel_count());
+  for (int y = 0; y < receivers.height; ++y) {
+    for (int x = 0; x < receivers.width; ++x) {
+      const std::size_t k = std::size_t(y) * receivers.width + x;
+      faces[k] = receivers.at(x, y, 2) > 0.0f
+                     ? face_of(stage.scene, view.points[k], view.surfaces[k])
+                     : -1;
+    }
+  }
+  const auto face = [&](int x, int y) { return faces[std::size_t(y) * receivers.width + x]; };
   // A box's side is parallel to a directional light's rays: the map sees it
   // edge-on, so its every point lies on an occluder's silhouette (a tie),
   // and it receives no light at any visibility.
@@ -158,7 +165,7 @@ Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
-    const reference::ShaderLimits& limits, std::span<const FloatImage> rounded) {
+    const reference::ShaderLimits& limits, const RoundedReceivers& rounded) {
   PENUMBRA_TRY_ASSIGN(reference::ReferenceImage expected,
                       reference_at(variant, map, light, receivers, precision, limits));
   const double tolerance = reference::tolerance(variant.technique, precision);

@@ -212,6 +212,9 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
   const MapKey& key = pair.maps;
   PairResult result{std::make_unique<PendingTarget>(), {}};
   PairChecks unreported;  // an earlier pair's, on another device thread
+  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+    if (backend->executes(target) && plan.runs_path(backend->name())) backend->expect(target);
+  }
   if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
     // A depth pass that cannot run fails every run of its target, not verify.
     const LibraryVariant& preparer = ctx.library.variants[pair.depth_preparer];

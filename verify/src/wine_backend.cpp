@@ -105,11 +105,17 @@ class WineBackend final : public Backend {
 
   std::string name() const override { return std::string(to_string(runtime_)); }
   // Wine names the adapter its own way (a GeForce whatever GL renders with).
-  std::string device() const override { return engine_ ? "Wine's " + engine_->description() : ""; }
+  std::string device() const override {
+    return engine_ && !engine_->description().empty() ? "Wine's " + engine_->description() : "";
+  }
   std::string missing() const override { return missing_; }
   bool executes(Target target) const override { return runtime_for(target) == runtime_; }
   std::string not_executed(const LibraryVariant& entry, Target target) const override {
     return lacking_bytecode(entry, target);
+  }
+
+  void expect(Target target) override {
+    if (executes(target) && missing_.empty()) static_cast<void>(launch());
   }
 
   Result<LoadedPasses> load(const Library& library, const LibraryVariant& entry, Target target,
@@ -194,13 +200,24 @@ class WineBackend final : public Backend {
   }
 
  private:
-  Status start() {
+  // The host started, once: a failure to start is kept for every later call.
+  Status launch() {
     if (engine_) return {};
-    PENUMBRA_TRY_ASSIGN(auto session, session_->get());
+    if (launch_error_) return *launch_error_;
+    auto session = session_->get();
+    if (!session) return *(launch_error_ = session.error());
     D3dEngineOptions options;
     options.runtime = runtime_;
-    PENUMBRA_TRY_ASSIGN(engine_, D3dEngine::create(session, options));
+    auto engine = D3dEngine::launch(*session, options);
+    if (!engine) return *(launch_error_ = engine.error());
+    engine_ = std::move(*engine);
     return {};
+  }
+
+  // The host started and its device made.
+  Status start() {
+    PENUMBRA_TRY(launch());
+    return engine_->ready();
   }
 
   // The fixture's scene drawn by the target's depth pass on this runtime,
@@ -233,6 +250,7 @@ class WineBackend final : public Backend {
   std::string missing_;
   BytecodeTranslator compiler_;  // compiles an engine's own HLSL (draw_surface)
   std::unique_ptr<D3dEngine> engine_;
+  std::optional<Error> launch_error_;  // why the host could not start
   std::map<std::string, RuntimeMap> maps_;
 };
 

@@ -56,18 +56,24 @@ std::optional<D3dRuntime> runtime_for(Target target) {
 }
 
 D3dEngine::D3dEngine(std::shared_ptr<WineSession> session, D3dEngineOptions options,
-                     std::unique_ptr<d3d::HostProcess> host, std::string description)
+                     std::unique_ptr<d3d::HostProcess> host)
     : session_(std::move(session)),
       options_(std::move(options)),
       runtime_(options_.runtime),
-      host_(std::move(host)),
-      description_(std::move(description)) {}
+      host_(std::move(host)) {}
 
 D3dEngine::~D3dEngine() {
   if (host_) static_cast<void>(host_->write("quit\n"));
 }
 
 Result<std::unique_ptr<D3dEngine>> D3dEngine::create(std::shared_ptr<WineSession> session,
+                                                     const D3dEngineOptions& options) {
+  PENUMBRA_TRY_ASSIGN(std::unique_ptr<D3dEngine> engine, launch(std::move(session), options));
+  PENUMBRA_TRY(engine->ready());
+  return engine;
+}
+
+Result<std::unique_ptr<D3dEngine>> D3dEngine::launch(std::shared_ptr<WineSession> session,
                                                      const D3dEngineOptions& options) {
   const std::filesystem::path host = options.host.empty() ? default_d3d_host() : options.host;
   if (host.empty() || !std::filesystem::exists(host)) {
@@ -79,20 +85,31 @@ Result<std::unique_ptr<D3dEngine>> D3dEngine::create(std::shared_ptr<WineSession
       {session->wine(), host.string(), std::string(to_string(options.runtime))},
       session->environment(), session->log().string());
   if (!process) return process.error();
-  auto host_process = std::make_unique<d3d::HostProcess>(std::move(*process));
+  return std::unique_ptr<D3dEngine>(new D3dEngine(
+      std::move(session), options, std::make_unique<d3d::HostProcess>(std::move(*process))));
+}
+
+Status D3dEngine::ready() {
+  if (failed_to_start_) return *failed_to_start_;
+  if (answered_) return {};
   // A new prefix is made on the first start: that takes a while.
-  auto hello = host_process->read_line(std::chrono::seconds(180));
-  if (!hello) return hello.error();
-  if (hello->rfind("ready ", 0) != 0) {
-    return make_error(Error::Kind::device, std::string(to_string(options.runtime)),
-                      "the host could not start it: " + *hello +
-                          " (Wine's log: " + session->log().string() + ")");
+  auto hello = host_->read_line(std::chrono::seconds(180));
+  if (!hello) {
+    failed_to_start_ = hello.error();
+  } else if (hello->rfind("ready ", 0) != 0) {
+    failed_to_start_ = make_error(Error::Kind::device, std::string(to_string(options_.runtime)),
+                                  "the host could not start it: " + *hello +
+                                      " (Wine's log: " + session_->log().string() + ")");
+  } else {
+    description_ = hello->substr(6);
+    answered_ = true;
+    return {};
   }
-  return std::unique_ptr<D3dEngine>(
-      new D3dEngine(std::move(session), options, std::move(host_process), hello->substr(6)));
+  return *failed_to_start_;
 }
 
 Status D3dEngine::run(d3d::Job& job) {
+  PENUMBRA_TRY(ready());
   const std::string tag = std::to_string(job.number_);
   std::string text = std::move(pending_releases_) + job.commands_ + "sync " + tag + "\n";
   pending_releases_.clear();

@@ -44,13 +44,13 @@ double tie_margin(const EncodedDepth& encoded, double z);
 
 class ShadowMapView {
  public:
-  // Reads channel 0 of `depth`, linear z; the image must outlive the view.
-  explicit ShadowMapView(const FloatImage& depth)
-      : image_(&depth), width_(depth.width), height_(depth.height) {}
+  // Reads channel 0 of `depth`, linear z. Copies it, once: the reference
+  // reads each texel many times.
+  explicit ShadowMapView(const FloatImage& depth);
   // Reads channel 0 of `stored`, values in `encoded`'s encoding, each
   // decoded depth moved `shift` (-1, 0 or +1) tie_margin()s away from the
   // light, to find the receivers a shader's rounding decides. Decodes every
-  // texel once, here: the reference reads each many times.
+  // texel once, here.
   ShadowMapView(const FloatImage& stored, const EncodedDepth& encoded, int shift = 0);
 
   int width() const { return width_; }
@@ -61,14 +61,13 @@ class ShadowMapView {
   double depth(int i, int j) const {
     const int ci = std::clamp(i, 0, width_ - 1);
     const int cj = std::clamp(j, 0, height_ - 1);
-    if (decoded_) return (*decoded_)[std::size_t(cj) * std::size_t(width_) + std::size_t(ci)];
-    const double z = image_->at(ci, cj);
-    return std::isnan(z) ? std::numeric_limits<double>::infinity() : z;
+    return row(cj)[ci];
   }
+  // The depths of row j (0 <= j < height()), as depth() reads them.
+  const double* row(int j) const { return depths_->data() + std::size_t(j) * std::size_t(width_); }
 
  private:
-  const FloatImage* image_ = nullptr;
-  std::shared_ptr<const std::vector<double>> decoded_;  // an encoded map's depths
+  std::shared_ptr<const std::vector<double>> depths_;  // row 0 first, views share them
   int width_ = 0;
   int height_ = 0;
 };

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "penumbra/model/light.hpp"
 #include "penumbra/model/model.hpp"
@@ -192,15 +193,16 @@ Result<ReferenceImage> evaluate_image(const Variant& variant, const FloatImage& 
                                       const SamplingPrecision& precision = {},
                                       const ShaderLimits& limits = {});
 
-// The visibility alone of `pixels` (row-major indices into `receivers`)
-// against `map`, every other pixel 0: for a check that needs the
-// reference at a few pixels, without the depth_tie evaluations an encoded
-// map's evaluate_image() makes. Errors: as evaluate_image()'s, and
-// bad_input for an index outside the image.
-Result<FloatImage> evaluate_visibility(const Variant& variant, const ShadowMapView& map,
-                                       const LightParams& light, const FloatImage& receivers,
-                                       std::span<const std::size_t> pixels,
-                                       const SamplingPrecision& precision = {},
-                                       const ShaderLimits& limits = {});
+// The visibility alone of `pixels` (row-major indices into each image of
+// `receivers`, all of one size) against `map`, every other pixel 0: one
+// image per receivers image, for a check that needs the reference at a few
+// pixels under several receivers, without the depth_tie evaluations an
+// encoded map's evaluate_image() makes. The mip, where the technique reads
+// it, is built once for all of them. Errors: as evaluate_image()'s, and
+// bad_input for images of different sizes or an index outside them.
+Result<std::vector<FloatImage>> evaluate_visibility(
+    const Variant& variant, const ShadowMapView& map, const LightParams& light,
+    std::span<const FloatImage> receivers, std::span<const std::size_t> pixels,
+    const SamplingPrecision& precision = {}, const ShaderLimits& limits = {});
 
 }  // namespace penumbra::reference

@@ -7,8 +7,9 @@
 // draw them.
 #pragma once
 
+#include <functional>
 #include <optional>
-#include <span>
+#include <vector>
 
 #include "penumbra/model/model.hpp"
 #include "penumbra/reference/compare.hpp"
@@ -62,21 +63,27 @@ FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_s
 std::vector<std::size_t> face_pixels(const reference::Stage& stage,
                                      const reference::StageView& view, const FloatImage& receivers);
 
+// The same receivers as float32 shaders may compute them, where the GPU's
+// own are not known exactly, each the receivers' size: made only when a
+// check needs them, since most pictures match the reference without them.
+using RoundedReceivers = std::function<std::vector<FloatImage>()>;
+
 // `visibility` (channel `channel`), drawn by `variant`'s function form at
 // `receivers` (the view's size) on `map` under `light`, against the reference.
-// `rounded` holds the same receivers as float32 shaders may compute them, where
+// `rounded` makes the same receivers as float32 shaders may compute them, where
 // the GPU's own are not known exactly: a pixel whose reference differs at one
 // of them by over half the tolerance is ambiguous. A pixel ambiguous only for
 // that reason or for depth ties (the reference's `low` and `high`) is compared
 // with the nearest value of the reference's range over those alternatives where
 // the GPU's value lies within the tolerance of it, and left out elsewhere. The
-// alternatives are evaluated only at the pixels where the GPU lies over a tenth
-// of the tolerance from the reference: elsewhere they cannot change the
-// outcome. Errors: the reference's, for inputs it cannot evaluate.
+// alternatives are made and evaluated only where the GPU lies over a tenth of
+// the tolerance from the reference at some pixel, and there only at those
+// pixels: elsewhere they cannot change the outcome. Errors: the reference's, for inputs it cannot
+// evaluate.
 Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
-    const reference::ShaderLimits& limits, std::span<const FloatImage> rounded = {});
+    const reference::ShaderLimits& limits, const RoundedReceivers& rounded = {});
 
 }  // namespace penumbra

@@ -9,12 +9,13 @@
 // chain such as screen_blur's), and an engine's own geometry around a
 // function form, and reads targets back; no call names a technique.
 //
-// Lifecycle: create() starts one host process for the runtime in `session`;
-// every later call is one run of the pass driver (penumbra/runtime/
-// pass_driver.hpp) on a device that writes one job list and sends it to the
-// host when it reads back (no process per draw); calls come from one thread
-// at a time. Destroying the engine ends the host.
-// Every failure is a returned Error, never an exception.
+// Lifecycle: create() starts one host process for the runtime in `session`
+// and waits until it has made its device; launch() starts it without
+// waiting, so that Wine boots while the caller does other work, and
+// ready() (or the first draw) waits. Every later call is one run of the pass driver
+// (penumbra/runtime/ pass_driver.hpp) on a device that writes one job list and sends it to the host
+// when it reads back (no process per draw); calls come from one thread at a time. Destroying the
+// engine ends the host. Every failure is a returned Error, never an exception.
 #pragma once
 
 #include <array>
@@ -107,15 +108,22 @@ struct D3dQueryOutput {
 
 class D3dEngine {
  public:
-  // Starts the host for `options.runtime`. Errors: device (no host, Wine
-  // cannot create the device; the host's own words).
+  // Starts the host for `options.runtime` and waits for its device. Errors:
+  // device (no host, Wine cannot create the device; the host's own words).
   static Result<std::unique_ptr<D3dEngine>> create(std::shared_ptr<WineSession> session,
                                                    const D3dEngineOptions& options);
+  // Starts the host without waiting for it. Errors: as create()'s for a
+  // host that cannot start; the device's own at ready().
+  static Result<std::unique_ptr<D3dEngine>> launch(std::shared_ptr<WineSession> session,
+                                                   const D3dEngineOptions& options);
+  // Waits until the host has made its device (at once after the first
+  // time). Errors: as create()'s, the same on every later call and draw.
+  Status ready();
   D3dEngine(const D3dEngine&) = delete;
   D3dEngine& operator=(const D3dEngine&) = delete;
   ~D3dEngine();
 
-  // "Direct3D 9 on <adapter>" as the host reports it.
+  // "Direct3D 9 on <adapter>" as the host reports it; empty before ready().
   const std::string& description() const { return description_; }
   D3dRuntime runtime() const { return runtime_; }
 
@@ -182,7 +190,7 @@ class D3dEngine {
   friend class d3d::Job;  // creates ids, shares the shader caches, runs itself
 
   D3dEngine(std::shared_ptr<WineSession> session, D3dEngineOptions options,
-            std::unique_ptr<d3d::HostProcess> host, std::string description);
+            std::unique_ptr<d3d::HostProcess> host);
   // Sends `job`'s commands and waits for the host's answer.
   Status run(d3d::Job& job);
   int next_id() { return next_id_++; }
@@ -191,7 +199,9 @@ class D3dEngine {
   D3dEngineOptions options_;
   D3dRuntime runtime_;
   std::unique_ptr<d3d::HostProcess> host_;
-  std::string description_;
+  bool answered_ = false;                 // the host has said "ready"
+  std::string description_;               // from that line
+  std::optional<Error> failed_to_start_;  // its answer instead, or its silence
   int next_id_ = 1;
   std::map<std::string, int> shaders_;            // bytecode (its bytes) -> host id, loaded once
   std::map<std::string, int> constant_textures_;  // D3D9 disks: texels -> host id
