@@ -56,9 +56,13 @@ double bilinear_compare(const ShadowMapView& map, double u, double v, double z_r
   // Far outside the map every texel clamps to the edge; keep the indices in int range.
   const int i0 = int(std::clamp(fx, -1.0, double(map.width())));
   const int j0 = int(std::clamp(fy, -1.0, double(map.height())));
-  auto cmp = [&](int i, int j) { return lit(z_ref, map.depth(i, j)) ? 1.0 : 0.0; };
-  return (1 - a) * (1 - b) * cmp(i0, j0) + a * (1 - b) * cmp(i0 + 1, j0) +
-         (1 - a) * b * cmp(i0, j0 + 1) + a * b * cmp(i0 + 1, j0 + 1);
+  // Clamp to the edge once per row and column, not once per texel.
+  const int c0 = std::clamp(i0, 0, map.width() - 1), c1 = std::clamp(i0 + 1, 0, map.width() - 1);
+  const double* r0 = map.row(std::clamp(j0, 0, map.height() - 1));
+  const double* r1 = map.row(std::clamp(j0 + 1, 0, map.height() - 1));
+  auto cmp = [&](const double* row, int i) { return lit(z_ref, row[i]) ? 1.0 : 0.0; };
+  return (1 - a) * (1 - b) * cmp(r0, c0) + a * (1 - b) * cmp(r0, c1) + (1 - a) * b * cmp(r1, c0) +
+         a * b * cmp(r1, c1);
 }
 
 }  // namespace penumbra::reference

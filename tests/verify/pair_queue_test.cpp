@@ -1,7 +1,7 @@
 // The queue that hands the plan's pairs to verify's device threads
 // (verify/src/pair_queue.hpp), without a device: each pair once, each
 // target's to its own thread in plan order until that thread runs out, from
-// any number of threads; the pair that reports each map's checks; a
+// any number of threads; each thread's own targets; the pair that reports each map's checks; a
 // variant's references shared by its pairs and let go after its last.
 #include "pair_queue.hpp"
 
@@ -45,6 +45,16 @@ TEST(PairQueue, HandsOutEveryPairInPlanOrderWithWhatItReports) {
   EXPECT_THAT(claimed, ElementsAre("0.0 maps", "0.1 maps", "1.0 maps", "2.0 minmax", "2.1 minmax",
                                    "3.0 maps minmax", "4.0"));
   EXPECT_FALSE(queue.next(0));
+}
+
+TEST(PairQueue, NamesEachThreadsOwnTargetsInPlanOrder) {
+  const VerifyPlan p = plan();
+  const PairQueue queue(p, 2);
+  // spirv and hlsl_dx9 (targets 0 and 6) are thread 0's, glsl450 thread 1's.
+  EXPECT_THAT(queue.own_targets(0), ElementsAre(Target::spirv, Target::hlsl_dx9));
+  EXPECT_THAT(queue.own_targets(1), ElementsAre(Target::glsl450));
+  const PairQueue one(p, 1);
+  EXPECT_THAT(one.own_targets(0), ElementsAre(Target::spirv, Target::glsl450, Target::hlsl_dx9));
 }
 
 TEST(PairQueue, GivesEachThreadItsTargetsThenTheRest) {

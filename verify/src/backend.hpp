@@ -157,12 +157,14 @@ class Backend {
                                            Execution& execution) = 0;
 };
 
-class CameraStages;  // camera_stage.hpp
+class CameraStages;       // camera_stage.hpp
+class PictureReferences;  // penumbra/verify/stage_picture.hpp
 
 // `entry`'s function form for `target` drawn on `backend`, the scene's map
-// drawn on `engine` by the target's depth pass, from `stages`
-// (function_form.cpp).
+// drawn on `engine` by the target's depth pass, from `stages`, judged
+// against a reference from `references` (function_form.cpp).
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
+                                            PictureReferences& references,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target);
 
@@ -173,9 +175,10 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
                                     const TargetScenes& scenes, const PassLoader& load);
 
 // `entry`'s deferred pass for `target` run on `backend`, the scene's map
-// drawn on `engine` by the target's depth pass, from `stages`
-// (deferred_mask.cpp).
+// drawn on `engine` by the target's depth pass, from `stages`, judged
+// against a reference from `references` (deferred_mask.cpp).
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
+                                            PictureReferences& references,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target);
 

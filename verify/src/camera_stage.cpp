@@ -115,7 +115,7 @@ std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage
 Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVariant& entry,
                      const CameraStage& camera, const std::shared_ptr<const FloatImage>& own_map,
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
-                     const RoundedReceivers& rounded) {
+                     const RoundedReceivers& rounded, PictureReferences* references) {
   const SceneFixture& fixture = camera.fixture;
   // A path's own map (Wine's runtimes draw theirs) is in the fixture's depth
   // format, as the Vulkan one is.
@@ -128,7 +128,7 @@ Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVarian
       const StagePictureCheck picture,
       check_stage_picture(entry.variant, camera.stage, camera.view, map, fixture.scene.light,
                           receivers, visibility, channel, precision,
-                          reference::shader_limits(check.target), rounded));
+                          reference::shader_limits(check.target), rounded, references));
   check.comparison = picture.comparison;
   check.surface_pixels = picture.surface_pixels;
   check.camera_agreement = picture.camera_agreement;

@@ -83,11 +83,12 @@ std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage
 
 // `check`'s results: `visibility` (channel `channel`) against the reference
 // at `receivers` on the map the picture read (`own_stored_depth`, or the
-// fixture's), with `rounded` as check_stage_picture() takes it. Errors: the
-// reference's.
+// fixture's), with `rounded` and `references` as check_stage_picture()
+// takes them. Errors: the reference's.
 Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVariant& entry,
                      const CameraStage& camera, const std::shared_ptr<const FloatImage>& own_map,
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
-                     const RoundedReceivers& rounded = {});
+                     const RoundedReceivers& rounded = {},
+                     PictureReferences* references = nullptr);
 
 }  // namespace penumbra

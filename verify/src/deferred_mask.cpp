@@ -212,6 +212,7 @@ FloatImage rebuild_error_bound(const FloatImage& depth, const Matrix4& camera_in
 }  // namespace
 
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
+                                            PictureReferences& references,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target) {
   const auto pass = entry.reflection.find(PassKind::deferred);
@@ -272,7 +273,7 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, Ca
     return out;
   };
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,
-                             drawn.visibility, 0, rounded));
+                             drawn.visibility, 0, rounded, &references));
   return check;
 }
 
@@ -281,7 +282,8 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& libra
                                             DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
   CameraStages stages(engine, map_format);
-  return check_deferred_mask(engine, *vulkan, stages, library, entry, target);
+  PictureReferences references;
+  return check_deferred_mask(engine, *vulkan, stages, references, library, entry, target);
 }
 
 }  // namespace penumbra

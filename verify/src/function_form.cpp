@@ -52,6 +52,7 @@ FloatImage clip_error_bound(const FloatImage& clip, int w_channel, const LightCl
 }  // namespace
 
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
+                                            PictureReferences& references,
                                             const Library& library, const LibraryVariant& entry,
                                             Target target) {
   const auto form = entry.function.find(target);
@@ -96,7 +97,7 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, Ca
                            clip_error_bound(drawn.clip, 3, draw.light_depth));
   };
   PENUMBRA_TRY(judge_picture(check, engine, entry, camera, drawn.own_stored_depth, receivers,
-                             drawn.clip, 2, rounded));
+                             drawn.clip, 2, rounded, &references));
   return check;
 }
 
@@ -105,7 +106,8 @@ Result<EngineFormCheck> check_function_form(Engine& engine, const Library& libra
                                             DepthFormat map_format) {
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
   CameraStages stages(engine, map_format);
-  return check_function_form(engine, *vulkan, stages, library, entry, target);
+  PictureReferences references;
+  return check_function_form(engine, *vulkan, stages, references, library, entry, target);
 }
 
 }  // namespace penumbra

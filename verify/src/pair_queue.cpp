@@ -6,7 +6,7 @@
 namespace penumbra {
 
 PairQueue::PairQueue(const VerifyPlan& plan, std::size_t threads)
-    : own_(std::max<std::size_t>(threads, 1)) {
+    : own_(std::max<std::size_t>(threads, 1)), own_targets_(own_.size()) {
   std::set<MapKey> read, built;
   for (std::size_t v = 0; v < plan.variants.size(); ++v) {
     const std::vector<PlannedPair>& pairs = plan.variants[v].pairs;
@@ -16,7 +16,11 @@ PairQueue::PairQueue(const VerifyPlan& plan, std::size_t threads)
                          .pair = p,
                          .reports_maps = read.insert(pairs[p].maps).second,
                          .reports_minmax = minmax && built.insert(pairs[p].maps).second});
-      own_[static_cast<std::size_t>(pairs[p].target) % own_.size()].push_back(claims_.size() - 1);
+      const std::size_t owner = static_cast<std::size_t>(pairs[p].target) % own_.size();
+      own_[owner].push_back(claims_.size() - 1);
+      if (std::ranges::find(own_targets_[owner], pairs[p].target) == own_targets_[owner].end()) {
+        own_targets_[owner].push_back(pairs[p].target);
+      }
     }
     // Made before any check can ask for them; empty until one does.
     references_.push_back(variant_references());

@@ -39,11 +39,16 @@ class PairQueue {
 
   // Device thread `thread`'s next pair; none once every pair is claimed.
   std::optional<Claim> next(std::size_t thread);
+  // The targets whose pairs belong to device thread `thread`, in plan order.
+  const std::vector<Target>& own_targets(std::size_t thread) const {
+    return own_targets_[thread % own_targets_.size()];
+  }
 
  private:
   std::mutex mutex_;
   std::vector<Claim> claims_;                 // in plan order, without their references
   std::vector<std::deque<std::size_t>> own_;  // per thread: its pairs left, in plan order
+  std::vector<std::vector<Target>> own_targets_;  // per thread: the targets of its pairs
   std::vector<std::shared_ptr<VariantReferences>> references_;  // per planned variant
   std::vector<std::size_t> unclaimed_;  // per planned variant: its pairs left
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <span>
 
@@ -68,6 +69,11 @@ Result<reference::ReferenceImage> reference_at(const Variant& variant, const Eng
                                    limits);
 }
 
+bool same_bytes(const FloatImage& a, const FloatImage& b) {
+  return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
+
 // Widens `expected` at `pixels` by the reference at each of `rounded`:
 // receiver_rounding where it differs by over half the tolerance, and its
 // value in [low, high]. The map is decoded once for all of them, without
@@ -103,6 +109,25 @@ Status widen_by_rounding(reference::ReferenceImage& expected, const Variant& var
 }
 
 }  // namespace
+
+Result<reference::ReferenceImage> PictureReferences::get(
+    const Variant& variant, const EngineMap& map, const LightParams& light,
+    const FloatImage& receivers, const reference::SamplingPrecision& precision,
+    const reference::ShaderLimits& limits) {
+  for (const Entry& e : entries_) {
+    if (e.variant == variant.name && e.light == light &&
+        e.sub_texel_bits == precision.sub_texel_bits && e.limits == limits &&
+        e.encoded == map.encoded && e.depth_scale == map.depth_scale &&
+        same_bytes(e.map, map.stored) && same_bytes(e.receivers, receivers)) {
+      return e.value;
+    }
+  }
+  PENUMBRA_TRY_ASSIGN(reference::ReferenceImage value,
+                      reference_at(variant, map, light, receivers, precision, limits));
+  entries_.push_back({variant.name, light, precision.sub_texel_bits, limits, map.encoded,
+                      map.depth_scale, map.stored, receivers, value});
+  return value;
+}
 
 FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_sign,
                                bool orthographic) {
@@ -165,9 +190,12 @@ Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
-    const reference::ShaderLimits& limits, const RoundedReceivers& rounded) {
+    const reference::ShaderLimits& limits, const RoundedReceivers& rounded,
+    PictureReferences* references) {
   PENUMBRA_TRY_ASSIGN(reference::ReferenceImage expected,
-                      reference_at(variant, map, light, receivers, precision, limits));
+                      references
+                          ? references->get(variant, map, light, receivers, precision, limits)
+                          : reference_at(variant, map, light, receivers, precision, limits));
   const double tolerance = reference::tolerance(variant.technique, precision);
   StagePictureCheck check;
   check.camera_agreement = camera_agreement(view, receivers);

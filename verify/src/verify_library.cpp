@@ -14,6 +14,7 @@
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
+#include "penumbra/verify/stage_picture.hpp"
 #include "penumbra/verify/verify.hpp"
 #include "progress_counter.hpp"
 #include "scene_checks.hpp"
@@ -56,12 +57,13 @@ struct Context {
 // `entry`'s function form or deferred pass (`check`) for `target` on
 // `backend`; one that cannot run fails with why.
 using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, CameraStages&,
-                                                      const Library&, const LibraryVariant&,
-                                                      Target);
+                                                      PictureReferences&, const Library&,
+                                                      const LibraryVariant&, Target);
 EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend& backend,
-                                const LibraryVariant& entry, Target target) {
+                                PictureReferences& references, const LibraryVariant& entry,
+                                Target target) {
   const auto start = Clock::now();
-  auto check = checker(ctx.engine, backend, ctx.cameras, ctx.library, entry, target);
+  auto check = checker(ctx.engine, backend, ctx.cameras, references, ctx.library, entry, target);
   EngineFormCheck out = check ? std::move(*check) : EngineFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
@@ -178,16 +180,18 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
 }
 
 // `entry`'s function form and deferred pass for `target` on each path the
-// plan runs that can draw them.
+// plan runs that can draw them, each picture's reference evaluated once
+// for all the paths that drew the same inputs.
 void run_engine_forms(Context& ctx, const VerifyPlan& plan, const LibraryVariant& entry,
                       Target target, PairChecks& report) {
+  PictureReferences references;
   for (const std::unique_ptr<Backend>& backend : ctx.backends) {
     if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
         !backend->missing().empty() || !plan.runs_path(backend->name())) {
       continue;
     }
     report.function_checks.push_back(
-        run_engine_form(ctx, check_function_form, *backend, entry, target));
+        run_engine_form(ctx, check_function_form, *backend, references, entry, target));
   }
   for (const std::unique_ptr<Backend>& backend : ctx.backends) {
     if (!runs_pass(PassKind::deferred, entry.variant) || !backend->executes(target) ||
@@ -196,7 +200,15 @@ void run_engine_forms(Context& ctx, const VerifyPlan& plan, const LibraryVariant
       continue;
     }
     report.deferred_checks.push_back(
-        run_engine_form(ctx, check_deferred_mask, *backend, entry, target));
+        run_engine_form(ctx, check_deferred_mask, *backend, references, entry, target));
+  }
+}
+
+// Starts, without waiting, the devices of `target`'s paths that take
+// seconds to start (Backend::expect()).
+void expect(Context& ctx, const VerifyPlan& plan, Target target) {
+  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+    if (backend->executes(target) && plan.runs_path(backend->name())) backend->expect(target);
   }
 }
 
@@ -212,9 +224,7 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
   const MapKey& key = pair.maps;
   PairResult result{std::make_unique<PendingTarget>(), {}};
   PairChecks unreported;  // an earlier pair's, on another device thread
-  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-    if (backend->executes(target) && plan.runs_path(backend->name())) backend->expect(target);
-  }
+  expect(ctx, plan, target);  // a pair of another thread's target
   if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
     // A depth pass that cannot run fails every run of its target, not verify.
     const LibraryVariant& preparer = ctx.library.variants[pair.depth_preparer];
@@ -290,6 +300,9 @@ void drive_devices(Drive& drive, Engine& engine, std::size_t thread) {
   for (const auto& backend : ctx.backends) {
     if (thread == 0 && backend->name() == "gl") drive.gl_device = backend->device();
   }
+  // Every target this thread owns starts its slow devices now, while the
+  // thread draws its first pairs.
+  for (const Target target : drive.queue.own_targets(thread)) expect(ctx, drive.plan, target);
   drive.work.run([&] {
     while (const std::optional<PairQueue::Claim> claim = drive.queue.next(thread)) {
       drive.results[claim->variant][claim->pair] =

@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "penumbra/model/model.hpp"
@@ -63,6 +64,38 @@ FloatImage receivers_from_clip(const FloatImage& clip, int w_channel, double v_s
 std::vector<std::size_t> face_pixels(const reference::Stage& stage,
                                      const reference::StageView& view, const FloatImage& receivers);
 
+// The references one device thread's pictures of one (variant, target)
+// pair were judged against, by their inputs byte for byte: the target's
+// paths often draw pictures of the same receivers on the same map (the
+// deferred pass's receivers are rebuilt on the CPU; every path that reads
+// the prepared map reads the same texels), and the reference is most of
+// what judging a picture costs. For one thread at a time.
+class PictureReferences {
+ public:
+  // The reference at `receivers` on `map` for `variant` under `light`,
+  // evaluated on the first call with inputs equal to these, copied after.
+  Result<reference::ReferenceImage> get(const Variant& variant, const EngineMap& map,
+                                        const LightParams& light, const FloatImage& receivers,
+                                        const reference::SamplingPrecision& precision,
+                                        const reference::ShaderLimits& limits);
+  // How many distinct inputs it has evaluated.
+  std::size_t evaluated() const { return entries_.size(); }
+
+ private:
+  struct Entry {
+    std::string variant;
+    LightParams light;
+    int sub_texel_bits = 0;
+    reference::ShaderLimits limits;
+    std::optional<reference::EncodedDepth> encoded;
+    double depth_scale = 1.0;
+    FloatImage map;  // as stored
+    FloatImage receivers;
+    reference::ReferenceImage value;
+  };
+  std::vector<Entry> entries_;
+};
+
 // The same receivers as float32 shaders may compute them, where the GPU's
 // own are not known exactly, each the receivers' size: made only when a
 // check needs them, since most pictures match the reference without them.
@@ -78,12 +111,14 @@ using RoundedReceivers = std::function<std::vector<FloatImage>()>;
 // the GPU's value lies within the tolerance of it, and left out elsewhere. The
 // alternatives are made and evaluated only where the GPU lies over a tenth of
 // the tolerance from the reference at some pixel, and there only at those
-// pixels: elsewhere they cannot change the outcome. Errors: the reference's, for inputs it cannot
+// pixels: elsewhere they cannot change the outcome. With `references`, the
+// reference comes from there. Errors: the reference's, for inputs it cannot
 // evaluate.
 Result<StagePictureCheck> check_stage_picture(
     const Variant& variant, const reference::Stage& stage, const reference::StageView& view,
     const EngineMap& map, const LightParams& light, const FloatImage& receivers,
     const FloatImage& visibility, int channel, const reference::SamplingPrecision& precision,
-    const reference::ShaderLimits& limits, const RoundedReceivers& rounded = {});
+    const reference::ShaderLimits& limits, const RoundedReceivers& rounded = {},
+    PictureReferences* references = nullptr);
 
 }  // namespace penumbra
