@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -40,6 +41,18 @@ std::string read_error(const std::filesystem::path& path) {
   const auto image = read_pfm(path);
   EXPECT_FALSE(image.ok());
   return image.ok() ? "" : image.error().to_string();
+}
+
+TEST(FloatImageBytes, SameBytesComparesValuesBitForBitAndTheShape) {
+  FloatImage a(2, 1, 1);
+  a.data = {std::nanf(""), 1.0f};
+  FloatImage b = a;
+  EXPECT_TRUE(same_bytes(a, b));  // a NaN equals itself
+  b.data[1] = -0.0f;
+  a.data[1] = 0.0f;
+  EXPECT_FALSE(same_bytes(a, b));  // -0 is not 0
+  EXPECT_FALSE(same_bytes(FloatImage(2, 1, 1), FloatImage(1, 2, 1)));
+  EXPECT_FALSE(same_bytes(FloatImage(2, 1, 1), FloatImage(2, 1, 2)));
 }
 
 TEST(Pfm, RoundTripsOneChannel) {

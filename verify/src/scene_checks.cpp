@@ -1,6 +1,5 @@
 #include "scene_checks.hpp"
 
-#include <cstring>
 #include <string_view>
 
 #include "chain_check.hpp"
@@ -47,10 +46,7 @@ struct ImageKey {
         hash(std::hash<std::string_view>{}(
             {reinterpret_cast<const char*>(i.data.data()), i.data.size() * sizeof(float)})) {}
   bool operator==(const ImageKey& o) const {
-    return hash == o.hash && image->width == o.image->width && image->height == o.image->height &&
-           image->channels == o.image->channels &&
-           std::memcmp(image->data.data(), o.image->data.data(),
-                       image->data.size() * sizeof(float)) == 0;
+    return hash == o.hash && same_bytes(*image, *o.image);
   }
   const FloatImage* image;  // outlives the key: the fixture's, or a run's output
   std::size_t hash;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <span>
 
@@ -67,11 +66,6 @@ Result<reference::ReferenceImage> reference_at(const Variant& variant, const Eng
   }
   return reference::evaluate_image(variant, linear_depths(map), light, receivers, precision,
                                    limits);
-}
-
-bool same_bytes(const FloatImage& a, const FloatImage& b) {
-  return a.width == b.width && a.height == b.height && a.channels == b.channels &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 // Widens `expected` at `pixels` by the reference at each of `rounded`:

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 namespace penumbra {
@@ -25,5 +26,12 @@ struct FloatImage {
     return (static_cast<std::size_t>(j) * width + i) * channels + c;
   }
 };
+
+// Whether `a` and `b` hold the same values byte for byte, their sizes and
+// channels too: a NaN equals itself, -0 differs from 0.
+inline bool same_bytes(const FloatImage& a, const FloatImage& b) {
+  return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
 
 }  // namespace penumbra
