@@ -88,7 +88,6 @@ std::vector<FloatImage> receiver_bounds(const Variant& variant, const FloatImage
 Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVariant& entry,
                      const CameraStage& camera, const std::shared_ptr<const FloatImage>& own_map,
                      const FloatImage& receivers, const FloatImage& visibility, int channel,
-                     const RoundedReceivers& rounded = {},
-                     PictureReferences* references = nullptr);
+                     const RoundedReceivers& rounded = {}, PictureReferences* references = nullptr);
 
 }  // namespace penumbra

@@ -212,9 +212,8 @@ FloatImage rebuild_error_bound(const FloatImage& depth, const Matrix4& camera_in
 }  // namespace
 
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
-                                            PictureReferences& references,
-                                            const Library& library, const LibraryVariant& entry,
-                                            Target target) {
+                                            PictureReferences& references, const Library& library,
+                                            const LibraryVariant& entry, Target target) {
   const auto pass = entry.reflection.find(PassKind::deferred);
   if (pass == entry.reflection.end() || !pass->second.contains(target)) {
     return make_error(

@@ -52,9 +52,8 @@ FloatImage clip_error_bound(const FloatImage& clip, int w_channel, const LightCl
 }  // namespace
 
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
-                                            PictureReferences& references,
-                                            const Library& library, const LibraryVariant& entry,
-                                            Target target) {
+                                            PictureReferences& references, const Library& library,
+                                            const LibraryVariant& entry, Target target) {
   const auto form = entry.function.find(target);
   if (form == entry.function.end()) {
     return make_error(

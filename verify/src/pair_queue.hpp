@@ -46,8 +46,8 @@ class PairQueue {
 
  private:
   std::mutex mutex_;
-  std::vector<Claim> claims_;                 // in plan order, without their references
-  std::vector<std::deque<std::size_t>> own_;  // per thread: its pairs left, in plan order
+  std::vector<Claim> claims_;                     // in plan order, without their references
+  std::vector<std::deque<std::size_t>> own_;      // per thread: its pairs left, in plan order
   std::vector<std::vector<Target>> own_targets_;  // per thread: the targets of its pairs
   std::vector<std::shared_ptr<VariantReferences>> references_;  // per planned variant
   std::vector<std::size_t> unclaimed_;  // per planned variant: its pairs left
