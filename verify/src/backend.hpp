@@ -164,9 +164,8 @@ class PictureReferences;  // penumbra/verify/stage_picture.hpp
 // drawn on `engine` by the target's depth pass, from `stages`, judged
 // against a reference from `references` (function_form.cpp).
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
-                                            PictureReferences& references,
-                                            const Library& library, const LibraryVariant& entry,
-                                            Target target);
+                                            PictureReferences& references, const Library& library,
+                                            const LibraryVariant& entry, Target target);
 
 // `entry`'s query (or screen_blur's four passes), each loaded by `load`,
 // run on `engine` over the maps (and min-max mips) the scenes hold: the
@@ -178,9 +177,8 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
 // drawn on `engine` by the target's depth pass, from `stages`, judged
 // against a reference from `references` (deferred_mask.cpp).
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
-                                            PictureReferences& references,
-                                            const Library& library, const LibraryVariant& entry,
-                                            Target target);
+                                            PictureReferences& references, const Library& library,
+                                            const LibraryVariant& entry, Target target);
 
 // `draw` on `engine` over `fixture`'s map with `program`, the deferred pass
 // loaded for the Vulkan engine (the paths that run on it). A technique that
@@ -202,6 +200,11 @@ using SurfaceStageCompiler = std::function<Result<StageCode>(
 Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw,
                                          const SceneFixture& fixture, PassProgram program,
                                          const SurfaceStageCompiler& compile);
+
+// `translator` with a memo of its own where it has none: the backends of
+// one verify or report, on every device thread, then run vkd3d-compiler
+// once per distinct input.
+BytecodeTranslator shared_runs(BytecodeTranslator translator);
 
 // Every path's backend, in report order (the table in paths.cpp): the
 // bytecode paths through `bytecode`, each of `skipped` (paths with a skip

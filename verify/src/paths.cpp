@@ -78,6 +78,11 @@ std::vector<std::string> paths_skipped_by(std::string_view flag) {
   return paths;
 }
 
+BytecodeTranslator shared_runs(BytecodeTranslator translator) {
+  if (!translator.memo) translator.memo = std::make_shared<Vkd3dMemo>();
+  return translator;
+}
+
 std::vector<std::unique_ptr<Backend>> all_backends(Engine& engine,
                                                    const BytecodeTranslator& bytecode,
                                                    const std::vector<std::string>& skipped) {

@@ -198,7 +198,7 @@ Status render_pictures(const Library& library, Engine& engine, const PictureScen
   }
   const reference::SamplingPrecision precision{
       static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
-  const auto backends = all_backends(engine, options.bytecode, options.skipped);
+  const auto backends = all_backends(engine, shared_runs(options.bytecode), options.skipped);
   TargetStages stages(library, engine, scene);
   ProgressCounter progress(options.progress, count_runs(library, options, backends));
   // Each job's first failure; the earliest run's is returned.

@@ -223,7 +223,7 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
   const Target target = pair.target;
   const MapKey& key = pair.maps;
   PairResult result{std::make_unique<PendingTarget>(), {}};
-  PairChecks unreported;  // an earlier pair's, on another device thread
+  PairChecks unreported;      // an earlier pair's, on another device thread
   expect(ctx, plan, target);  // a pair of another thread's target
   if (!ctx.scenes.contains(key) && !ctx.broken_targets.contains(key)) {
     // A depth pass that cannot run fails every run of its target, not verify.
@@ -273,6 +273,7 @@ struct Drive {
   const Library& library;
   const VerifyPlan& plan;
   const VerifyOptions& options;
+  BytecodeTranslator bytecode;  // options.bytecode, its runs shared by every device thread
   reference::SamplingPrecision precision;
   SceneTruths truths{};
   PairQueue queue;
@@ -296,7 +297,7 @@ void drive_devices(Drive& drive, Engine& engine, std::size_t thread) {
               .cameras = CameraStages(engine, drive.options.map_format)};
   // The paths, in report order: a new one is a new backend file and a row
   // in paths.cpp.
-  ctx.backends = all_backends(engine, drive.options.bytecode, drive.options.skipped);
+  ctx.backends = all_backends(engine, drive.bytecode, drive.options.skipped);
   for (const auto& backend : ctx.backends) {
     if (thread == 0 && backend->name() == "gl") drive.gl_device = backend->device();
   }
@@ -386,6 +387,7 @@ Result<VerifyReport> verify_library(const Library& library, std::span<Engine* co
   Drive drive{.library = library,
               .plan = plan,
               .options = options,
+              .bytecode = shared_runs(options.bytecode),
               .precision = {static_cast<int>(std::max(1u, report.device.sub_texel_precision_bits))},
               .queue = PairQueue(plan, threads),
               .work = CpuWork(options.jobs, static_cast<int>(threads)),

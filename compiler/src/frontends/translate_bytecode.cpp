@@ -19,22 +19,23 @@ std::uint32_t descriptor_set(ShaderStage stage) {
   return stage == ShaderStage::vertex ? 0 : 1;
 }
 
-}  // namespace
+// A Vkd3dMemo key: what vkd3d-compiler reads for one stage of `target`.
+std::string memo_key(Target target, ShaderStage stage, std::string_view input) {
+  std::string key(to_string(target));
+  key += stage == ShaderStage::vertex ? " vertex\n" : " fragment\n";
+  key += input;
+  return key;
+}
 
-Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, Target target,
-                                          ShaderStage stage,
-                                          const std::filesystem::path& bytecode) {
-  const auto format = bytecode_format(target, stage);
-  if (!format) {
-    return make_error(Error::Kind::bad_input, bytecode.string(),
-                      "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
-  }
-  const std::string front_end = "vkd3d-compiler " + std::string(format->vkd3d_type) + " to SPIR-V";
+Result<FrontEndResult> run_translation(const BytecodeTranslator& translator,
+                                       const BytecodeFormat& format, ShaderStage stage,
+                                       const std::filesystem::path& bytecode) {
+  const std::string front_end = "vkd3d-compiler " + std::string(format.vkd3d_type) + " to SPIR-V";
   // vkd3d-compiler writes the module to a file: its stdout would interleave
   // the binary with its messages.
   const ScratchFile output("vkd3d", ".spv");
   auto run = run_vkd3d(translator.compiler,
-                       {"-x", std::string(format->vkd3d_type), "-b", "spirv-binary", "-o",
+                       {"-x", std::string(format.vkd3d_type), "-b", "spirv-binary", "-o",
                         output.path().string(), bytecode.string()},
                        translator.timeout);
   if (!run) return run.error();
@@ -57,6 +58,48 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
   return FrontEndResult{std::move(*spirv), front_end, {}};
 }
 
+Status run_compile(const BytecodeTranslator& translator, const BytecodeFormat& format,
+                   const std::string& text, const std::string& name,
+                   const std::filesystem::path& output) {
+  const ScratchFile source("vkd3d", ".hlsl");
+  PENUMBRA_TRY(write_file(source.path(), text));
+  auto run = run_vkd3d(translator.compiler,
+                       {"-x", "hlsl", "-p", format.profile, "-b", std::string(format.vkd3d_type),
+                        "-e", "main", "-o", output.string(), source.path().string()},
+                       translator.timeout);
+  if (!run) return run.error();
+  if (run->timed_out || run->exit_code != 0) {
+    const std::string why = run->timed_out ? "no bytecode within the time limit"
+                                           : "exit status " + std::to_string(run->exit_code);
+    return make_error(Error::Kind::compile, name,
+                      "vkd3d-compiler " + format.profile + ": " + why +
+                          (run->output.empty() ? "" : ":\n" + run->output));
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, Target target,
+                                          ShaderStage stage,
+                                          const std::filesystem::path& bytecode) {
+  const auto format = bytecode_format(target, stage);
+  if (!format) {
+    return make_error(Error::Kind::bad_input, bytecode.string(),
+                      "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
+  }
+  std::string key;  // none: not memoized, or a file vkd3d-compiler is left to report
+  if (translator.memo) {
+    if (auto bytes = read_file(bytecode)) key = memo_key(target, stage, *bytes);
+  }
+  if (!key.empty()) {
+    if (auto known = translator.memo->find_spirv(key)) return *known;
+  }
+  auto translated = run_translation(translator, *format, stage, bytecode);
+  if (translated && !key.empty()) translator.memo->add_spirv(std::move(key), *translated);
+  return translated;
+}
+
 Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target, ShaderStage stage,
                              const std::string& text, const std::string& name,
                              const std::filesystem::path& output) {
@@ -65,20 +108,12 @@ Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target
     return make_error(Error::Kind::bad_input, name,
                       "target " + std::string(to_string(target)) + " has no Direct3D bytecode");
   }
-  const ScratchFile source("vkd3d", ".hlsl");
-  PENUMBRA_TRY(write_file(source.path(), text));
-  auto run = run_vkd3d(translator.compiler,
-                       {"-x", "hlsl", "-p", format->profile, "-b", std::string(format->vkd3d_type),
-                        "-e", "main", "-o", output.string(), source.path().string()},
-                       translator.timeout);
-  if (!run) return run.error();
-  if (run->timed_out || run->exit_code != 0) {
-    const std::string why = run->timed_out ? "no bytecode within the time limit"
-                                           : "exit status " + std::to_string(run->exit_code);
-    return make_error(Error::Kind::compile, name,
-                      "vkd3d-compiler " + format->profile + ": " + why +
-                          (run->output.empty() ? "" : ":\n" + run->output));
-  }
+  if (!translator.memo) return run_compile(translator, *format, text, name, output);
+  std::string key = memo_key(target, stage, text);
+  if (auto known = translator.memo->find_bytecode(key)) return write_file(output, *known);
+  PENUMBRA_TRY(run_compile(translator, *format, text, name, output));
+  PENUMBRA_TRY_ASSIGN(std::string bytecode, read_file(output));
+  translator.memo->add_bytecode(std::move(key), std::move(bytecode));
   return {};
 }
 

@@ -5,6 +5,11 @@
 
 #include <chrono>
 #include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
 
 #include "penumbra/compiler/text_frontend.hpp"
 #include "penumbra/model/model.hpp"
@@ -12,9 +17,32 @@
 
 namespace penumbra {
 
+class Vkd3dMemo;
+
 struct BytecodeTranslator {
   std::filesystem::path compiler;             // vkd3d-compiler 2.1 or newer
   std::chrono::milliseconds timeout{60'000};  // per file
+  std::shared_ptr<Vkd3dMemo> memo = nullptr;  // shares identical runs; none: each call runs it
+};
+
+// vkd3d-compiler's successful results by what it read, for the translators
+// that share it: its output depends on its input alone, and one verify asks
+// for the same many times (every variant's runs load their target's depth
+// pass; the bytecode path and the Wine runtimes compile the same engine
+// shaders). Failures are not kept, so each error names its own file. Safe
+// from any thread.
+class Vkd3dMemo {
+ public:
+  // What an earlier success with the same key made, if any.
+  std::optional<std::string> find_bytecode(const std::string& key) const;
+  std::optional<FrontEndResult> find_spirv(const std::string& key) const;
+  void add_bytecode(std::string key, std::string bytecode);
+  void add_spirv(std::string key, FrontEndResult spirv);
+
+ private:
+  mutable std::mutex mutex_;
+  std::unordered_map<std::string, std::string> bytecode_;
+  std::unordered_map<std::string, FrontEndResult> spirv_;
 };
 
 // `bytecode`, `target`'s bytecode of `stage` (bytecode_format()), as
@@ -31,8 +59,8 @@ Result<FrontEndResult> translate_bytecode(const BytecodeTranslator& translator, 
 // in `output`: what a Direct3D engine's build does with its own shaders.
 // `name` names the source in errors (compile: the compiler's message);
 // bad_input for a target without bytecode.
-Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target,
-                             ShaderStage stage, const std::string& text, const std::string& name,
+Status compile_hlsl_bytecode(const BytecodeTranslator& translator, Target target, ShaderStage stage,
+                             const std::string& text, const std::string& name,
                              const std::filesystem::path& output);
 
 // The same, then translated
