@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli_harness.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -120,6 +121,25 @@ TEST_F(BuildOptions, ProfileSaysWhereTheTimeWent) {
   }
   EXPECT_EQ(runs_of("index"), 3) << run.out;  // the manifest's three variants
   EXPECT_EQ(runs_of("cache"), -1) << "--no-cache: no cache row\n" << run.out;
+}
+
+// The jobs that share a module run on one thread, one after another, so
+// that more threads never make a module twice: as many modules at -j 4 as
+// at -j 1, and the same files.
+TEST_F(BuildOptions, ThreadsMakeEachModuleOnce) {
+  const auto modules_at = [&](int jobs) {
+    const CliRun run = build("-q --profile --no-cache -j " + std::to_string(jobs));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    std::smatch match;
+    const bool found =
+        std::regex_search(run.out, match, std::regex("\ncompile +[0-9.]+ +[0-9.]+% +([0-9]+) "));
+    EXPECT_TRUE(found) << run.out;
+    return found ? std::stoi(match[1]) : -1;
+  };
+  const int one = modules_at(1);
+  const std::string index = read_file(out() / "index.json").value();
+  EXPECT_EQ(modules_at(4), one);
+  EXPECT_EQ(read_file(out() / "index.json").value(), index);
 }
 
 TEST_F(BuildOptions, QuietAndVerboseExcludeEachOther) {

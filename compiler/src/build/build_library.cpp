@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <map>
 #include <mutex>
 #include <set>
+#include <string_view>
 #include <thread>
+#include <tuple>
 
 #include "build/index_json.hpp"
 #include "build/pass_plan.hpp"
@@ -54,32 +57,58 @@ std::vector<ShaderJob> plan_jobs(std::span<const Variant> variants) {
   return jobs;
 }
 
-// Runs all jobs on `threads` workers; unless `keep_going`, stops early after
-// a failure. A finished job keeps only what index.json needs until `index`
-// has its variant's record. The errors of the failed jobs, in plan order.
+// The jobs in groups a worker runs one after another: those of one
+// variant's shader source for each of its targets, which share their module
+// where the targets' texts agree (the module memo), so that no two workers
+// make the same module at once. Groups and the jobs in each keep plan order.
+std::vector<std::vector<std::size_t>> module_groups(const std::vector<ShaderJob>& jobs) {
+  using Source = std::tuple<const Variant*, std::string_view, ShaderStage, ShaderForm>;
+  std::map<Source, std::size_t> group_of;
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    const ShaderJob& job = jobs[i];
+    const Source source{job.variant, job.source_path, job.stage, job.form};
+    const auto [found, added] = group_of.try_emplace(source, groups.size());
+    if (added) groups.emplace_back();
+    groups[found->second].push_back(i);
+  }
+  return groups;
+}
+
+// Runs all jobs on `threads` workers, a group at a time; unless
+// `keep_going`, stops early after a failure. A finished job keeps only what
+// index.json needs until `index` has its variant's record. The errors of
+// the failed jobs, in plan order.
 std::vector<Error> run_jobs(std::vector<ShaderJob>& jobs, const Pipeline& pipeline,
                             StreamedIndex& index, const BuildOptions& options, int threads) {
+  const std::vector<std::vector<std::size_t>> groups = module_groups(jobs);
   std::vector<std::optional<Error>> errors(jobs.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   std::mutex progress_mutex;
   std::size_t finished = 0;
+  auto run = [&](std::size_t i) {
+    try {
+      if (Status status = pipeline.run(jobs[i]); !status) errors[i] = status.error();
+    } catch (const std::exception& e) {  // a library below us threw: report, never terminate
+      errors[i] = make_error(Error::Kind::internal, jobs[i].describe(), e.what());
+    }
+    jobs[i].release_code();
+    if (errors[i]) {
+      failed = true;
+    } else {
+      index.finished(i);
+    }
+    if (options.progress) {
+      const std::scoped_lock lock(progress_mutex);
+      options.progress(++finished, jobs.size());
+    }
+  };
   auto worker = [&] {
-    for (std::size_t i = next++; i < jobs.size() && (options.keep_going || !failed); i = next++) {
-      try {
-        if (Status status = pipeline.run(jobs[i]); !status) errors[i] = status.error();
-      } catch (const std::exception& e) {  // a library below us threw: report, never terminate
-        errors[i] = make_error(Error::Kind::internal, jobs[i].describe(), e.what());
-      }
-      jobs[i].release_code();
-      if (errors[i]) {
-        failed = true;
-      } else {
-        index.finished(i);
-      }
-      if (options.progress) {
-        const std::scoped_lock lock(progress_mutex);
-        options.progress(++finished, jobs.size());
+    for (std::size_t g = next++; g < groups.size(); g = next++) {
+      for (std::size_t i : groups[g]) {
+        if (!options.keep_going && failed) return;
+        run(i);
       }
     }
   };
