@@ -38,7 +38,7 @@ TEST(Vkd3dMemo, TheSameTextIsCompiledOnceIntoEveryOutput) {
   ASSERT_TRUE(compile_hlsl_bytecode(translators->absent, Target::hlsl_dx11, ShaderStage::fragment,
                                     kRed, "red again.hlsl", second.path()));
   EXPECT_EQ(read_file(first.path()).value(), read_file(second.path()).value());
-  // Another text, another stage or another target is compiled again.
+  // Another text, or the same text for another target, is compiled again.
   EXPECT_FALSE(compile_hlsl_bytecode(translators->absent, Target::hlsl_dx11, ShaderStage::fragment,
                                      kGreen, "green.hlsl", second.path()));
   EXPECT_FALSE(compile_hlsl_bytecode(translators->absent, Target::hlsl_dx10, ShaderStage::fragment,
