@@ -97,7 +97,7 @@ TEST_F(BuildOptions, QuietPrintsNoSummaryButKeepsWarnings) {
 
 // --profile: a row per stage that ran, each with the shaders it ran on, then
 // the index's, whose runs are the variant records; even with -q. A module
-// (compile, validate, optimize) is made once for the targets whose text is
+// (compile, validate, optimize, interface) is made once for the targets whose text is
 // the same: here spirv's and hlsl_dx10's shared vertex stages, for one.
 TEST_F(BuildOptions, ProfileSaysWhereTheTimeWent) {
   const CliRun run = build("-q --profile --no-cache");
@@ -110,13 +110,13 @@ TEST_F(BuildOptions, ProfileSaysWhereTheTimeWent) {
   };
   const int shaders = runs_of("preprocess");
   EXPECT_GT(shaders, 0) << run.out;
-  for (const char* stage : {"banner", "cross-compile", "write"}) {
+  for (const char* stage : {"banner", "cross-compile", "reflect", "write"}) {
     EXPECT_EQ(runs_of(stage), shaders) << stage << "\n" << run.out;
   }
   const int modules = runs_of("compile");
   EXPECT_GT(runs_of("shared-module"), 0) << run.out;
   EXPECT_EQ(modules + runs_of("shared-module"), shaders) << run.out;
-  for (const char* stage : {"validate", "optimize"}) {
+  for (const char* stage : {"validate", "optimize", "interface"}) {
     EXPECT_EQ(runs_of(stage), modules) << stage << "\n" << run.out;
   }
   EXPECT_EQ(runs_of("index"), 3) << run.out;  // the manifest's three variants

@@ -15,16 +15,16 @@ std::string module_key(const ShaderJob& job) {
   return key.hex();
 }
 
-std::optional<std::vector<std::uint32_t>> ModuleMemo::find(const std::string& key) const {
+std::optional<Module> ModuleMemo::find(const std::string& key) const {
   const std::scoped_lock lock(mutex_);
   const auto found = std::ranges::find(modules_, key, &decltype(modules_)::value_type::first);
   if (found == modules_.end()) return std::nullopt;
   return found->second;
 }
 
-void ModuleMemo::add(const std::string& key, const std::vector<std::uint32_t>& spirv) {
+void ModuleMemo::add(const std::string& key, Module module) {
   const std::scoped_lock lock(mutex_);
-  modules_.emplace_back(key, spirv);
+  modules_.emplace_back(key, std::move(module));
   if (modules_.size() > capacity_) modules_.pop_front();
 }
 

@@ -10,8 +10,8 @@
 namespace penumbra {
 namespace {
 
-// stages_[1, 1 + kModuleStages): compile, validate, optimize.
-constexpr std::size_t kModuleStages = 3;
+// stages_[1, 1 + kModuleStages): compile, validate, optimize, interface.
+constexpr std::size_t kModuleStages = 4;
 // Modules remembered for the jobs after: one variant's targets follow each
 // other in plan order, a few jobs apart.
 constexpr std::size_t kRememberedModules = 64;
@@ -47,6 +47,7 @@ Pipeline::Pipeline(std::shared_ptr<const ShaderlibSource> shaderlib,
   stages_.push_back(std::make_unique<CompileStage>(std::move(shaderlib)));
   stages_.push_back(std::make_unique<ValidateStage>());
   stages_.push_back(std::make_unique<OptimizeStage>());
+  stages_.push_back(std::make_unique<InterfaceStage>());
   stages_.push_back(std::make_unique<BannerStage>());
   stages_.push_back(std::make_unique<CrossCompileStage>());
   stages_.push_back(std::make_unique<ReflectStage>());
@@ -118,13 +119,14 @@ Status Pipeline::make_module(ShaderJob& job) const {
     key = module_key(job);
     return modules_->find(key);
   };
-  if (std::optional<std::vector<std::uint32_t>> made = timed(memo_clock, find, false)) {
-    job.spirv = std::move(*made);
+  if (std::optional<Module> made = timed(memo_clock, find, false)) {
+    job.spirv = std::move(made->spirv);
+    job.interface = std::move(made->interface);
     ++clocks_[memo_clock].runs;
     return {};
   }
   PENUMBRA_TRY(run_stages(1, 1 + kModuleStages, job));
-  modules_->add(key, job.spirv);
+  modules_->add(key, {job.spirv, job.interface});
   return {};
 }
 

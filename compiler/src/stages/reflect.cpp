@@ -4,9 +4,6 @@
 namespace penumbra {
 
 Status ReflectStage::process(ShaderJob& job) const {
-  auto iface = reflect(job.spirv);
-  if (!iface) return make_error(Error::Kind::compile, job.describe(), iface.error().message);
-  job.interface = std::move(*iface);
   // The function form binds what the query pass would, under prefixed
   // names; its harness's input and output are not part of it.
   const bool function = job.form == ShaderForm::function;

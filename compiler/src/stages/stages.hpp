@@ -59,6 +59,15 @@ class OptimizeStage final : public Stage {
   Status process(ShaderJob& job) const override;
 };
 
+// Reads the module's interface with SPIRV-Cross (what it binds and passes),
+// which no target changes: the last of the module stages, so the targets
+// that share a module share it.
+class InterfaceStage final : public Stage {
+ public:
+  std::string_view name() const override { return "interface"; }
+  Status process(ShaderJob& job) const override;
+};
+
 // Heads the module with the job's banner, an OpString naming variant, target,
 // pass and stage: the first of the stages that are the target's own.
 class BannerStage final : public Stage {
@@ -74,7 +83,8 @@ class CrossCompileStage final : public Stage {
   Status process(ShaderJob& job) const override;
 };
 
-// Records what the shader binds and passes (SPIRV-Cross reflection).
+// The target's reflection of the module's interface: names, registers,
+// formats and samplers as the target's API binds them.
 class ReflectStage final : public Stage {
  public:
   std::string_view name() const override { return "reflect"; }
