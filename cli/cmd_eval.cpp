@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -25,6 +26,9 @@ struct EvalArgs {
   std::string target = "spirv";
   std::string shadow_map;
   std::string receivers;
+  std::string no_receiver;          // optional Pf mask of pixels with no receiver
+  bool map_stored = false;          // --shadow-map holds an engine's stored values
+  std::optional<double> far_plane;  // the engine's far plane, with map_stored
   std::string output;
   std::string texel_reads;  // optional Pf of the query's per-pixel texel reads
   std::string ambiguous;    // optional Pf of the reference's ambiguity mask
@@ -69,14 +73,17 @@ bool inside(const fs::path& path, const fs::path& dir) {
 
 // eval reads every input before it writes: an output onto one would destroy it.
 Status check_outputs_spare_inputs(const EvalArgs& args) {
-  const std::pair<const char*, const std::string*> inputs[] = {{"--shadow-map", &args.shadow_map},
-                                                               {"--receivers", &args.receivers}};
+  const std::pair<const char*, const std::string*> inputs[] = {
+      {"--shadow-map", &args.shadow_map},
+      {"--receivers", &args.receivers},
+      {"--no-receiver", &args.no_receiver}};
   const std::pair<const char*, const std::string*> outputs[] = {
       {"-o", &args.output}, {"--texel-reads", &args.texel_reads}, {"--ambiguous", &args.ambiguous}};
   for (const auto& [flag, output] : outputs) {
     if (output->empty()) continue;
     const std::string where = std::string(flag) + " " + *output;
     for (const auto& [input_flag, input] : inputs) {
+      if (input->empty()) continue;
       if (overwrites(*output, *input)) {
         return make_error(Error::Kind::bad_input, where,
                           "is the same file as " + std::string(input_flag) + " " + *input +
@@ -116,6 +123,11 @@ Result<EvalOutput> run_eval(const EvalArgs& args) {
     return make_error(Error::Kind::bad_input, "--ambiguous " + args.ambiguous,
                       "the ambiguity mask is the CPU reference's; allowed only with --reference");
   }
+  if (args.map_stored != args.far_plane.has_value()) {
+    return make_error(Error::Kind::bad_input, args.map_stored ? "--map-stored" : "--far",
+                      "--map-stored needs --far and --far needs --map-stored (a stored map is "
+                      "decoded with the engine's --near and --far); allowed: both or neither");
+  }
   if (const auto [flag, path] = companion(args); !path->empty() && same_file(args.output, *path)) {
     return make_error(Error::Kind::bad_input, std::string(flag) + " " + *path,
                       "is the same file as -o " + args.output + "; allowed: a file of its own");
@@ -139,6 +151,12 @@ Result<EvalOutput> run_eval(const EvalArgs& args) {
   if (!receivers) return receivers.error();
   inputs.shadow_map = std::move(*map);
   inputs.receivers = std::move(*receivers);
+  if (!args.no_receiver.empty()) {
+    auto mask = read_pfm(args.no_receiver);
+    if (!mask) return mask.error();
+    inputs.no_receiver = std::move(*mask);
+  }
+  inputs.stored_far = args.far_plane;
   inputs.light = args.light;
   inputs.light.filter_radius_uv = args.filter_radius;
 
@@ -202,9 +220,11 @@ std::string ambiguity_codes() {
   std::string text =
       "--ambiguous writes per pixel 0 where the reference decides it, else the sum of the codes "
       "of its reasons (docs/verification.md, \"The ambiguity rule\"):";
+  constexpr std::size_t kWidth = 4;  // the codes right-aligned
   for (const reference::AmbiguityReason& r : reference::kAmbiguityReasons) {
     const std::string code = std::to_string(int(r.reason));
-    text += "\n  " + std::string(3 - code.size(), ' ') + code + "  " + r.summary;
+    text +=
+        "\n  " + std::string(kWidth - std::min(kWidth, code.size()), ' ') + code + "  " + r.summary;
   }
   return text;
 }
@@ -218,8 +238,18 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->required();
   cmd->add_option("variant", args->variant, "Variant name")->required();
   cmd->add_option("--target", args->target, "Target whose shaders run");
-  cmd->add_option("--shadow-map", args->shadow_map, "Pf image of linear light-view z")->required();
+  cmd->add_option("--shadow-map", args->shadow_map,
+                  "Pf image of linear light-view z (with --map-stored: of stored depth)")
+      ->required();
   cmd->add_option("--receivers", args->receivers, "PF image of (u, v, z_r)")->required();
+  cmd->add_flag("--map-stored", args->map_stored,
+                "--shadow-map holds the map as the engine stored it: depth-buffer values, 0 to "
+                "1, in the variant's map encoding (linear: z / far), with --near and --far");
+  cmd->add_option("--far", args->far_plane,
+                  "The far plane of the engine's light projection (with --map-stored)");
+  cmd->add_option("--no-receiver", args->no_receiver,
+                  "Pf image of the receivers' size: a pixel not 0 has no receiver; it is lit, "
+                  "and --ambiguous marks it");
   cmd->add_option("-o,--out", args->output, "Visibility image to write (Pf)")->required();
   cmd->add_option("--texel-reads", args->texel_reads,
                   "Also write the shadow-map and min-max texels each pixel read (Pf; device only)");

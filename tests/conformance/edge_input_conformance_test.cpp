@@ -52,7 +52,10 @@ TEST_P(EdgeInputsOnDevice, EveryTargetMatchesTheReference) {
   const double allowed = reference::tolerance(technique, {}) + 1e-5;
   for (const EdgeMap& map : edge_maps()) {
     for (const EdgeLight& light : edge_lights()) {
-      const EvalInputs inputs{map.depth, edge_receivers(light.light), light.light};
+      EvalInputs inputs;
+      inputs.shadow_map = map.depth;
+      inputs.receivers = edge_receivers(light.light);
+      inputs.light = light.light;
       for (Target target : targets) {
         const std::string label =
             std::string(to_string(target)) + ", map " + map.name + ", light " + light.name;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -44,26 +46,58 @@ FloatImage normalized_map(const FloatImage& map, float depth_scale) {
   return normalized;
 }
 
-// The encoding of `variant`'s map with the projection eval gives it: the
-// light's near plane, and 1 / depth_scale for the far one; none for linear.
+// The encoding of `variant`'s map and its projection: the light's near
+// plane, and 1 / depth_scale for the far one. None for eval's own linear map;
+// a stored map is decoded texel by texel, a linear one too.
 std::optional<reference::EncodedDepth> encoding_of(const LibraryVariant& variant,
                                                    const EvalInputs& inputs, float depth_scale) {
-  return reference::encoded_depth(map_encoding(variant.variant.keys), inputs.light, depth_scale);
+  const MapEncoding encoding = map_encoding(variant.variant.keys);
+  if (!inputs.stored_far) return reference::encoded_depth(encoding, inputs.light, depth_scale);
+  return reference::EncodedDepth{encoding, {inputs.light.near_plane, 1.0 / depth_scale}};
 }
 
-// The linear map as the variant's programs read it: normalized, or stored in
-// its encoding, nearer than the near plane as the near plane and farther
-// than the far one as the far one, as a depth buffer clamps them.
-FloatImage stored_map(const FloatImage& map, const std::optional<reference::EncodedDepth>& encoded,
-                      float depth_scale) {
-  if (!encoded) return normalized_map(map, depth_scale);
-  FloatImage stored = map;
+// The depth scale the shaders get: 1 / the engine's far plane for a stored
+// map, else a power of two that keeps every depth of eval's own in [0, 1].
+float depth_scale_of(const EvalInputs& inputs) {
+  return inputs.stored_far ? float(1.0 / *inputs.stored_far) : depth_scale_for(max_depth(inputs));
+}
+
+// The map as the variant's programs read it: a stored map as given; a
+// linear one normalized, or stored in its encoding, nearer than the near
+// plane as the near plane and farther than the far one as the far one, as
+// a depth buffer clamps them.
+FloatImage stored_map(const EvalInputs& inputs,
+                      const std::optional<reference::EncodedDepth>& encoded, float depth_scale) {
+  if (inputs.stored_far) return inputs.shadow_map;
+  if (!encoded) return normalized_map(inputs.shadow_map, depth_scale);
+  FloatImage stored = inputs.shadow_map;
   for (float& d : stored.data) {
     const double z = std::clamp(double(d), encoded->range.near_plane, encoded->range.far_plane);
     d = float(encode_depth(encoded->encoding, std::isnan(d) ? encoded->range.far_plane : z,
                            encoded->range));
   }
   return stored;
+}
+
+// The receivers with a NaN depth where the mask says there is none.
+FloatImage masked_receivers(const EvalInputs& inputs) {
+  FloatImage receivers = inputs.receivers;
+  for (std::size_t p = 0; p < inputs.no_receiver.pixel_count(); ++p) {
+    if (inputs.no_receiver.data[p] != 0.0f) {
+      receivers.data[p * 3 + 2] = std::numeric_limits<float>::quiet_NaN();
+    }
+  }
+  return receivers;
+}
+
+// Marks the mask's pixels Ambiguity::no_receiver in `image`'s mask.
+void mark_no_receiver(const EvalInputs& inputs, reference::ReferenceImage& image) {
+  for (std::size_t p = 0; p < inputs.no_receiver.pixel_count(); ++p) {
+    if (inputs.no_receiver.data[p] == 0.0f) continue;
+    const auto reasons = reference::Ambiguity(std::uint16_t(image.ambiguous.data[p])) |
+                         reference::Ambiguity::no_receiver;
+    image.ambiguous.data[p] = float(std::uint16_t(reasons));
+  }
 }
 
 // One light option's range; `name` is its argument.
@@ -77,22 +111,59 @@ Status check_range(const char* name, double value, double low, double high) {
                     std::string("out of range; allowed: a number from ") + range);
 }
 
-}  // namespace
+// A stored map's texels: depth-buffer values, 0 to 1 (no NaN).
+Status check_stored_map(const FloatImage& map) {
+  for (int j = 0; j < map.height; ++j) {
+    for (int i = 0; i < map.width; ++i) {
+      const float d = map.at(i, j);
+      if (d >= 0.0f && d <= 1.0f) continue;  // false for NaN
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "%g", double(d));
+      return make_error(Error::Kind::bad_input, "--shadow-map",
+                        "texel (" + std::to_string(i) + ", " + std::to_string(j) + ") holds " +
+                            shown +
+                            "; a stored map (--map-stored) holds depth-buffer values "
+                            "from 0 to 1");
+    }
+  }
+  return {};
+}
 
-Status check_eval_inputs(const EvalInputs& inputs) {
+Status check_images(const EvalInputs& inputs) {
   if (inputs.shadow_map.channels != 1 || inputs.shadow_map.pixel_count() == 0) {
     return make_error(Error::Kind::bad_input, "--shadow-map",
-                      "expected a one-channel (Pf) image of linear light-view z");
+                      inputs.stored_far
+                          ? "expected a one-channel (Pf) image of stored depth"
+                          : "expected a one-channel (Pf) image of linear light-view z");
   }
-  if (inputs.receivers.channels != 3 || inputs.receivers.pixel_count() == 0) {
+  const FloatImage& receivers = inputs.receivers;
+  if (receivers.channels != 3 || receivers.pixel_count() == 0) {
     return make_error(Error::Kind::bad_input, "--receivers",
                       "expected a three-channel (PF) image of (u, v, z_r)");
   }
+  const FloatImage& mask = inputs.no_receiver;
+  if (!mask.data.empty() &&
+      (mask.channels != 1 || mask.width != receivers.width || mask.height != receivers.height)) {
+    return make_error(Error::Kind::bad_input, "--no-receiver",
+                      "expected a one-channel (Pf) image of the receivers' size, " +
+                          std::to_string(receivers.width) + "x" + std::to_string(receivers.height) +
+                          "; got " + std::to_string(mask.width) + "x" +
+                          std::to_string(mask.height) + " with " + std::to_string(mask.channels) +
+                          " channel(s)");
+  }
+  if (inputs.stored_far) return check_stored_map(inputs.shadow_map);
   if (std::any_of(inputs.shadow_map.data.begin(), inputs.shadow_map.data.end(),
                   [](float z) { return z < 0.0f; })) {
     return make_error(Error::Kind::bad_input, "--shadow-map",
                       "holds a negative depth; linear light-view z is >= 0");
   }
+  return {};
+}
+
+}  // namespace
+
+Status check_eval_inputs(const EvalInputs& inputs) {
+  PENUMBRA_TRY(check_images(inputs));
   const LightParams& light = inputs.light;
   PENUMBRA_TRY(check_range("--light-size", light.light_world_size, 0.0, kMaxLightLength));
   PENUMBRA_TRY(
@@ -103,20 +174,30 @@ Status check_eval_inputs(const EvalInputs& inputs) {
     PENUMBRA_TRY(
         check_range("--filter-radius", *light.filter_radius_uv, kMinLightLength, kMaxLightLength));
   }
+  if (inputs.stored_far) {
+    PENUMBRA_TRY(check_range("--far", *inputs.stored_far, kMinLightLength, kMaxLightLength));
+    if (!(*inputs.stored_far > light.near_plane)) {
+      char shown[64];
+      std::snprintf(shown, sizeof shown, "--far %g", *inputs.stored_far);
+      return make_error(Error::Kind::bad_input, shown,
+                        "is not beyond the near plane (--near); allowed: a far plane > near");
+    }
+  }
   return {};
 }
 
 Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
                                    Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  const float depth_scale = depth_scale_for(max_depth(inputs));
+  const float depth_scale = depth_scale_of(inputs);
   auto map = engine.upload_shadow_map(
-      stored_map(inputs.shadow_map, encoding_of(variant, inputs, depth_scale), depth_scale));
+      stored_map(inputs, encoding_of(variant, inputs, depth_scale), depth_scale));
   if (!map) return map.error();
-  const ParamBlock params = shadow_params(inputs.light,
-                                          {inputs.shadow_map.width, inputs.shadow_map.height,
-                                           inputs.receivers.width, inputs.receivers.height},
-                                          depth_scale);
+  const FloatImage receivers = masked_receivers(inputs);
+  const ParamBlock params = shadow_params(
+      inputs.light,
+      {inputs.shadow_map.width, inputs.shadow_map.height, receivers.width, receivers.height},
+      depth_scale);
   // The receivers image is the screen; a composite is drawn over
   // reference::scene_colour but not returned.
   const std::vector<PassKind> passes = scene_passes(variant, /*builds_mip=*/false);
@@ -126,35 +207,36 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
   if (uses_minmax_mip(variant.variant.technique)) {
     PENUMBRA_TRY(build_library_minmax(engine, library, variant, target, **map, params));
   }
-  const FloatImage colour =
-      reference::scene_colour(inputs.receivers.width, inputs.receivers.height);
+  const FloatImage colour = reference::scene_colour(receivers.width, receivers.height);
   PENUMBRA_TRY_ASSIGN(
       runtime::PassOutputs outputs,
       engine.run_passes(passes, program_map(loaded), **map,
-                        {.receivers = &inputs.receivers, .scene_colour = &colour}, params));
+                        {.receivers = &receivers, .scene_colour = &colour}, params));
   return final_visibility(outputs);
 }
 
 Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, Target target,
                                                  const EvalInputs& inputs) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  // The limits verify_library holds `target`'s runs to: hlsl_dx9's step cap.
-  const float depth_scale = depth_scale_for(max_depth(inputs));
+  const float depth_scale = depth_scale_of(inputs);
   const auto encoded = encoding_of(variant, inputs, depth_scale);
   // An orthographic map's light is directional: --light-size is its half-slope.
   LightParams light = inputs.light;
   if (encoded && is_orthographic(encoded->encoding)) {
     light.projection = LightProjection::orthographic;
   }
+  const FloatImage receivers = masked_receivers(inputs);
+  // The limits verify_library holds `target`'s runs to: hlsl_dx9's step cap.
+  const reference::ShaderLimits limits = reference::shader_limits(target);
   auto image =
-      encoded ? reference::evaluate_image(
-                    variant.variant, stored_map(inputs.shadow_map, encoded, depth_scale), *encoded,
-                    light, inputs.receivers, {}, reference::shader_limits(target))
-              : reference::evaluate_image(variant.variant, inputs.shadow_map, light,
-                                          inputs.receivers, {}, reference::shader_limits(target));
+      encoded ? reference::evaluate_image(variant.variant, stored_map(inputs, encoded, depth_scale),
+                                          *encoded, light, receivers, {}, limits)
+              : reference::evaluate_image(variant.variant, inputs.shadow_map, light, receivers, {},
+                                          limits);
   if (!image) return image.error();
   image->visibility =
-      reference::screen_visibility(variant.variant, std::move(image->visibility), inputs.receivers);
+      reference::screen_visibility(variant.variant, std::move(image->visibility), receivers);
+  mark_no_receiver(inputs, *image);
   return image;
 }
 

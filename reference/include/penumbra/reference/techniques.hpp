@@ -92,6 +92,9 @@ enum class Ambiguity : std::uint16_t {
   // camera's depth): its float32 rebuilding moves the result by more than
   // half the tolerance.
   receiver_rounding = 512,
+  // No receiver at the pixel (an engine's sky, marked by eval's
+  // --no-receiver mask): shaded as a NaN receiver, and nothing to compare.
+  no_receiver = 1024,
 };
 
 constexpr Ambiguity operator|(Ambiguity a, Ambiguity b) {
@@ -118,6 +121,7 @@ inline constexpr AmbiguityReason kAmbiguityReasons[] = {
     {Ambiguity::area_edges, "backprojection's patch edges may move the area too far"},
     {Ambiguity::depth_tie, "an encoded map's texel at the receiver's depth"},
     {Ambiguity::receiver_rounding, "a rebuilt receiver's float32 rounding moves the result"},
+    {Ambiguity::no_receiver, "no receiver at the pixel (--no-receiver)"},
 };
 
 // `reason` where `marked`, else none.

@@ -2,6 +2,8 @@
 // the device or with the CPU reference.
 #pragma once
 
+#include <optional>
+
 #include "penumbra/library/library.hpp"
 #include "penumbra/model/light.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -10,11 +12,20 @@
 namespace penumbra {
 
 struct EvalInputs {
-  FloatImage shadow_map;  // Pf: linear light-view z, W x H
+  FloatImage shadow_map;  // Pf, W x H: linear light-view z, or the stored values below
   FloatImage receivers;   // PF: (u, v, z_r) per pixel
   // Light size, frustum width, near plane, bias, filter radius; its defaults
   // are index.json's `defaults`, the light the shaders were verified with.
   LightParams light;
+  // With a value, `shadow_map` is the map as an engine stored it: depth-buffer
+  // values in [0, 1] in the variant's map encoding (linear: z / far), from a
+  // projection with light.near_plane and this far plane. None: linear z, and
+  // eval picks the far plane (a power of two beyond every depth).
+  std::optional<double> stored_far;
+  // Pf of the receivers' size, or empty: a pixel that is not 0 has no
+  // receiver (an engine's sky). It is shaded as a NaN receiver, lit, and the
+  // reference marks it Ambiguity::no_receiver.
+  FloatImage no_receiver;
 };
 
 // The light options' range (lengths in light-view units; the bias and the
@@ -23,8 +34,9 @@ struct EvalInputs {
 inline constexpr double kMinLightLength = 1e-6;  // frustum width, near plane, filter radius
 inline constexpr double kMaxLightLength = 1e6;   // and light size (from 0), |bias|
 
-// Checks the images (channels, sizes, no negative depth) and the light
-// options (finite, in range); errors name the argument. NaN and infinite
+// Checks the images (channels, sizes, no negative depth; a stored map's
+// values in [0, 1], its far plane beyond the near one) and the light options
+// (finite, in range); errors name the argument. NaN and infinite linear
 // depths are allowed: every technique defines them (docs/robustness.md).
 Status check_eval_inputs(const EvalInputs& inputs);
 
