@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,6 +16,7 @@
 #include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
+#include "penumbra/support/file.hpp"
 #include "penumbra/support/pfm.hpp"
 
 namespace penumbra::testing {
@@ -72,8 +71,7 @@ class EvalStored : public EvalFixture {
   }
 
   static std::string bytes(const std::string& name) {
-    std::ifstream in(dir_->path() / name, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return read_file(dir_->path() / name).value();
   }
 
   // eval's -o (and with --ambiguous its mask) for `variant` with `extra`.

@@ -44,21 +44,6 @@ std::string cell_value(std::string_view cell) {
   return out == "-" ? "" : out;
 }
 
-std::vector<std::string> split_row(std::string_view line) {
-  std::string text = trim(line);
-  if (!text.empty() && text.front() == '|') text.erase(0, 1);
-  if (!text.empty() && text.back() == '|') text.pop_back();
-  std::vector<std::string> cells;
-  std::size_t start = 0;
-  while (true) {
-    const auto bar = text.find('|', start);
-    cells.push_back(cell_value(std::string_view(text).substr(start, bar - start)));
-    if (bar == std::string::npos) break;
-    start = bar + 1;
-  }
-  return cells;
-}
-
 bool is_word_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
@@ -112,6 +97,21 @@ const std::vector<NumberForm>& number_forms() {
 }
 
 }  // namespace
+
+std::vector<std::string> split_row(std::string_view line) {
+  std::string text = trim(line);
+  if (!text.empty() && text.front() == '|') text.erase(0, 1);
+  if (!text.empty() && text.back() == '|') text.pop_back();
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  while (true) {
+    const auto bar = text.find('|', start);
+    cells.push_back(cell_value(std::string_view(text).substr(start, bar - start)));
+    if (bar == std::string::npos) break;
+    start = bar + 1;
+  }
+  return cells;
+}
 
 std::map<std::string, ReflectionRow> reflection_rows(const PassReflection& pass,
                                                      std::string_view stage) {

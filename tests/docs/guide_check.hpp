@@ -72,6 +72,10 @@ struct Guide {
 
 Guide parse_guide(std::string_view markdown);
 
+// The cells of a Markdown table row, trimmed and without backticks; a `-`
+// cell is empty.
+std::vector<std::string> split_row(std::string_view line);
+
 // Differences between `table` and the reflection's rows for its stage.
 std::vector<std::string> compare_table(const GuideTable& table, const PassReflection& pass);
 

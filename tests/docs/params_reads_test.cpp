@@ -9,12 +9,12 @@
 // and a column per form (query, deferred, function), TABLE `passes` a row
 // per shared pass (reads). A cell lists `member.components` in block order,
 // `-` for none, or `no such form`; a technique's cell is the union over its
-// variants.
+// variants. Cells compare as guide_check's split_row() reads them: without
+// backticks, `-` empty.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <regex>
@@ -24,7 +24,9 @@
 #include <vector>
 
 #include "default_library.hpp"
+#include "guide_check.hpp"
 #include "penumbra/library/library.hpp"
+#include "penumbra/support/file.hpp"
 
 namespace penumbra::testing {
 namespace {
@@ -37,13 +39,6 @@ using Tables = std::map<std::string, std::map<std::string, std::map<std::string,
 using Reads = std::map<std::string, std::set<char>>;
 
 const fs::path kDoc = fs::path(PENUMBRA_SOURCE_DIR) / "docs" / "shader-interface.md";
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The members `text` reads through its ShadowParams block (none without one).
 void add_reads(const std::string& text, Reads& reads) {
@@ -59,8 +54,8 @@ void add_reads(const std::string& text, Reads& reads) {
   }
 }
 
-// `reads` as a cell: `member.components` in block order, `-` for none. The
-// deferred pass's matrices, columns _0 to _3 each read whole, are one
+// `reads` as a cell: `member.components` in block order, empty for none.
+// The deferred pass's matrices, columns _0 to _3 each read whole, are one
 // `camera_inverse_*` or `light_view_proj_*`.
 std::string cell(const Reads& reads) {
   static const std::vector<std::string> kOrder = {
@@ -74,14 +69,11 @@ std::string cell(const Reads& reads) {
   std::vector<std::pair<std::string, std::string>> shown;  // member, as shown
   for (const auto& [member, components] : reads) {
     const std::string base = member.substr(0, member.size() - 1);
-    if (member.ends_with("_0") && whole(base + "1") && whole(base + "2") && whole(base + "3") &&
-        components.size() == 4) {
-      shown.emplace_back(member, base + "*");
+    const bool column = member.size() > 2 && member[member.size() - 2] == '_';
+    if (column && whole(base + "0") && whole(base + "1") && whole(base + "2") &&
+        whole(base + "3")) {
+      if (member.ends_with("_0")) shown.emplace_back(member, base + "*");
       continue;
-    }
-    if (member.size() > 2 && member[member.size() - 2] == '_' && whole(base + "0") &&
-        whole(base + "1") && whole(base + "2") && whole(base + "3")) {
-      continue;  // shown as base_*
     }
     std::string swizzle;
     for (char c : std::string("xyzw")) {
@@ -94,15 +86,15 @@ std::string cell(const Reads& reads) {
   };
   std::ranges::stable_sort(shown, {}, rank);
   std::string out;
-  for (const auto& [member, text] : shown) out += (out.empty() ? "`" : ", `") + text + "`";
-  return out.empty() ? "-" : out;
+  for (const auto& [member, text] : shown) out += (out.empty() ? "" : ", ") + text;
+  return out;
 }
 
 // What the library's glsl450 files read, as the tables should list it.
 Tables library_reads(const Library& library) {
   std::map<std::string, std::map<std::string, Reads>> techniques, passes;
   const auto add_file = [&](const std::string& relative, Reads& reads) {
-    if (!relative.empty()) add_reads(read_text(library.root / relative), reads);
+    if (!relative.empty()) add_reads(read_file(library.root / relative).value(), reads);
   };
   for (const LibraryVariant& variant : library.variants) {
     const std::string technique(to_string(variant.variant.technique));
@@ -131,19 +123,7 @@ Tables library_reads(const Library& library) {
   return out;
 }
 
-// Splits a Markdown table row into its cells, trimmed.
-std::vector<std::string> cells(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream row(line.substr(1, line.rfind('|') - 1));
-  for (std::string part; std::getline(row, part, '|');) {
-    const auto first = part.find_first_not_of(' ');
-    const auto last = part.find_last_not_of(' ');
-    out.push_back(first == std::string::npos ? "" : part.substr(first, last - first + 1));
-  }
-  return out;
-}
-
-// The marked tables of `markdown`; a row's first cell loses its backticks.
+// The marked tables of `markdown`, their cells as split_row() reads them.
 Tables doc_tables(const std::string& markdown) {
   static const std::regex open(R"(<!-- params-reads (\w+) -->)");
   Tables out;
@@ -158,16 +138,27 @@ Tables doc_tables(const std::string& markdown) {
     } else if (line == "<!-- end params-reads -->") {
       table.clear();
     } else if (!table.empty() && line.starts_with('|') && !line.starts_with("|---")) {
-      std::vector<std::string> row = cells(line);
+      std::vector<std::string> row = split_row(line);
       if (header.empty()) {
         header = row;
         continue;
       }
-      std::erase(row[0], '`');
       for (std::size_t c = 1; c < row.size() && c < header.size(); ++c) {
         out[table][row[0]][header[c]] = row[c];
       }
     }
+  }
+  return out;
+}
+
+// A cell as the doc writes it: each member in backticks, `-` for none.
+std::string markdown_cell(const std::string& cell) {
+  if (cell.empty()) return "-";
+  if (cell == "no such form") return cell;
+  std::string out;
+  std::stringstream members(cell);
+  for (std::string member; std::getline(members >> std::ws, member, ',');) {
+    out += (out.empty() ? "`" : ", `") + member + "`";
   }
   return out;
 }
@@ -182,11 +173,10 @@ std::vector<std::string> differences(const Tables& doc, const Tables& want) {
         const auto t = doc.find(table);
         const bool has =
             t != doc.end() && t->second.contains(row) && t->second.at(row).contains(column);
-        const std::string got = has ? t->second.at(row).at(column) : "(missing)";
-        if (got != value) {
-          out.push_back(table + " " + row + " " + column + ": the doc has " + got +
-                        ", the library reads " + value);
-        }
+        if (has && t->second.at(row).at(column) == value) continue;
+        const std::string got = has ? markdown_cell(t->second.at(row).at(column)) : "(missing)";
+        out.push_back(table + " " + row + " " + column + ": the doc has " + got +
+                      ", the library reads " + markdown_cell(value));
       }
     }
   }
@@ -210,7 +200,9 @@ std::string markdown_rows(const Tables& want) {
     out += "params-reads " + table + ":\n";
     for (const auto& [row, cells] : rows) {
       out += "| `" + row + "` |";
-      for (const std::string& column : columns.at(table)) out += " " + cells.at(column) + " |";
+      for (const std::string& column : columns.at(table)) {
+        out += " " + markdown_cell(cells.at(column)) + " |";
+      }
       out += "\n";
     }
   }
@@ -231,16 +223,17 @@ TEST(ParamsReads, TheDocsTablesAreWhatTheShadersRead) {
   const Tables want = library_reads(default_library());
   ASSERT_TRUE(want.contains("techniques") && want.contains("passes"));
   std::string listed;
-  for (const std::string& d : differences(doc_tables(read_text(kDoc)), want)) listed += d + "\n";
+  for (const std::string& d : differences(doc_tables(read_file(kDoc).value()), want))
+    listed += d + "\n";
   EXPECT_TRUE(listed.empty()) << listed << "\nThe tables' rows:\n" << markdown_rows(want);
 }
 
 // The check fails where a cell is wrong or a row is missing.
 TEST(ParamsReads, ReportsAWrongCell) {
   const Tables want = library_reads(default_library());
-  Tables doc = doc_tables(read_text(kDoc));
+  Tables doc = doc_tables(read_file(kDoc).value());
   ASSERT_TRUE(doc.contains("techniques") && doc["techniques"].contains("pcss"));
-  doc["techniques"]["pcss"]["query"] = "`light.xyzw`";
+  doc["techniques"]["pcss"]["query"] = "light.xyzw";
   doc["passes"].erase("depth");
   const std::vector<std::string> found = differences(doc, want);
   const auto mentions = [&](const std::string& part) {
