@@ -37,6 +37,7 @@ struct Options {
   std::vector<std::string> baseline_args;  // more arguments of the baseline's verify
   int repeats = 1;                         // timed runs of each build
   std::vector<std::string> variants;       // empty: the whole default library
+  std::string manifest;                    // the library's; empty: the shipped default.json
   bool cold = false;                       // an empty shader cache for every run
   bool no_wine = false;                    // skip the Direct3D runtimes under Wine
 };
@@ -123,7 +124,8 @@ std::string compare_results(const std::string& before, const std::string& after)
 
 Status run(const Options& options) {
   PENUMBRA_TRY_ASSIGN(const fs::path penumbra, bench::penumbra_executable());
-  PENUMBRA_TRY_ASSIGN(const fs::path manifest, bench::default_manifest("default.json"));
+  fs::path manifest = options.manifest;
+  if (manifest.empty()) PENUMBRA_TRY_ASSIGN(manifest, bench::default_manifest("default.json"));
   const bench::ScratchRoot scratch("penumbra-bench-verify-");
   const fs::path& root = scratch.path();
   const fs::path log = root / "child.log";  // each child's output, read back when it fails
@@ -201,6 +203,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 99));
   app.add_option("--variant", options.variants,
                  "only these variants (repeatable; default: the whole default library)");
+  app.add_option("--manifest", options.manifest,
+                 "the manifest both build their library from (default: the shipped "
+                 "default.json; bench/manifests/default-76.json is the one an older baseline "
+                 "such as 3bd7d25 can build)")
+      ->check(CLI::ExistingFile);
   app.add_flag("--cold", options.cold, "empty Mesa's shader cache before every run");
   app.add_flag("--no-wine", options.no_wine, "skip the Direct3D runtimes under Wine");
   try {

@@ -33,7 +33,7 @@
 #                                     this one run with --baseline-arg=ARG's) against
 #                                     this one's, side by side, verify.json
 #                                     compared (penumbra_bench_verify; --cold,
-#                                     --repeats R, --variant V...)
+#                                     --repeats R, --variant V..., --manifest F)
 # ARGS go to the benchmark, e.g. scripts/bench.sh --repeats 9.
 set -euo pipefail
 cd "$(dirname "$0")/.."

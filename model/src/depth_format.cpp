@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "penumbra/model/enum_names.hpp"
+
 namespace penumbra {
 
 int unorm_bits(DepthFormat format) {
@@ -38,18 +40,11 @@ std::string_view to_string(DepthFormat format) {
 }
 
 std::optional<DepthFormat> parse_depth_format(std::string_view name) {
-  for (const DepthFormat format : kAllDepthFormats) {
-    if (to_string(format) == name) return format;
-  }
-  return std::nullopt;
+  return parse_enum(kAllDepthFormats, name);
 }
 
 std::string allowed_depth_formats() {
-  std::string out;
-  for (const DepthFormat format : kAllDepthFormats) {
-    out += (out.empty() ? "" : ", ") + std::string(to_string(format));
-  }
-  return out;
+  return enum_names(kAllDepthFormats);
 }
 
 }  // namespace penumbra

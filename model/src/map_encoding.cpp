@@ -1,5 +1,7 @@
 #include "penumbra/model/map_encoding.hpp"
 
+#include "penumbra/model/enum_names.hpp"
+
 namespace penumbra {
 double encode_depth(MapEncoding encoding, double z, const DepthRange& range) {
   const double n = range.near_plane;
@@ -70,19 +72,11 @@ std::string_view to_string(MapEncoding encoding) {
 }
 
 std::optional<MapEncoding> parse_map_encoding(std::string_view name) {
-  for (const MapEncoding e : kAllMapEncodings) {
-    if (to_string(e) == name) return e;
-  }
-  return std::nullopt;
+  return parse_enum(kAllMapEncodings, name);
 }
 
 std::string allowed_map_encodings() {
-  std::string out;
-  for (const MapEncoding e : kAllMapEncodings) {
-    if (!out.empty()) out += ", ";
-    out += to_string(e);
-  }
-  return out;
+  return enum_names(kAllMapEncodings);
 }
 
 MapEncoding map_encoding(const VariantKeys& keys) {

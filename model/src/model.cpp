@@ -145,9 +145,9 @@ std::vector<float> gaussian_weights(int radius) {
 }
 
 // Keys are appended in a fixed order (k, b, p, disk, traversal, n, r,
-// depth_aware, bits, rotation, receiver_plane, map_encoding) and only when set (the flags
-// only when true), so the name is total over any VariantKeys and stays
-// stable across runs.
+// depth_aware, bits, rotation, receiver_plane, map_encoding, map_layout) and
+// only when set (the flags only when true), so the name is total over any
+// VariantKeys and stays stable across runs.
 std::string variant_name(Technique technique, const VariantKeys& keys) {
   std::string name(to_string(technique));
   if (keys.kernel) name += "_k" + std::to_string(*keys.kernel);
@@ -162,6 +162,7 @@ std::string variant_name(Technique technique, const VariantKeys& keys) {
   if (keys.rotation) name += "_" + *keys.rotation;
   if (keys.receiver_plane.value_or(false)) name += "_receiver_plane";
   if (keys.map_encoding) name += "_" + *keys.map_encoding;
+  if (keys.map_layout) name += "_" + *keys.map_layout;
   return name;
 }
 
@@ -170,7 +171,7 @@ bool variant_less(const Variant& a, const Variant& b) {
     const VariantKeys& k = v.keys;
     return std::tie(v.technique, k.kernel, k.blocker_samples, k.pcf_samples, k.disk, k.traversal,
                     k.max_nodes, k.blur_radius, k.depth_aware, k.light_bits, k.rotation,
-                    k.receiver_plane, k.map_encoding);
+                    k.receiver_plane, k.map_encoding, k.map_layout);
   };
   return key(a) < key(b);
 }

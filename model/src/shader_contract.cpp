@@ -163,14 +163,17 @@ constexpr PassKind kMinmaxPasses[] = {PassKind::depth, PassKind::minmax_init,
 constexpr PassKind kScreenBlurPasses[] = {PassKind::depth, PassKind::query, PassKind::blur_h,
                                           PassKind::blur_v, PassKind::composite};
 
-constexpr std::string_view kEncoding[] = {"map_encoding"};
-constexpr std::string_view kGridKeys[] = {"kernel", "map_encoding"};
-constexpr std::string_view kPoissonKeys[] = {"pcf_samples", "disk", "rotation", "receiver_plane",
-                                             "map_encoding"};
+// The keys of the techniques that read the map alone end with the map's
+// encoding and layout.
+constexpr std::string_view kMapKeys[] = {"map_encoding", "map_layout"};
+constexpr std::string_view kGridKeys[] = {"kernel", "map_encoding", "map_layout"};
+constexpr std::string_view kPoissonKeys[] = {"pcf_samples",    "disk",         "rotation",
+                                             "receiver_plane", "map_encoding", "map_layout"};
 constexpr std::string_view kMinmaxPoissonKeys[] = {"pcf_samples", "disk", "rotation",
                                                    "map_encoding"};
 constexpr std::string_view kPcssKeys[] = {"blocker_samples", "pcf_samples",    "disk",
-                                          "rotation",        "receiver_plane", "map_encoding"};
+                                          "rotation",        "receiver_plane", "map_encoding",
+                                          "map_layout"};
 constexpr std::string_view kMinmaxPcfKeys[] = {"kernel", "traversal", "map_encoding"};
 constexpr std::string_view kBackprojectionKeys[] = {"traversal", "max_nodes", "map_encoding"};
 constexpr std::string_view kScreenBlurKeys[] = {"blur_radius", "depth_aware"};
@@ -179,16 +182,15 @@ constexpr std::string_view kBitmaskKeys[] = {"traversal", "max_nodes", "light_bi
 constexpr std::string_view kTraversalEncoding[] = {"traversal", "map_encoding"};
 constexpr std::string_view kDepthAware[] = {"depth_aware"};
 constexpr std::string_view kRotationEncoding[] = {"rotation", "map_encoding"};
-constexpr std::string_view kRotationPlaneEncoding[] = {"rotation", "receiver_plane",
-                                                       "map_encoding"};
+constexpr std::string_view kRotationPlaneMap[] = {"rotation", "receiver_plane", "map_encoding",
+                                                  "map_layout"};
 
 // Indexed by Technique.
 constexpr TechniqueDescription kTechniques[] = {
-    {Technique::hard, "hard", kEncoding, kEncoding, kSinglePass, false},
-    {Technique::pcf_grid, "pcf_grid", kGridKeys, kEncoding, kSinglePass, false},
-    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, kRotationPlaneEncoding, kSinglePass,
-     false},
-    {Technique::pcss, "pcss", kPcssKeys, kRotationPlaneEncoding, kSinglePass, false},
+    {Technique::hard, "hard", kMapKeys, kMapKeys, kSinglePass, false},
+    {Technique::pcf_grid, "pcf_grid", kGridKeys, kMapKeys, kSinglePass, false},
+    {Technique::pcf_poisson, "pcf_poisson", kPoissonKeys, kRotationPlaneMap, kSinglePass, false},
+    {Technique::pcss, "pcss", kPcssKeys, kRotationPlaneMap, kSinglePass, false},
     {Technique::minmax_pcf, "minmax_pcf", kMinmaxPcfKeys, kTraversalEncoding, kMinmaxPasses, true},
     {Technique::backprojection, "backprojection", kBackprojectionKeys, kBackprojectionKeys,
      kMinmaxPasses, true},

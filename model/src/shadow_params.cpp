@@ -27,6 +27,8 @@ ParamBlock shadow_params(const LightParams& light, const ParamSizes& sizes, floa
       {"source_size", map_size},
       {"minmax_info",
        {static_cast<float>(minmax_top_level(sizes.map_width, sizes.map_height)), 0.0f, 0.0f, 0.0f}},
+      // An atlas variant's tile: the whole texture, where the map fills it.
+      {"map_tile", {0.0f, 0.0f, 1.0f, 1.0f}},
   };
 }
 

@@ -22,7 +22,7 @@ double point_tolerance(const SamplingPrecision&) {
 // off by at most one step e, the blend moves by at most |da| + |db| <= 2e,
 // and a mean of such samples by no more.
 double bilinear_tolerance(const SamplingPrecision& precision) {
-  return 2 * precision.step() + kFloatSlack;
+  return 2 * precision.reach() + kFloatSlack;
 }
 
 // The steps of the variant's walk where the target's cap stops it short of

@@ -83,7 +83,7 @@ vec4 backprojection_window(vec3 query, float z_min) {
 #else
   float half_width = LIGHT_SIZE_UV * NEAR_PLANE * (query.z - z_min) / (query.z * z_min);
 #endif
-  vec2 map_size = params.shadow_map_size.xy;
+  vec2 map_size = MAP_SIZE;
   return minmax_clip_window(floor((query.xy - half_width) * map_size) - 1.0,
                             floor((query.xy + half_width) * map_size) + 1.0);
 }

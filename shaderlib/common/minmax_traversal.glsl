@@ -46,7 +46,7 @@ struct MinmaxCursor {
 // Texel columns/rows [first, last] clipped to the map: (x0, y0, x1, y1);
 // empty when x0 > x1 or y0 > y1.
 vec4 minmax_clip_window(vec2 first, vec2 last) {
-  return vec4(max(first, vec2(0.0)), min(last, params.shadow_map_size.xy - 1.0));
+  return vec4(max(first, vec2(0.0)), min(last, MAP_SIZE - 1.0));
 }
 
 bool minmax_window_empty(vec4 window) {

@@ -23,18 +23,53 @@ layout(set = 0, binding = PENUMBRA_SLOT_PARAMS, std140) uniform ShadowParams {
   vec4 light_view_proj_3;
   vec4 camera_depth_range;  // clip z / w = x depth + y; z: the cleared depth; w: 0
 #endif
+#if PENUMBRA_MAP_ATLAS
+  // Last, so that the members before it keep their places: the light's
+  // tile in the atlas (map_layout atlas), u and v of its first texel's outer
+  // corner, its width and height, in texture coordinates.
+  vec4 map_tile;
+#endif
 } params;
 
+#if PENUMBRA_MAP_ATLAS
+// The light being shaded, which an atlas's caller names per call (the query
+// and deferred passes from the block, the function form from its
+// arguments): its `light` and `sampling` members, its tile, and the tile's
+// size in texels (W, H, 1/W, 1/H), in which every technique works.
+vec4 call_light;
+vec4 call_sampling;
+vec4 call_tile;
+vec4 call_map_size;
+
+void set_call(vec4 light, vec4 sampling, vec4 tile) {
+  call_light = light;
+  call_sampling = sampling;
+  call_tile = tile;
+  call_map_size = vec4(params.shadow_map_size.xy * tile.zw, params.shadow_map_size.zw / tile.zw);
+}
+#define PENUMBRA_CALL_FROM_PARAMS() set_call(params.light, params.sampling, params.map_tile)
+#define PENUMBRA_LIGHT call_light
+#define PENUMBRA_SAMPLING call_sampling
+#define PENUMBRA_MAP_SIZE call_map_size
+#else
+#define PENUMBRA_CALL_FROM_PARAMS()
+#define PENUMBRA_LIGHT params.light
+#define PENUMBRA_SAMPLING params.sampling
+#define PENUMBRA_MAP_SIZE params.shadow_map_size
+#endif
+
 // The NVIDIA PCSS whitepaper's names for the same quantities.
-#define LIGHT_WORLD_SIZE (params.light.x)
-#define LIGHT_FRUSTUM_WIDTH (params.light.y)
-#define NEAR_PLANE (params.light.z)
-#define LIGHT_SIZE_UV (params.light.w)
-#define FILTER_RADIUS_UV (params.sampling.x)
-#define DEPTH_BIAS (params.sampling.y)
-#define DEPTH_SCALE (params.sampling.z)
-#define INV_DEPTH_SCALE (params.sampling.w)
-#define TEXEL_SIZE (params.shadow_map_size.zw)
+#define LIGHT_WORLD_SIZE (PENUMBRA_LIGHT.x)
+#define LIGHT_FRUSTUM_WIDTH (PENUMBRA_LIGHT.y)
+#define NEAR_PLANE (PENUMBRA_LIGHT.z)
+#define LIGHT_SIZE_UV (PENUMBRA_LIGHT.w)
+#define FILTER_RADIUS_UV (PENUMBRA_SAMPLING.x)
+#define DEPTH_BIAS (PENUMBRA_SAMPLING.y)
+#define DEPTH_SCALE (PENUMBRA_SAMPLING.z)
+#define INV_DEPTH_SCALE (PENUMBRA_SAMPLING.w)
+// The map's size in texels and one texel in uv (an atlas's: its tile's).
+#define MAP_SIZE (PENUMBRA_MAP_SIZE.xy)
+#define TEXEL_SIZE (PENUMBRA_MAP_SIZE.zw)
 #define MINMAX_TOP_LEVEL (params.minmax_info.x)
 
 #endif

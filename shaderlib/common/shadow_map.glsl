@@ -60,10 +60,26 @@ vec2 receiver_depth_slope(vec3 dx, vec3 dy, float z) {
 #define PENUMBRA_PLANE_Z(z, offset) (z)
 #endif
 
+#if PENUMBRA_MAP_ATLAS
+// Where uv of the light's own map lies in the atlas: clamped to the tile's
+// outermost texel centres first, so that a read at or beyond the map's edge
+// returns its edge texel, as clamp addressing does for a map of its own, and
+// no read leaves the tile (docs/techniques.md, "Map layouts").
+vec2 map_uv(vec2 uv) {
+  vec2 half_texel = 0.5 * TEXEL_SIZE;
+  return call_tile.xy + clamp(uv, half_texel, 1.0 - half_texel) * call_tile.zw;
+}
+#else
+#define map_uv(uv) (uv)
+#endif
+
+// The stored value of the texel nearest to uv.
+#define MAP_READ(uv) textureLod(shadow_depth, map_uv(uv), 0.0).r
+
 // Linear light-view z of the texel nearest to uv (point sampling).
 float shadow_depth_point(vec2 uv) {
   penumbra_texel_reads += 1.0;
-  return shadow_linear(textureLod(shadow_depth, uv, 0.0).r);
+  return shadow_linear(MAP_READ(uv));
 }
 
 // The comparison reference for a receiver: biased and stored like the map.
@@ -74,8 +90,7 @@ float shadow_reference(float z_receiver) {
 // 1 when the nearest texel lets the receiver see the light (z_r <= depth).
 float shadow_compare_point(vec2 uv, float z_receiver) {
   penumbra_texel_reads += 1.0;
-  return PENUMBRA_LIT(shadow_reference(z_receiver), textureLod(shadow_depth, uv, 0.0).r) ? 1.0
-                                                                                         : 0.0;
+  return PENUMBRA_LIT(shadow_reference(z_receiver), MAP_READ(uv)) ? 1.0 : 0.0;
 }
 
 // Bilinear comparison: the four texels around uv, each compared, blended
@@ -84,20 +99,19 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver) {
   penumbra_texel_reads += 4.0;
   float reference = shadow_reference(z_receiver);
 #if PENUMBRA_HAS_COMPARISON_SAMPLER
-  return textureLod(shadow_cmp, vec3(uv, reference), 0.0);
+  return textureLod(shadow_cmp, vec3(map_uv(uv), reference), 0.0);
 #else
-  vec2 texel = uv * params.shadow_map_size.xy - 0.5;
+  vec2 texel = uv * MAP_SIZE - 0.5;
   vec2 corner = floor(texel);
   vec2 weight = texel - corner;
-  // Centres of the four texels; clamp addressing handles the map's edges.
+  // Centres of the four texels; clamp addressing (an atlas: map_uv) handles
+  // the map's edges.
   vec2 uv00 = (corner + 0.5) * TEXEL_SIZE;
   vec2 uv11 = uv00 + TEXEL_SIZE;
-  float lit00 = PENUMBRA_LIT(reference, textureLod(shadow_depth, uv00, 0.0).r) ? 1.0 : 0.0;
-  float lit10 =
-      PENUMBRA_LIT(reference, textureLod(shadow_depth, vec2(uv11.x, uv00.y), 0.0).r) ? 1.0 : 0.0;
-  float lit01 =
-      PENUMBRA_LIT(reference, textureLod(shadow_depth, vec2(uv00.x, uv11.y), 0.0).r) ? 1.0 : 0.0;
-  float lit11 = PENUMBRA_LIT(reference, textureLod(shadow_depth, uv11, 0.0).r) ? 1.0 : 0.0;
+  float lit00 = PENUMBRA_LIT(reference, MAP_READ(uv00)) ? 1.0 : 0.0;
+  float lit10 = PENUMBRA_LIT(reference, MAP_READ(vec2(uv11.x, uv00.y))) ? 1.0 : 0.0;
+  float lit01 = PENUMBRA_LIT(reference, MAP_READ(vec2(uv00.x, uv11.y))) ? 1.0 : 0.0;
+  float lit11 = PENUMBRA_LIT(reference, MAP_READ(uv11)) ? 1.0 : 0.0;
   return mix(mix(lit00, lit10, weight.x), mix(lit01, lit11, weight.x), weight.y);
 #endif
 }
@@ -114,7 +128,7 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver) {
 // read.
 float shadow_texel(vec2 texel) {
   penumbra_texel_reads += 1.0;
-  return shadow_normalized(textureLod(shadow_depth, (texel + 0.5) * TEXEL_SIZE, 0.0).r);
+  return shadow_normalized(MAP_READ((texel + 0.5) * TEXEL_SIZE));
 }
 
 #endif

@@ -12,14 +12,33 @@
 // view-projection matrix takes to `light_clip_position`. With the rotation
 // key, `pixel` is the fragment's integer column and row (floor of its
 // window position), which turns the samples. With receiver_plane, call it in
-// uniform control flow: it takes screen derivatives.
+// uniform control flow: it takes screen derivatives. With map_layout atlas,
+// each call names its light: ShadowParams' `light` and `sampling` members
+// for it, and its tile in the atlas (`map_tile`).
 #if PENUMBRA_ROTATION_IGN
-float penumbra_visibility(vec4 light_clip_position, vec2 pixel) {
+#define PENUMBRA_PIXEL_PARAMETER , vec2 pixel
+#define PENUMBRA_HARNESS_PIXEL , floor(gl_FragCoord.xy)
 #else
-float penumbra_visibility(vec4 light_clip_position) {
+#define PENUMBRA_PIXEL_PARAMETER
+#define PENUMBRA_HARNESS_PIXEL
+#endif
+#if PENUMBRA_MAP_ATLAS
+#define PENUMBRA_LIGHT_PARAMETERS , vec4 light, vec4 sampling, vec4 map_tile
+#define PENUMBRA_HARNESS_LIGHT , params.light, params.sampling, params.map_tile
+#else
+#define PENUMBRA_LIGHT_PARAMETERS
+#define PENUMBRA_HARNESS_LIGHT
+#endif
+
+float penumbra_visibility(vec4 light_clip_position PENUMBRA_PIXEL_PARAMETER
+                              PENUMBRA_LIGHT_PARAMETERS) {
+#if !PENUMBRA_ROTATION_IGN
   vec2 pixel = vec2(0.0);
 #endif
   penumbra_texel_reads = 0.0;
+#if PENUMBRA_MAP_ATLAS
+  set_call(light, sampling, map_tile);
+#endif
   vec3 query = clip_to_query(light_clip_position);
 #if PENUMBRA_RECEIVER_PLANE
   penumbra_depth_slope = receiver_depth_slope(dFdx(query), dFdy(query), query.z);
@@ -33,10 +52,7 @@ layout(location = 0) in vec4 harness_clip_position;
 layout(location = 0) out vec4 harness_visibility;
 
 void main() {
-#if PENUMBRA_ROTATION_IGN
-  float visible = penumbra_visibility(harness_clip_position, floor(gl_FragCoord.xy));
-#else
-  float visible = penumbra_visibility(harness_clip_position);
-#endif
+  float visible = penumbra_visibility(harness_clip_position PENUMBRA_HARNESS_PIXEL
+                                          PENUMBRA_HARNESS_LIGHT);
   harness_visibility = vec4(visible, penumbra_texel_reads, 0.0, 0.0);
 }

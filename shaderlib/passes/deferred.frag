@@ -16,6 +16,7 @@ layout(location = 0) out vec4 visibility;
 
 void main() {
   penumbra_texel_reads = 0.0;
+  PENUMBRA_CALL_FROM_PARAMS();
   float depth = textureLod(camera_depth, screen_uv, 0.0).x;
   // The camera's clip space at this pixel: its rows run as the light's map's
   // do on this API (PENUMBRA_CLIP_Y_TO_V), its z as the engine maps depth.

@@ -13,6 +13,7 @@ layout(location = 0) out vec4 visibility;
 
 void main() {
   penumbra_texel_reads = 0.0;
+  PENUMBRA_CALL_FROM_PARAMS();
   vec3 query = textureLod(receivers, screen_uv, 0.0).xyz;
 #if PENUMBRA_RECEIVER_PLANE
   penumbra_depth_slope = receiver_depth_slope(dFdx(query), dFdy(query), query.z);

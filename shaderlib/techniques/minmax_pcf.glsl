@@ -54,7 +54,7 @@ float minmax_pcf_count(vec2 first, float reference) {
 }
 
 float shadow_visibility(vec3 query) {
-  vec2 first = floor(query.xy * params.shadow_map_size.xy) - float(KERNEL_SIZE / 2);
+  vec2 first = floor(query.xy * MAP_SIZE) - float(KERNEL_SIZE / 2);
   float count = minmax_pcf_count(first, shadow_normalized_reference(query.z));
   // C = 0 gives exactly 1 (K^2 times the rounded 1/K^2 can be 0.99999994).
   // Otherwise (K^2 - C) is exact and one correctly rounded product follows,

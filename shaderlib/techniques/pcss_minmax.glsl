@@ -18,7 +18,7 @@ bool minmax_find_blocker(out float zBlocker, vec2 uv, float zReceiver, float ref
 #else
   float searchWidth = LIGHT_SIZE_UV * (zReceiver - NEAR_PLANE) / zReceiver;
 #endif
-  vec2 map_size = params.shadow_map_size.xy;
+  vec2 map_size = MAP_SIZE;
   vec4 window = minmax_clip_window(floor((uv - searchWidth) * map_size),
                                    floor((uv + searchWidth) * map_size));
   if (minmax_window_empty(window)) return false;

@@ -91,8 +91,8 @@ TEST(ManifestErrors, UnknownKeyInASet) {
       manifest_error(with_set(R"({"technique": "pcf_grid", "kernels": [3]})")),
       "perms.json: /sets/1/kernels: unknown key 'kernels'; allowed keys: technique, "
       "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, "
-      "blur_radius, depth_aware, light_bits, rotation, receiver_plane, map_encoding, target, "
-      "forms");
+      "blur_radius, depth_aware, light_bits, rotation, receiver_plane, map_encoding, map_layout, "
+      "target, forms");
 }
 
 TEST(ManifestErrors, UnknownTechnique) {
@@ -322,12 +322,39 @@ TEST(ManifestErrors, MapEncodingIsAnEncodingOfATechniqueThatTakesOne) {
   EXPECT_NE(std::ranges::find((*variants)[1].targets, Target::spirv), (*variants)[1].targets.end());
 }
 
+// map_layout names a layout, for the techniques that read the map alone;
+// single is the key left out.
+TEST(ManifestErrors, MapLayoutIsALayoutOfATechniqueThatTakesOne) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": "hard",
+                                              "map_layout": ["atlas", "array"]})")),
+                   "perms.json: /sets/1/map_layout/1: unknown map_layout 'array'; allowed map "
+                   "layouts: single, atlas (docs/techniques.md, \"Map layouts\")");
+  expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 3,
+                                              "map_layout": "atlas"})")),
+                   "perms.json: /sets/1/map_layout: key 'map_layout' is used by none of this "
+                   "set's techniques");
+  const std::string both = R"({"schema": 1, "sets": [
+    {"technique": "pcf_grid", "kernel": 3, "map_encoding": ["linear", "perspective"],
+     "map_layout": ["single", "atlas"]}],
+    "exclude": [{"map_layout": "atlas", "map_encoding": "perspective"}]})";
+  Result<Manifest> manifest = parse_manifest(both, "perms.json");
+  ASSERT_TRUE(manifest.ok()) << manifest.error().to_string();
+  Result<std::vector<Variant>> variants = expand(*manifest);
+  ASSERT_TRUE(variants.ok()) << variants.error().to_string();
+  std::vector<std::string> names;
+  for (const Variant& v : *variants) names.push_back(v.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"pcf_grid_k3", "pcf_grid_k3_atlas",
+                                             "pcf_grid_k3_perspective"}));
+  EXPECT_FALSE((*variants)[0].keys.map_layout);
+  EXPECT_EQ((*variants)[1].keys.map_layout, "atlas");
+}
+
 TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "pcss", "pcf_samples": 16, "disk": "poisson"})")),
       "perms.json: /sets/1: technique pcss needs key 'blocker_samples'; pcss uses "
       "blocker_samples, pcf_samples, disk, rotation (optional), receiver_plane (optional), "
-      "map_encoding (optional)");
+      "map_encoding (optional), map_layout (optional)");
   expect_bad_input(manifest_error(with_set(R"({"kernel": 3})")),
                    "perms.json: /sets/1: missing key 'technique'; allowed techniques: hard, "
                    "pcf_grid, pcf_poisson, pcss, minmax_pcf, backprojection, pcss_minmax, "
@@ -352,7 +379,7 @@ TEST(ManifestErrors, SetsAndExclusions) {
       manifest_error(R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{}]})"),
       "perms.json: /exclude/0: an exclusion needs at least one key; allowed keys: technique, "
       "blocker_samples, pcf_samples, kernel, disk, traversal, max_nodes, blur_radius, "
-      "depth_aware, light_bits, rotation, receiver_plane, map_encoding, target");
+      "depth_aware, light_bits, rotation, receiver_plane, map_encoding, map_layout, target");
   expect_bad_input(
       manifest_error(
           R"({"schema": 1, "sets": [{"technique": "hard"}], "exclude": [{"kernel": 0}]})"),

@@ -6,7 +6,8 @@
 //
 // The tables sit between `<!-- params-reads TABLE -->` and
 // `<!-- end params-reads -->`: TABLE `techniques` has a row per technique
-// and a column per form (query, deferred, function), TABLE `passes` a row
+// (and one per technique's atlas variants, "pcss, map_layout atlas") and a
+// column per form (query, deferred, function), TABLE `passes` a row
 // per shared pass (reads). A cell lists `member.components` in block order,
 // `-` for none, or `no such form`; a technique's cell is the union over its
 // variants. Cells compare as guide_check's split_row() reads them: without
@@ -26,6 +27,7 @@
 #include "default_library.hpp"
 #include "guide_check.hpp"
 #include "penumbra/library/library.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/support/file.hpp"
 
 namespace penumbra::testing {
@@ -59,9 +61,9 @@ void add_reads(const std::string& text, Reads& reads) {
 // `camera_inverse_*` or `light_view_proj_*`.
 std::string cell(const Reads& reads) {
   static const std::vector<std::string> kOrder = {
-      "shadow_map_size",   "light",       "sampling",         "screen_size",
-      "source_size",       "minmax_info", "camera_inverse_0", "light_view_proj_0",
-      "camera_depth_range"};
+      "shadow_map_size",    "light",       "sampling",         "screen_size",
+      "source_size",        "minmax_info", "camera_inverse_0", "light_view_proj_0",
+      "camera_depth_range", "map_tile"};
   const auto whole = [&](const std::string& member) {
     const auto found = reads.find(member);
     return found != reads.end() && found->second.size() == 4;
@@ -97,7 +99,10 @@ Tables library_reads(const Library& library) {
     if (!relative.empty()) add_reads(read_file(library.root / relative).value(), reads);
   };
   for (const LibraryVariant& variant : library.variants) {
-    const std::string technique(to_string(variant.variant.technique));
+    // An atlas variant reads its light from elsewhere: a row of its own.
+    const std::string technique =
+        std::string(to_string(variant.variant.technique)) +
+        (map_layout(variant.variant.keys) == MapLayout::atlas ? ", map_layout atlas" : "");
     for (const auto& [pass, targets] : variant.passes) {
       const auto files = targets.find(Target::glsl450);
       if (files == targets.end()) continue;

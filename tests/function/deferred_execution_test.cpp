@@ -19,15 +19,17 @@ namespace {
 // One variant per technique and encoding, and the keys that change what the
 // pass derives: rotation (the pixel) and receiver_plane (screen derivatives
 // of rebuilt receivers).
-const std::vector<std::string> kVariants = {"hard",
-                                            "pcf_grid_k3_perspective",
-                                            "pcf_poisson_p16_poisson_receiver_plane",
-                                            "pcss_b16_p16_poisson_perspective_reversed",
-                                            "pcss_b16_p16_poisson_ign",
-                                            "minmax_pcf_k8_perspective_reversed",
-                                            "pcss_minmax_p16_poisson_orthographic",
-                                            "backprojection_perspective_reversed",
-                                            "bitmask_backprojection_bits64_perspective_reversed"};
+const std::vector<std::string> kVariants = {
+    "hard",
+    "pcf_grid_k3_perspective",
+    "pcf_poisson_p16_poisson_receiver_plane",
+    "pcss_b16_p16_poisson_perspective_reversed",
+    "pcss_b16_p16_poisson_ign",
+    "minmax_pcf_k8_perspective_reversed",
+    "pcss_minmax_p16_poisson_orthographic",
+    "backprojection_perspective_reversed",
+    "bitmask_backprojection_bits64_perspective_reversed",
+    "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_atlas"};
 
 Result<std::unique_ptr<Engine>> validated_engine() {
   return Engine::create({.device = "", .validation = true}, fail_on_validation_messages());

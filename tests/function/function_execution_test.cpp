@@ -16,17 +16,21 @@ namespace {
 // One variant per technique and encoding, and the keys that change what
 // the function takes or derives: rotation (the pixel) and receiver_plane
 // (screen derivatives). The min-max techniques read the mip the target's
-// build passes made of the map.
-const std::vector<std::string> kVariants = {"hard",
-                                            "pcf_grid_k3",
-                                            "pcf_grid_k3_perspective",
-                                            "pcf_poisson_p16_poisson_receiver_plane",
-                                            "pcss_b16_p16_poisson_perspective_reversed",
-                                            "pcss_b16_p16_poisson_ign",
-                                            "minmax_pcf_k8_orthographic",
-                                            "pcss_minmax_p32_poisson_ign",
-                                            "backprojection_perspective",
-                                            "bitmask_backprojection_bits64_orthographic"};
+// build passes made of the map. An atlas variant takes its light at each
+// call.
+const std::vector<std::string> kVariants = {
+    "hard",
+    "pcf_grid_k3",
+    "pcf_grid_k3_perspective",
+    "pcf_poisson_p16_poisson_receiver_plane",
+    "pcss_b16_p16_poisson_perspective_reversed",
+    "pcss_b16_p16_poisson_ign",
+    "minmax_pcf_k8_orthographic",
+    "pcss_minmax_p32_poisson_ign",
+    "backprojection_perspective",
+    "bitmask_backprojection_bits64_orthographic",
+    "pcf_poisson_p16_poisson_ign_atlas",
+    "pcss_b16_p16_poisson_receiver_plane_orthographic_atlas"};
 
 class FunctionFormExecution : public ::testing::TestWithParam<std::string> {};
 

@@ -15,6 +15,7 @@
 #include "penumbra/compiler/stage.hpp"
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/compiler/text_frontend.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/model/target_traits.hpp"
 #include "penumbra/support/file.hpp"
@@ -80,6 +81,14 @@ std::string engine_shader(Target target, const PassReflection& reflection,
                           const std::string& text) {
   const bool hlsl = traits(target).is_hlsl;
   const bool pixel = reflection.signature.find("pixel") != std::string::npos;
+  // An atlas variant's light, each call's: the whitepaper's light in the
+  // atlas's first quarter (constants a compiler folds: no 0 / 0 anywhere).
+  const std::string vec4 = hlsl ? "float4" : "vec4";
+  const std::string light = reflection.signature.find("map_tile") == std::string::npos
+                                ? ""
+                                : ", " + vec4 + "(0.5, 3.75, 9.5, 0.125), " + vec4 +
+                                      "(0.01, 0.05, 0.03125, 32.0), " + vec4 +
+                                      "(0.0, 0.0, 0.5, 0.5)";
   std::string out;
   if (!hlsl) {
     out = target == Target::glsl450   ? "#version 450\n"
@@ -94,7 +103,7 @@ std::string engine_shader(Target target, const PassReflection& reflection,
     out += " vec4 light_clip_position;\n";
     out += "layout(location = 0) out vec4 colour;\n";
     out += "void main() {\n  colour = vec4(penumbra_visibility(light_clip_position";
-    out += pixel ? ", floor(gl_FragCoord.xy)));\n}\n" : "));\n}\n";
+    out += std::string(pixel ? ", floor(gl_FragCoord.xy)" : "") + light + "));\n}\n";
     return out;
   }
   const bool sm3 = traits(target).shader_model == 3;
@@ -102,7 +111,7 @@ std::string engine_shader(Target target, const PassReflection& reflection,
   out += "\nfloat4 main(float4 light_clip_position : TEXCOORD0, float4 position : ";
   out += sm3 ? "VPOS) : COLOR0 {\n" : "SV_Position) : SV_Target {\n";
   out += "  return penumbra_visibility(light_clip_position";
-  out += pixel ? ", floor(position.xy)).xxxx;\n}\n" : ").xxxx;\n}\n";
+  out += std::string(pixel ? ", floor(position.xy)" : "") + light + ").xxxx;\n}\n";
   return out;
 }
 
@@ -127,8 +136,13 @@ TEST_P(FunctionFormTest, IndexNamesAPrefixedFileThatCompilesInAnEngineShader) {
     const bool rotation = read.variant.keys.rotation.has_value();
     const std::string vec4 = hlsl ? "float4" : "vec4";
     const std::string vec2 = hlsl ? "float2" : "vec2";
-    EXPECT_EQ(reflection.signature, "float penumbra_visibility(" + vec4 + " light_clip_position" +
-                                        (rotation ? ", " + vec2 + " pixel)" : ")"));
+    const bool atlas = map_layout(read.variant.keys) == MapLayout::atlas;
+    EXPECT_EQ(
+        reflection.signature,
+        "float penumbra_visibility(" + vec4 + " light_clip_position" +
+            (rotation ? ", " + vec2 + " pixel" : "") +
+            (atlas ? ", " + vec4 + " light, " + vec4 + " sampling, " + vec4 + " map_tile" : "") +
+            ")");
     const Result<std::string> text = read_file(library.root / form.file);
     ASSERT_TRUE(text.ok()) << text.error().to_string();
     EXPECT_NE(text->find(reflection.signature), std::string::npos);

@@ -44,6 +44,19 @@ TEST(Hard, TexelEdgesBelongToTheTexelOnTheRight) {
   EXPECT_EQ(hard_at(map, 0.4999, 0.3, 7.0).visibility, 0.0);
 }
 
+// An atlas tile's placement moves each sample by the shader's own rounding
+// (SamplingPrecision::coordinate_error): the boundary's window widens by it.
+TEST(Hard, CoordinateErrorWidensTheTexelBoundaryWindow) {
+  const FloatImage map = column_split_map(4, 4, 2, 5.0f, 10.0f);
+  const SamplingPrecision gpu;
+  const double u = (2.0 + 2.0 * gpu.point_window()) / 4;  // just outside the GPU's own window
+  EXPECT_EQ(hard_at(map, u, 0.3, 7.0, gpu).ambiguous, Ambiguity::none);
+  SamplingPrecision atlas = gpu;
+  atlas.coordinate_error = 2.0 * gpu.step();
+  EXPECT_EQ(hard_at(map, u, 0.3, 7.0, atlas).ambiguous, Ambiguity::texel_boundary);
+  EXPECT_EQ(hard_at(map, u, 0.3, 7.0, atlas).visibility, 1.0);
+}
+
 TEST(Hard, ReadsOutsideTheMapClampToTheEdge) {
   const FloatImage map = column_split_map(4, 4, 1, 5.0f, 10.0f);
   EXPECT_EQ(hard_at(map, -0.3, 0.5, 7.0).visibility, 0.0);

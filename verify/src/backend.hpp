@@ -73,10 +73,12 @@ struct SurfaceDraw {
   std::string where;  // the function form's file, in errors
   Matrix4 camera{};
   Matrix4 light{};
-  LightClipDepth light_depth;  // how the light's clip position gives z_r
-  VertexOptions vertex;        // the picture's size, and whether the function takes the pixel
-  std::string function_text;   // the function form, which the fragment stage pastes
-  PassReflection reflection;   // what the engine binds by
+  LightClipDepth light_depth;     // how the light's clip position gives z_r
+  VertexOptions vertex;           // the picture's size, and whether the function takes the pixel
+  std::string function_text;      // the function form, which the fragment stage pastes
+  std::optional<CallLight> call;  // what an atlas variant's function takes at each call
+  ParamBlock params;              // the surface draw's block (the fixture's, less `call`'s)
+  PassReflection reflection;      // what the engine binds by
   std::vector<std::array<float, 3>> triangles;
   int width = 0;
   int height = 0;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "atlas_fixture.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "scene_truths.hpp"
@@ -23,6 +25,9 @@ Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Libr
                       load_executable(library, entry, PassKind::depth, target));
   PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, truths, depth.program, target,
                                                  out.stage.scene, out.view.receivers, map_format));
+  if (map_layout(entry.variant.keys) == MapLayout::atlas) {
+    PENUMBRA_TRY_ASSIGN(out.fixture, atlas_fixture(engine, out.fixture));
+  }
   out.depth = std::move(depth.program.reflection);
   return out;
 }
@@ -33,7 +38,8 @@ Result<const CameraStage*> CameraStages::get(const Library& library, const Libra
   if (const auto depth = entry.passes.find(PassKind::depth); depth != entry.passes.end()) {
     if (const auto files = depth->second.find(target); files != depth->second.end()) {
       key = std::string(to_string(target)) + " " +
-            std::string(to_string(map_encoding(entry.variant.keys))) + " " + files->second.vert +
+            std::string(to_string(map_encoding(entry.variant.keys))) + " " +
+            std::string(to_string(map_layout(entry.variant.keys))) + " " + files->second.vert +
             " " + files->second.frag;
     }
   }
@@ -122,8 +128,8 @@ Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVarian
   EngineMap map{own_map ? *own_map : fixture.normalized_depth, fixture.encoded,
                 depth_scale_for(fixture.scene.far_z)};
   check.map_format = map.encoded ? map.encoded->format : DepthFormat::d32_float;
-  const reference::SamplingPrecision precision{
-      static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))};
+  const reference::SamplingPrecision precision = atlas_precision(
+      fixture, {static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))});
   PENUMBRA_TRY_ASSIGN(
       const StagePictureCheck picture,
       check_stage_picture(entry.variant, camera.stage, camera.view, map, fixture.scene.light,

@@ -60,6 +60,16 @@ std::string glsl_version(Target target) {
   return "#version 300 es\nprecision highp float;\n";
 }
 
+// ", vec4(...), vec4(...), vec4(...)": `call`'s arguments, or nothing.
+std::string call_arguments(const std::optional<CallLight>& call, bool hlsl) {
+  if (!call) return {};
+  std::string out;
+  for (const std::array<float, 4>* value : {&call->light, &call->sampling, &call->map_tile}) {
+    out += ", " + row_literal({(*value)[0], (*value)[1], (*value)[2], (*value)[3]}, hlsl);
+  }
+  return out;
+}
+
 }  // namespace
 
 Matrix4 camera_clip(const reference::Stage& stage, int width, int height, Target target) {
@@ -158,9 +168,11 @@ std::string engine_vertex_shader(Target target, const Matrix4& camera, const Mat
 }
 
 std::string engine_fragment_shader(Target target, const PassReflection& reflection,
-                                   const std::string& function_text, const LightClipDepth& depth) {
+                                   const std::string& function_text, const LightClipDepth& depth,
+                                   const std::optional<CallLight>& call) {
   const bool hlsl = traits(target).is_hlsl;
   const bool pixel = takes_pixel(reflection);
+  const std::string arguments = call_arguments(call, hlsl);
   const std::string result = "light_clip_position.x, light_clip_position.y, visible, " +
                              clip_linear_z(depth, "light_clip_position");
   if (hlsl) {
@@ -172,9 +184,8 @@ std::string engine_fragment_shader(Target target, const PassReflection& reflecti
     if (pixel) out += sm3 ? ", float4 position : TEXCOORD1" : ", float4 position : SV_Position";
     out += sm3 ? ") : COLOR0 {\n" : ") : SV_Target {\n";
     out += "  float visible = penumbra_visibility(light_clip_position";
-    out += !pixel ? ");\n"
-           : sm3  ? ", floor(position.xy / position.w));\n"
-                  : ", floor(position.xy));\n";
+    out += !pixel ? "" : sm3 ? ", floor(position.xy / position.w)" : ", floor(position.xy)";
+    out += arguments + ");\n";
     return out + "  return float4(" + result + ");\n}\n";
   }
   std::string out = glsl_version(target);
@@ -185,7 +196,7 @@ std::string engine_fragment_shader(Target target, const PassReflection& reflecti
   out += target == Target::glsl450 ? "layout(location = 0) in" : "in";
   out += " vec4 light_clip_position;\nlayout(location = 0) out vec4 colour;\n";
   out += "void main() {\n  float visible = penumbra_visibility(light_clip_position";
-  out += pixel ? ", floor(gl_FragCoord.xy));\n" : ");\n";
+  out += std::string(pixel ? ", floor(gl_FragCoord.xy)" : "") + arguments + ");\n";
   return out + "  colour = vec4(" + result + ");\n}\n";
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "penumbra/model/model.hpp"
@@ -77,11 +78,23 @@ struct VertexOptions {
 std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light,
                                  const VertexOptions& options);
 
+// What an atlas variant's function takes at each call after the pixel
+// (docs/function-form.md): its light's `light` and `sampling` members of
+// ShadowParams and its tile, which the engine's stage passes as constants
+// of its own, as an engine passes a light of its own arrays.
+struct CallLight {
+  std::array<float, 4> light{};
+  std::array<float, 4> sampling{};
+  std::array<float, 4> map_tile{};
+};
+
 // The fragment stage around `function_text` (the function form's file),
-// declared as its `reflection` says. Output 0 is the light clip position it
-// called penumbra_visibility() with and the visibility: (x, y, visibility,
-// z_r), z_r its linear z as `depth` takes it out (w, perspective).
+// declared as its `reflection` says, calling it with `call` where given.
+// Output 0 is the light clip position it called penumbra_visibility() with
+// and the visibility: (x, y, visibility, z_r), z_r its linear z as `depth`
+// takes it out (w, perspective).
 std::string engine_fragment_shader(Target target, const PassReflection& reflection,
-                                   const std::string& function_text, const LightClipDepth& depth);
+                                   const std::string& function_text, const LightClipDepth& depth,
+                                   const std::optional<CallLight>& call = std::nullopt);
 
 }  // namespace penumbra

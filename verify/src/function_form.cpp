@@ -74,6 +74,15 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, Ca
   draw.light = light_clip(camera.stage.scene.light, draw.light_depth, target);
   draw.vertex = {takes_pixel(form->second.reflection), camera.width, camera.height};
   draw.function_text = text;
+  draw.params = camera.fixture.params;
+  if (camera.fixture.atlas) {
+    // An atlas variant's function takes its light at each call; the block's
+    // members the call replaces are left zero, so that a function that read
+    // them instead fails.
+    draw.call =
+        CallLight{draw.params.at("light"), draw.params.at("sampling"), draw.params.at("map_tile")};
+    for (const char* member : {"light", "sampling", "map_tile"}) draw.params[member] = {};
+  }
   // The engine's own vertex input, render target and depth buffer: the
   // depth pass's position and depth format, and four floats.
   draw.reflection = form->second.reflection;

@@ -131,7 +131,7 @@ class GlBackend final : public Backend {
           std::map<PassKind, GlPass> programs;
           for (const auto& [pass, text] : *texts) programs.emplace(pass, pass_of(text));
           PENUMBRA_TRY_ASSIGN(runtime::PassOutputs outputs,
-                              engine_->run_passes(passes, programs, fixture.normalized_depth,
+                              engine_->run_passes(passes, programs, fixture.device_map(),
                                                   {.receivers = &fixture.receivers,
                                                    .scene_colour = &fixture.colour},
                                                   fixture.params, fixture.map_format()));
@@ -145,14 +145,14 @@ class GlBackend final : public Backend {
     out = execution();
     const std::string vertex =
         engine_vertex_shader(draw.target, draw.camera, draw.light, draw.vertex);
-    const std::string fragment =
-        engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth);
+    const std::string fragment = engine_fragment_shader(
+        draw.target, draw.reflection, draw.function_text, draw.light_depth, draw.call);
     PENUMBRA_TRY_ASSIGN(const std::optional<GlMinmaxTexts> minmax,
                         read_gl_minmax(*draw.library, *draw.entry, draw.target));
     PENUMBRA_TRY_ASSIGN(FloatImage clip,
                         engine_->run_surface({vertex, fragment, draw.reflection}, draw.triangles,
-                                             fixture.normalized_depth, draw.width, draw.height,
-                                             fixture.params, fixture.map_format(), passes(minmax)));
+                                             fixture.device_map(), draw.width, draw.height,
+                                             draw.params, fixture.map_format(), passes(minmax)));
     return SurfacePicture{std::move(clip), nullptr};
   }
 
@@ -163,9 +163,9 @@ class GlBackend final : public Backend {
                         read_pass(*draw.library, *draw.entry, PassKind::deferred, draw.target));
     PENUMBRA_TRY_ASSIGN(const std::optional<GlMinmaxTexts> minmax,
                         read_gl_minmax(*draw.library, *draw.entry, draw.target));
-    PENUMBRA_TRY_ASSIGN(auto output, engine_->run_deferred(pass_of(texts), fixture.normalized_depth,
-                                                           draw.camera_depth, draw.params,
-                                                           fixture.map_format(), passes(minmax)));
+    PENUMBRA_TRY_ASSIGN(
+        auto output, engine_->run_deferred(pass_of(texts), fixture.device_map(), draw.camera_depth,
+                                           draw.params, fixture.map_format(), passes(minmax)));
     return scene_output(std::move(output.visibility), std::move(output.texel_reads));
   }
 

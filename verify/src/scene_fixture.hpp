@@ -44,6 +44,13 @@ struct SceneFixture {
   // What a map of the scene is held against (a path that draws its own
   // checks it against the same).
   std::shared_ptr<const DepthTruth> depth_truth;
+  // An atlas variant's: the atlas that holds normalized_depth in one tile
+  // (atlas_fixture.hpp), which the devices read instead of it; `map` and
+  // `params` are the atlas's.
+  std::shared_ptr<const FloatImage> atlas;
+
+  // What a device uploads as the map: the atlas, or the map itself.
+  const FloatImage& device_map() const { return atlas ? *atlas : normalized_depth; }
 
   // The depth image the map's readers sample: D32_SFLOAT unless encoded.
   DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }
@@ -57,6 +64,9 @@ struct TargetScenes {
   // Whether the maps hold the min-max mip the target's own passes built, or
   // why they could not; absent until a variant that reads the mip asks.
   std::optional<Status> minmax;
+  // The same scenes, each map in an atlas tile (atlas_fixture()); absent
+  // until an atlas variant asks.
+  std::shared_ptr<TargetScenes> atlas;
 };
 
 // `linear` (a map of `scene` drawn by `target`'s depth pass, as linear z)

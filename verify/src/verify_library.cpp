@@ -6,12 +6,14 @@
 #include <thread>
 #include <tuple>
 
+#include "atlas_fixture.hpp"
 #include "backend.hpp"
 #include "camera_stage.hpp"
 #include "cpu_work.hpp"
 #include "minmax_check.hpp"
 #include "pair_queue.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "penumbra/reference/techniques.hpp"
 #include "penumbra/verify/stage_picture.hpp"
@@ -75,6 +77,24 @@ EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend
   return out;
 }
 
+// The scenes `entry` reads: `scenes`, or for an atlas variant their atlas
+// (made ready by run_pair()).
+const TargetScenes& variant_scenes(const TargetScenes& scenes, const LibraryVariant& entry) {
+  return map_layout(entry.variant.keys) == MapLayout::atlas ? *scenes.atlas : scenes;
+}
+
+// Every scene of `scenes` with its map in an atlas tile, on `engine`: an
+// atlas variant's. The min-max mip is not built on them: no atlas variant
+// reads it.
+Result<std::shared_ptr<TargetScenes>> prepare_atlas(Engine& engine, const TargetScenes& scenes) {
+  auto out = std::make_shared<TargetScenes>();
+  for (const SceneFixture& fixture : scenes.scenes) {
+    PENUMBRA_TRY_ASSIGN(SceneFixture atlas, atlas_fixture(engine, fixture));
+    out->scenes.push_back(std::move(atlas));
+  }
+  return out;
+}
+
 // `entry`'s passes for `target` on `backend`, on the device: every scene's
 // output, to be checked. A run that cannot load or execute is failed here.
 PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& entry, Target target,
@@ -96,7 +116,7 @@ PendingRun run_on_device(Context& ctx, Backend& backend, const LibraryVariant& e
     run.not_executed = std::move(lacking);  // the engine forms are checked without it
     return pending;
   }
-  const TargetScenes& scenes = ctx.scenes.at(map_key(entry.variant, target));
+  const TargetScenes& scenes = variant_scenes(ctx.scenes.at(map_key(entry.variant, target)), entry);
   auto passes = backend.load(ctx.library, entry, target, scenes);
   if (!passes) {
     run = failed_run(target, backend.name(), passes.error());
@@ -244,6 +264,16 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
     return result;
   }
   TargetScenes& scenes = ctx.scenes.at(key);
+  if (map_layout(entry.variant.keys) == MapLayout::atlas && !scenes.atlas) {
+    auto atlas = prepare_atlas(ctx.engine, scenes);
+    if (!atlas) {
+      target_runs.runs.push_back(
+          {failed_run(target, ctx.backends.front()->name(), atlas.error()), {}, {}, {}, {}});
+      progress.finished(target_runs.label);
+      return result;
+    }
+    scenes.atlas = std::move(*atlas);
+  }
   if (pair.minmax_preparer && !scenes.minmax) {
     scenes.minmax = prepare_minmax(ctx, ctx.library.variants[*pair.minmax_preparer], target,
                                    claim.reports_minmax ? result.checks : unreported);
@@ -254,11 +284,13 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
   }
   run_engine_forms(ctx, plan, entry, target, result.checks);
   target_runs.references = claim.references;
-  target_runs.unchecked = scenes.scenes.size();
-  for (std::size_t s = 0; s < scenes.scenes.size(); ++s) {
+  const TargetScenes& read = variant_scenes(scenes, entry);
+  target_runs.unchecked = read.scenes.size();
+  for (std::size_t s = 0; s < read.scenes.size(); ++s) {
     work.submit(
-        [&ctx, &runs = target_runs, &entry, target, s, &fixture = scenes.scenes[s], &progress] {
-          check_scene_of_runs(runs, entry.variant, target, s, fixture, ctx.precision);
+        [&ctx, &runs = target_runs, &entry, target, s, &fixture = read.scenes[s], &progress] {
+          check_scene_of_runs(runs, entry.variant, target, s, fixture,
+                              atlas_precision(fixture, ctx.precision));
           if (--runs.unchecked == 0) {
             runs.references.reset();
             progress.finished(runs.label);

@@ -78,11 +78,11 @@ Result<SurfacePicture> surface_on_engine(Engine& engine, const SurfaceDraw& draw
   PENUMBRA_TRY_ASSIGN(
       program.frag, compile(ShaderStage::fragment,
                             engine_fragment_shader(draw.target, draw.reflection, draw.function_text,
-                                                   draw.light_depth),
+                                                   draw.light_depth, draw.call),
                             draw.where + " (engine fragment stage)"));
   PENUMBRA_TRY(build_stage_minmax(engine, *draw.library, *draw.entry, draw.target, fixture));
   PENUMBRA_TRY_ASSIGN(FloatImage clip, engine.run_surface(program, draw.triangles, *fixture.map,
-                                                          draw.width, draw.height, fixture.params));
+                                                          draw.width, draw.height, draw.params));
   return SurfacePicture{std::move(clip), nullptr};
 }
 

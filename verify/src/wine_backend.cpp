@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 
+#include "atlas_fixture.hpp"
 #include "backend.hpp"
 #include "engine_shaders.hpp"
 #include "penumbra/d3d/engine.hpp"
@@ -169,14 +170,15 @@ class WineBackend final : public Backend {
                               draw.where + " (engine vertex stage)", vs.path()));
     PENUMBRA_TRY(compile_hlsl_bytecode(
         compiler_, draw.target, ShaderStage::fragment,
-        engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth),
+        engine_fragment_shader(draw.target, draw.reflection, draw.function_text, draw.light_depth,
+                               draw.call),
         draw.where + " (engine fragment stage)", ps.path()));
     execution = {"vkd3d-compiler's bytecode loaded by the " + name() + " runtime (Wine)", {}};
     PENUMBRA_TRY_ASSIGN(const auto minmax, minmax_passes(*draw.library, *draw.entry, draw.target));
     PENUMBRA_TRY_ASSIGN(
         FloatImage clip,
         engine_->run_surface({vs.path(), ps.path(), draw.reflection}, draw.triangles, drawn->map,
-                             draw.width, draw.height, fixture.params, minmax));
+                             draw.width, draw.height, draw.params, minmax));
     return SurfacePicture{std::move(clip), drawn->stored};
   }
 
@@ -231,18 +233,25 @@ class WineBackend final : public Backend {
         std::to_string(fixture.scene.map_height) + " " +
         std::string(to_string(depth.reflection.map_encoding.value_or(MapEncoding::linear))) + " " +
         std::string(to_string(format));
-    if (auto known = maps_.find(key); known != maps_.end()) return &known->second;
-    PENUMBRA_TRY_ASSIGN(
-        D3dMap map,
-        engine_->render_depth(depth, reference::triangles(fixture.scene), fixture.scene.map_width,
-                              fixture.scene.map_height, fixture.params, format));
-    auto stored = std::make_shared<const FloatImage>(map.normalized);
-    auto linear = std::make_shared<const FloatImage>(
-        linear_depth_of(*stored, fixture.encoded, depth_scale_for(fixture.scene.far_z)));
-    return &maps_
-                .emplace(key,
-                         RuntimeMap{std::move(map), std::move(stored), std::move(linear), false})
-                .first->second;
+    if (auto known = maps_.find(key); known == maps_.end()) {
+      PENUMBRA_TRY_ASSIGN(
+          D3dMap map,
+          engine_->render_depth(depth, reference::triangles(fixture.scene), fixture.scene.map_width,
+                                fixture.scene.map_height, fixture.params, format));
+      auto stored = std::make_shared<const FloatImage>(map.normalized);
+      auto linear = std::make_shared<const FloatImage>(
+          linear_depth_of(*stored, fixture.encoded, depth_scale_for(fixture.scene.far_z)));
+      maps_.emplace(key, RuntimeMap{std::move(map), std::move(stored), std::move(linear), false});
+    }
+    RuntimeMap& own = maps_.at(key);
+    if (!fixture.atlas) return &own;
+    // An atlas variant's: the map this runtime drew, placed in an atlas as
+    // the fixture's is, which then reports the map's depth check.
+    if (auto known = maps_.find(key + " atlas"); known != maps_.end()) return &known->second;
+    PENUMBRA_TRY_ASSIGN(D3dMap atlas, engine_->upload_map(atlas_around(fixture, *own.stored)));
+    RuntimeMap placed{std::move(atlas), own.stored, own.linear, own.checked};
+    own.checked = true;
+    return &maps_.emplace(key + " atlas", std::move(placed)).first->second;
   }
 
   D3dRuntime runtime_;

@@ -5,6 +5,7 @@
 
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/text.hpp"
 
@@ -86,12 +87,26 @@ Result<std::string> read_rotation(const JsonNode& node) {
                     " (leave the key out for the same samples at every pixel)");
 }
 
-Result<std::string> read_map_encoding(const JsonNode& node) {
+// A string that `parse` takes: `key`'s value names one of `allowed`
+// (docs/techniques.md's `section` describes them).
+template <typename Parse>
+Result<std::string> read_named(const JsonNode& node, std::string_view key, Parse parse,
+                               const std::string& allowed, std::string_view section) {
   Result<std::string> name = node.string();
   if (!name) return name.error();
-  if (parse_map_encoding(*name)) return name;
-  return node.error("unknown map_encoding '" + shorten(*name) + "'; allowed map encodings: " +
-                    allowed_map_encodings() + " (docs/techniques.md, \"Map encodings\")");
+  if (parse(*name)) return name;
+  return node.error("unknown " + std::string(key) + " '" + shorten(*name) + "'; allowed " +
+                    allowed + " (docs/techniques.md, \"" + std::string(section) + "\")");
+}
+
+Result<std::string> read_map_encoding(const JsonNode& node) {
+  return read_named(node, "map_encoding", parse_map_encoding,
+                    "map encodings: " + allowed_map_encodings(), "Map encodings");
+}
+
+Result<std::string> read_map_layout(const JsonNode& node) {
+  return read_named(node, "map_layout", parse_map_layout, "map layouts: " + allowed_map_layouts(),
+                    "Map layouts");
 }
 
 Result<int> read_max_nodes(const JsonNode& node) {
@@ -177,6 +192,8 @@ bool is_given(const AxisValues& values, Axis axis) {
       return !values.receiver_plane.empty();
     case Axis::map_encoding:
       return !values.map_encoding.empty();
+    case Axis::map_layout:
+      return !values.map_layout.empty();
   }
   return false;
 }
@@ -229,6 +246,9 @@ Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& 
   }
   if (node.has("map_encoding")) {
     PENUMBRA_TRY(read_list(node.member("map_encoding"), read_map_encoding, out.map_encoding));
+  }
+  if (node.has("map_layout")) {
+    PENUMBRA_TRY(read_list(node.member("map_layout"), read_map_layout, out.map_layout));
   }
   if (node.has("target")) PENUMBRA_TRY(read_targets(node.member("target"), out.target));
   return {};

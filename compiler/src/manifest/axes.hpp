@@ -14,10 +14,10 @@
 namespace penumbra::manifest_detail {
 
 // The keys of a set or an exclusion.
-inline constexpr std::array<std::string_view, 14> kAxisKeys = {
+inline constexpr std::array<std::string_view, 15> kAxisKeys = {
     "technique", "blocker_samples", "pcf_samples",  "kernel",      "disk",
     "traversal", "max_nodes",       "blur_radius",  "depth_aware", "light_bits",
-    "rotation",  "receiver_plane",  "map_encoding", "target"};
+    "rotation",  "receiver_plane",  "map_encoding", "map_layout",  "target"};
 
 // The keys a technique may take, in kVariantKeyNames order; every variant has
 // targets.
@@ -33,12 +33,14 @@ enum class Axis {
   light_bits,
   rotation,
   receiver_plane,
-  map_encoding
+  map_encoding,
+  map_layout
 };
 inline constexpr std::array kKeyAxes = {
     Axis::kernel,     Axis::blocker_samples, Axis::pcf_samples,    Axis::disk,
     Axis::traversal,  Axis::max_nodes,       Axis::blur_radius,    Axis::depth_aware,
-    Axis::light_bits, Axis::rotation,        Axis::receiver_plane, Axis::map_encoding};
+    Axis::light_bits, Axis::rotation,        Axis::receiver_plane, Axis::map_encoding,
+    Axis::map_layout};
 
 std::string_view axis_name(Axis axis);
 // Whether `technique` takes the key (its TechniqueDescription's keys); it
@@ -46,7 +48,7 @@ std::string_view axis_name(Axis axis);
 bool uses(Technique technique, Axis axis);
 // Whether a set may leave the key out for `technique` (its description's
 // optional_keys: traversal, max_nodes, depth_aware, rotation,
-// receiver_plane and map_encoding have defaults).
+// receiver_plane, map_encoding and map_layout have defaults).
 bool is_optional(Technique technique, Axis axis);
 bool is_given(const AxisValues& values, Axis axis);
 // "blocker_samples, pcf_samples, disk", "kernel, traversal (optional)", or
@@ -59,7 +61,7 @@ std::string describe_axes(Technique technique);
 // traversal kBruteForceTraversal, max_nodes 1..kMaxMaxNodes, blur_radius
 // 1..kMaxBlurRadius, depth_aware true or false, light_bits in kAllowedLightBits,
 // rotation kIgnRotation, receiver_plane true or false, map_encoding a
-// MapEncoding's name.
+// MapEncoding's name, map_layout a MapLayout's.
 Status read_axes(const JsonNode& node, const std::map<std::string, DiskFamily>& disks,
                  AxisValues& out);
 

@@ -12,6 +12,7 @@
 #include "penumbra/compiler/disk.hpp"
 #include "penumbra/compiler/manifest.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shader_contract.hpp"
 
 namespace penumbra {
@@ -55,10 +56,12 @@ std::vector<VariantKeys> key_product(Technique technique, const AxisValues& axes
   multiply(out, technique, Axis::rotation, axes.rotation, &VariantKeys::rotation);
   multiply(out, technique, Axis::receiver_plane, axes.receiver_plane, &VariantKeys::receiver_plane);
   multiply(out, technique, Axis::map_encoding, axes.map_encoding, &VariantKeys::map_encoding);
+  multiply(out, technique, Axis::map_layout, axes.map_layout, &VariantKeys::map_layout);
   for (VariantKeys& keys : out) {
     if (!keys.depth_aware.value_or(true)) keys.depth_aware.reset();
     if (!keys.receiver_plane.value_or(true)) keys.receiver_plane.reset();
     if (keys.map_encoding == to_string(MapEncoding::linear)) keys.map_encoding.reset();
+    if (keys.map_layout == to_string(MapLayout::single)) keys.map_layout.reset();
   }
   return out;
 }
@@ -112,6 +115,9 @@ std::uint64_t product_size(Technique technique, const AxisValues& axes) {
         break;
       case Axis::map_encoding:
         count = axes.map_encoding.size();
+        break;
+      case Axis::map_layout:
+        count = axes.map_layout.size();
         break;
     }
     size = saturating_multiply(size, std::max<std::size_t>(count, 1));
@@ -210,12 +216,18 @@ bool allows_flag(const std::vector<bool>& values, const Variant& variant, Axis a
   return contains(values, flag.value_or(false));
 }
 
-// map_encoding is unset for linear, which a technique that takes the key
-// matches without it; the others never have it.
+// map_encoding is unset for linear (map_layout for single), which a
+// technique that takes the key matches without it; the others never have it.
 bool allows_encoding(const std::vector<std::string>& values, const Variant& variant) {
   if (values.empty()) return true;
   if (!uses(variant.technique, Axis::map_encoding)) return false;
   return contains(values, std::string(to_string(map_encoding(variant.keys))));
+}
+
+bool allows_layout(const std::vector<std::string>& values, const Variant& variant) {
+  if (values.empty()) return true;
+  if (!uses(variant.technique, Axis::map_layout)) return false;
+  return contains(values, std::string(to_string(map_layout(variant.keys))));
 }
 
 bool matches(const AxisValues& match, const Variant& variant) {
@@ -231,7 +243,7 @@ bool matches(const AxisValues& match, const Variant& variant) {
          allows(match.rotation, variant.keys.rotation) &&
          allows_flag(match.receiver_plane, variant, Axis::receiver_plane,
                      variant.keys.receiver_plane) &&
-         allows_encoding(match.map_encoding, variant);
+         allows_encoding(match.map_encoding, variant) && allows_layout(match.map_layout, variant);
 }
 
 void apply(const Exclusion& exclusion, Variant& variant) {

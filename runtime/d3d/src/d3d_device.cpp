@@ -131,10 +131,27 @@ Result<runtime::Texture> D3dDevice::upload(TextureId as, const FloatImage& image
       held.channels = 1;
       texels = image.data;
       break;
+    case TextureId::shadow_depth:
+      // A map as the depth pass would have drawn it in D32 (Direct3D 9's
+      // R32F), kept on the host like one: an engine's atlas, say.
+      PENUMBRA_TRY(check_normalized_depth(image));
+      held.channels = 1;
+      texels = image.data;
+      if (job_.runtime() == D3dRuntime::d3d9) {
+        held.format = api_format(target, TextureFormat::r32_float);
+        held.id = job_.texture(held.format, image.width, image.height, 1, "input");
+      } else {
+        std::tie(held.format, held.view_format) =
+            map_formats(job_.runtime(), DepthFormat::d32_float);
+        held.id = job_.texture(held.format, image.width, image.height, 1, "depth");
+      }
+      job_.keep(held.id);
+      job_.upload(held.id, 0, texels);
+      return hold(std::move(held), image.width, image.height);
     default:
       return make_error(Error::Kind::bad_input, std::string(describe(as).name),
-                        "the Direct3D runtime draws its maps with the depth pass; it uploads "
-                        "receivers, a scene colour and a camera's depth");
+                        "the Direct3D runtime uploads maps, receivers, a scene colour and a "
+                        "camera's depth, and no other texture");
   }
   held.id = job_.texture(held.format, image.width, image.height, 1, "input");
   job_.upload(held.id, 0, texels);

@@ -28,6 +28,19 @@ D3dQueryOutput visibility_of(const runtime::PassOutputs& outputs) {
   return D3dQueryOutput{channel(target, 0), channel(target, 1)};
 }
 
+// `map`, which `device` drew or uploaded and the host keeps, read back into
+// its D3dMap; released again where the read fails.
+Result<D3dMap> kept_map(D3dEngine& engine, D3dDevice& device, runtime::Texture map) {
+  D3dMap out = device.map(map);
+  auto texels = device.read(map);
+  if (!texels) {
+    engine.release(out);
+    return texels.error();
+  }
+  out.normalized = std::move(*texels);
+  return out;
+}
+
 }  // namespace
 
 std::string_view to_string(D3dRuntime runtime) {
@@ -131,14 +144,14 @@ Result<D3dMap> D3dEngine::render_depth(const D3dPass& depth,
   PENUMBRA_TRY_ASSIGN(
       const runtime::Texture drawn,
       runtime::draw_map(device, device.load(depth), triangles, width, height, map_format, params));
-  D3dMap map = device.map(drawn);
-  auto texels = device.read(drawn);
-  if (!texels) {
-    release(map);
-    return texels.error();
-  }
-  map.normalized = std::move(*texels);
-  return map;
+  return kept_map(*this, device, drawn);
+}
+
+Result<D3dMap> D3dEngine::upload_map(const FloatImage& normalized) {
+  D3dDevice device(*this);
+  PENUMBRA_TRY_ASSIGN(const runtime::Texture uploaded,
+                      device.upload(TextureId::shadow_depth, normalized));
+  return kept_map(*this, device, uploaded);
 }
 
 Result<FloatImage> D3dEngine::run_surface(const D3dPass& surface,

@@ -45,6 +45,7 @@ struct AxisValues {
   std::vector<std::string> rotation;      // kIgnRotation
   std::vector<bool> receiver_plane;       // false gives variants with the key unset
   std::vector<std::string> map_encoding;  // "linear" gives variants with the key unset
+  std::vector<std::string> map_layout;    // "single" gives variants with the key unset
   std::vector<int> light_bits;            // kAllowedLightBits
   std::vector<Target> target;
 };

@@ -121,12 +121,16 @@ struct VariantKeys {
   // hard, pcf_grid, pcf_poisson, pcss: "perspective" or "perspective_reversed"
   // (map_encoding.hpp), or unset for linear.
   std::optional<std::string> map_encoding = std::nullopt;
+  // hard, pcf_grid, pcf_poisson, pcss: "atlas" (map_layout.hpp), or unset
+  // for a map of its own.
+  std::optional<std::string> map_layout = std::nullopt;
 };
 
 // The keys' names, in the one order every listing of keys follows.
-inline constexpr std::array<std::string_view, 12> kVariantKeyNames = {
-    "kernel",      "blocker_samples", "pcf_samples", "disk",     "traversal",      "max_nodes",
-    "blur_radius", "depth_aware",     "light_bits",  "rotation", "receiver_plane", "map_encoding"};
+inline constexpr std::array<std::string_view, 13> kVariantKeyNames = {
+    "kernel",         "blocker_samples", "pcf_samples", "disk",       "traversal",
+    "max_nodes",      "blur_radius",     "depth_aware", "light_bits", "rotation",
+    "receiver_plane", "map_encoding",    "map_layout"};
 
 // Calls f(name, key) for each key in kVariantKeyNames order, set or not; `key`
 // is the std::optional member, const when `keys` is.
@@ -145,6 +149,7 @@ void for_each_key(Keys& keys, F&& f) {
   f(kVariantKeyNames[9], keys.rotation);
   f(kVariantKeyNames[10], keys.receiver_plane);
   f(kVariantKeyNames[11], keys.map_encoding);
+  f(kVariantKeyNames[12], keys.map_layout);
 }
 
 // minmax_pcf's baked 1 / K^2 (MINMAX_PCF_INV_AREA), rounded to float. The

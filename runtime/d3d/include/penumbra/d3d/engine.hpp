@@ -137,6 +137,11 @@ class D3dEngine {
                               int height, const ParamBlock& params,
                               DepthFormat map_format = DepthFormat::d32_float);
   void release(const D3dMap& map);
+  // `normalized` (one channel, row 0 first, values in [0, 1]) held on the
+  // host as a map the depth pass drew into a D32 map (Direct3D 9: its R32F
+  // target), read back: an engine's own map, such as an atlas of several
+  // lights' tiles. Errors: bad_input (values outside [0, 1]); device.
+  Result<D3dMap> upload_map(const FloatImage& normalized);
 
   // The min-max chain of `map` built by `passes` (each level drawn into a
   // target of its own, then copied into the mipmapped chain), read back:

@@ -1,0 +1,31 @@
+// Where in its texture a variant's shadow map lies (docs/techniques.md,
+// "Map layouts"): a texture of its own, or one tile of an atlas that holds
+// several lights' maps, the tile chosen at each call.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "penumbra/model/model.hpp"
+
+namespace penumbra {
+
+enum class MapLayout {
+  single,  // the map fills its texture
+  atlas,   // one tile of a 2D texture, a rectangle in texture coordinates given per call
+};
+
+inline constexpr MapLayout kAllMapLayouts[] = {MapLayout::single, MapLayout::atlas};
+
+// "single", "atlas"; and back (none for any other).
+std::string_view to_string(MapLayout layout);
+std::optional<MapLayout> parse_map_layout(std::string_view name);
+// "single, atlas", for messages.
+std::string allowed_map_layouts();
+
+// The layout a variant reads its map in: its map_layout key, single when
+// unset (or not a name parse_map_layout() takes).
+MapLayout map_layout(const VariantKeys& keys);
+
+}  // namespace penumbra

@@ -1,0 +1,55 @@
+#include "atlas_fixture.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/model/map_encoding.hpp"
+
+namespace penumbra {
+namespace {
+
+// The value that puts an occluder at the near plane: the smallest the
+// encoding stores, or reversed-Z's largest.
+float nearest_depth(const SceneFixture& fixture) {
+  return fixture.encoded && !depth_increases(fixture.encoded->encoding) ? 1.0f : 0.0f;
+}
+
+}  // namespace
+
+FloatImage atlas_around(const SceneFixture& fixture, const FloatImage& map) {
+  FloatImage atlas(map.width * kAtlasTiles, map.height * kAtlasTiles, 1);
+  std::ranges::fill(atlas.data, nearest_depth(fixture));
+  for (int j = 0; j < map.height; ++j) {
+    for (int i = 0; i < map.width; ++i) atlas.at(map.width + i, map.height + j) = map.at(i, j);
+  }
+  return atlas;
+}
+
+Result<SceneFixture> atlas_fixture(Engine& engine, const SceneFixture& fixture) {
+  const FloatImage& map = fixture.normalized_depth;
+  auto atlas = std::make_shared<const FloatImage>(atlas_around(fixture, map));
+  SceneFixture out = fixture;
+  PENUMBRA_TRY_ASSIGN(out.map, engine.upload_shadow_map(*atlas));
+  const int width = atlas->width;
+  const int height = atlas->height;
+  out.atlas = std::move(atlas);
+  out.params["shadow_map_size"] = {float(width), float(height), float(1.0 / width),
+                                   float(1.0 / height)};
+  const auto u = float(double(map.width) / width);
+  const auto v = float(double(map.height) / height);
+  out.params["map_tile"] = {u, v, u, v};
+  return out;
+}
+
+reference::SamplingPrecision atlas_precision(const SceneFixture& fixture,
+                                             reference::SamplingPrecision precision) {
+  if (!fixture.atlas) return precision;
+  // map_uv() rounds the tile's corner plus the clamped uv times its size:
+  // a few float32 ulps of a coordinate below 1, each 2^-24 of the atlas at
+  // most; 2^-22 of its larger side bounds them with room.
+  const int side = std::max(fixture.atlas->width, fixture.atlas->height);
+  precision.coordinate_error = std::ldexp(double(side), -22);
+  return precision;
+}
+
+}  // namespace penumbra
