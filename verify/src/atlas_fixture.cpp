@@ -17,10 +17,12 @@ float nearest_depth(const SceneFixture& fixture) {
 }  // namespace
 
 FloatImage atlas_around(const SceneFixture& fixture, const FloatImage& map) {
-  FloatImage atlas(map.width * kAtlasTiles, map.height * kAtlasTiles, 1);
+  FloatImage atlas(map.width + 2 * kAtlasBorder, map.height + 2 * kAtlasBorder, 1);
   std::ranges::fill(atlas.data, nearest_depth(fixture));
   for (int j = 0; j < map.height; ++j) {
-    for (int i = 0; i < map.width; ++i) atlas.at(map.width + i, map.height + j) = map.at(i, j);
+    for (int i = 0; i < map.width; ++i) {
+      atlas.at(kAtlasBorder + i, kAtlasBorder + j) = map.at(i, j);
+    }
   }
   return atlas;
 }
@@ -35,9 +37,9 @@ Result<SceneFixture> atlas_fixture(Engine& engine, const SceneFixture& fixture) 
   out.atlas = std::move(atlas);
   out.params["shadow_map_size"] = {float(width), float(height), float(1.0 / width),
                                    float(1.0 / height)};
-  const auto u = float(double(map.width) / width);
-  const auto v = float(double(map.height) / height);
-  out.params["map_tile"] = {u, v, u, v};
+  out.params["map_tile"] = {float(double(kAtlasBorder) / width),
+                            float(double(kAtlasBorder) / height), float(double(map.width) / width),
+                            float(double(map.height) / height)};
   return out;
 }
 

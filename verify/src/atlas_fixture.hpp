@@ -11,15 +11,15 @@
 
 namespace penumbra {
 
-// How much larger than the map the atlas is, each way: the map's tile sits
-// in the middle of a kAtlasTiles x kAtlasTiles grid, so that it has
-// neighbours on every side.
-inline constexpr int kAtlasTiles = 3;
+// Texels of the atlas around the map's tile on every side: wider than any
+// read a variant makes beyond the map's edge, so each would land on them
+// (and beyond them the atlas's own edge clamps to them too).
+inline constexpr int kAtlasBorder = 16;
 
-// `map` (a map of `fixture`'s scene as stored) in the middle tile of an
-// atlas whose other texels hold the nearest depth the fixture's encoding
-// stores: an occluder at the near plane, so that a read that leaves the
-// tile shadows.
+// `map` (a map of `fixture`'s scene as stored) as the tile of an atlas
+// kAtlasBorder texels larger on every side, whose other texels hold the
+// nearest depth the fixture's encoding stores: an occluder at the near
+// plane, so that a read that leaves the tile shadows.
 FloatImage atlas_around(const SceneFixture& fixture, const FloatImage& map);
 
 // `fixture` with its map moved into atlas_around()'s tile, uploaded on
