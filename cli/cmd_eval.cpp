@@ -1,6 +1,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -29,6 +31,7 @@ struct EvalArgs {
   std::string no_receiver;          // optional Pf mask of pixels with no receiver
   bool map_stored = false;          // --shadow-map holds an engine's stored values
   std::optional<double> far_plane;  // the engine's far plane, with map_stored
+  std::string map_tile;             // "x,y,width,height": the light's tile of an atlas
   std::string output;
   std::string texel_reads;  // optional Pf of the query's per-pixel texel reads
   std::string ambiguous;    // optional Pf of the reference's ambiguity mask
@@ -98,6 +101,24 @@ Status check_outputs_spare_inputs(const EvalArgs& args) {
   return {};
 }
 
+// --map-tile's "x,y,width,height": four integers (their range is the
+// inputs' check's, check_eval_inputs()).
+Result<std::array<int, 4>> parse_tile(const std::string& text) {
+  std::array<int, 4> tile{};
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < tile.size(); ++k) {
+    const std::size_t end = k + 1 < tile.size() ? text.find(',', at) : text.size();
+    const std::string part = end == std::string::npos ? "" : text.substr(at, end - at);
+    const auto [last, error] = std::from_chars(part.data(), part.data() + part.size(), tile[k]);
+    if (part.empty() || error != std::errc() || last != part.data() + part.size()) {
+      return make_error(Error::Kind::bad_input, "--map-tile " + text,
+                        "expected x,y,width,height: four integers in texels of --shadow-map");
+    }
+    at = end + 1;
+  }
+  return tile;
+}
+
 // What eval writes: the visibility (-o) and the file beside it, the texel
 // reads (--texel-reads) or the ambiguity mask (--ambiguous).
 struct EvalOutput {
@@ -157,6 +178,9 @@ Result<EvalOutput> run_eval(const EvalArgs& args) {
     inputs.no_receiver = std::move(*mask);
   }
   inputs.stored_far = args.far_plane;
+  if (!args.map_tile.empty()) {
+    PENUMBRA_TRY_ASSIGN(inputs.map_tile, parse_tile(args.map_tile));
+  }
   inputs.light = args.light;
   inputs.light.filter_radius_uv = args.filter_radius;
 
@@ -247,6 +271,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
                 "1, in the variant's map encoding (linear: z / far), with --near and --far");
   cmd->add_option("--far", args->far_plane,
                   "The far plane of the engine's light projection (with --map-stored)");
+  cmd->add_option("--map-tile", args->map_tile,
+                  "x,y,width,height: the light's tile in texels of --shadow-map, an atlas of "
+                  "several lights' maps (variants with map_layout atlas)");
   cmd->add_option("--no-receiver", args->no_receiver,
                   "Pf image of the receivers' size: a pixel not 0 has no receiver; it is lit, "
                   "and --ambiguous marks it");

@@ -154,6 +154,21 @@ std::string EvalFixture::path(const std::string& name) {
   return "'" + (dir_->path() / name).string() + "'";
 }
 
+void EvalFixture::expect_agreement(const FloatImage& device, const FloatImage& reference,
+                                   const FloatImage& marks, double tolerance) {
+  ASSERT_EQ(device.data.size(), reference.data.size());
+  ASSERT_EQ(marks.data.size(), reference.data.size());
+  std::size_t compared = 0, partial = 0;
+  for (std::size_t p = 0; p < device.data.size(); ++p) {
+    if (marks.data[p] != 0.0f) continue;
+    ASSERT_NEAR(device.data[p], reference.data[p], tolerance) << "pixel " << p;
+    ++compared;
+    partial += reference.data[p] > 0.01f && reference.data[p] < 0.99f;
+  }
+  EXPECT_GT(compared, device.data.size() * 9 / 10);
+  EXPECT_GT(partial, 500u) << "the scene must have real penumbrae";
+}
+
 std::string EvalFixture::eval_args(const std::string& variant, const std::string& extra) {
   return "eval '" + lib().string() + "' " + variant + " --shadow-map " + path("depth.pfm") +
          " --receivers " + path("recv.pfm") + " " + extra;

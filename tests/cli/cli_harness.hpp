@@ -95,6 +95,11 @@ class EvalFixture : public ::testing::Test {
   static std::string path(const std::string& name);
   // "eval <lib> <variant> --shadow-map depth.pfm --receivers recv.pfm <extra>".
   static std::string eval_args(const std::string& variant, const std::string& extra);
+  // `device` within `tolerance` of `reference` at every pixel `marks` (the
+  // reference's --ambiguous) leaves 0, which must be nine in ten, over a
+  // scene with real penumbrae (500 pixels strictly between 0.01 and 0.99).
+  static void expect_agreement(const FloatImage& device, const FloatImage& reference,
+                               const FloatImage& marks, double tolerance);
 
   static inline ScratchDir* dir_ = nullptr;
   static inline FloatImage map_;

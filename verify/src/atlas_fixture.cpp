@@ -1,7 +1,6 @@
 #include "atlas_fixture.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "penumbra/model/map_encoding.hpp"
 
@@ -45,12 +44,10 @@ Result<SceneFixture> atlas_fixture(Engine& engine, const SceneFixture& fixture) 
 
 reference::SamplingPrecision atlas_precision(const SceneFixture& fixture,
                                              reference::SamplingPrecision precision) {
-  if (!fixture.atlas) return precision;
-  // map_uv() rounds the tile's corner plus the clamped uv times its size:
-  // a few float32 ulps of a coordinate below 1, each 2^-24 of the atlas at
-  // most; 2^-22 of its larger side bounds them with room.
-  const int side = std::max(fixture.atlas->width, fixture.atlas->height);
-  precision.coordinate_error = std::ldexp(double(side), -22);
+  if (fixture.atlas) {
+    precision.coordinate_error =
+        reference::atlas_coordinate_error(fixture.atlas->width, fixture.atlas->height);
+  }
   return precision;
 }
 

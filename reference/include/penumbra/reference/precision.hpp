@@ -28,6 +28,13 @@ struct SamplingPrecision {
   double point_window() const { return reach() + 1e-6; }
 };
 
+// SamplingPrecision::coordinate_error of an atlas of `width` x `height`
+// texels (map_layout atlas): placing uv in it (shaderlib's map_uv()), the
+// tile's corner plus the clamped uv times its size, rounds a few float32
+// ulps of a coordinate below 1, each at most 2^-24 of the atlas's side;
+// 2^-22 of its larger side bounds them with room.
+double atlas_coordinate_error(int width, int height);
+
 // Largest |GPU - reference| allowed for a technique's non-ambiguous pixels.
 double tolerance(Technique technique, const SamplingPrecision& precision);
 

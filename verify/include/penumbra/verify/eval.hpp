@@ -2,6 +2,7 @@
 // the device or with the CPU reference.
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "penumbra/library/library.hpp"
@@ -26,6 +27,10 @@ struct EvalInputs {
   // receiver (an engine's sky). It is shaded as a NaN receiver, lit, and the
   // reference marks it Ambiguity::no_receiver.
   FloatImage no_receiver;
+  // x, y, width, height in texels of `shadow_map`, row 0 first: the light's
+  // tile, where `shadow_map` is an atlas of several lights' maps (an atlas
+  // variant's, map_layout atlas). None: the whole map.
+  std::optional<std::array<int, 4>> map_tile;
 };
 
 // The light options' range (lengths in light-view units; the bias and the
@@ -35,8 +40,8 @@ inline constexpr double kMinLightLength = 1e-6;  // frustum width, near plane, f
 inline constexpr double kMaxLightLength = 1e6;   // and light size (from 0), |bias|
 
 // Checks the images (channels, sizes, no negative depth; a stored map's
-// values in [0, 1], its far plane beyond the near one) and the light options
-// (finite, in range); errors name the argument. NaN and infinite linear
+// values in [0, 1], its far plane beyond the near one; a tile inside the
+// map) and the light options (finite, in range); errors name the argument. NaN and infinite linear
 // depths are allowed: every technique defines them (docs/robustness.md).
 Status check_eval_inputs(const EvalInputs& inputs);
 
