@@ -32,4 +32,12 @@ ParamBlock shadow_params(const LightParams& light, const ParamSizes& sizes, floa
   };
 }
 
+void place_in_atlas(ParamBlock& params, int atlas_width, int atlas_height,
+                    const std::array<int, 4>& tile) {
+  const auto w = double(atlas_width), h = double(atlas_height);
+  params["shadow_map_size"] = size_vec4(atlas_width, atlas_height);
+  params["map_tile"] = {float(tile[0] / w), float(tile[1] / h), float(tile[2] / w),
+                        float(tile[3] / h)};
+}
+
 }  // namespace penumbra

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/shadow_params.hpp"
 
 namespace penumbra {
 namespace {
@@ -31,14 +32,9 @@ Result<SceneFixture> atlas_fixture(Engine& engine, const SceneFixture& fixture) 
   auto atlas = std::make_shared<const FloatImage>(atlas_around(fixture, map));
   SceneFixture out = fixture;
   PENUMBRA_TRY_ASSIGN(out.map, engine.upload_shadow_map(*atlas));
-  const int width = atlas->width;
-  const int height = atlas->height;
+  place_in_atlas(out.params, atlas->width, atlas->height,
+                 {kAtlasBorder, kAtlasBorder, map.width, map.height});
   out.atlas = std::move(atlas);
-  out.params["shadow_map_size"] = {float(width), float(height), float(1.0 / width),
-                                   float(1.0 / height)};
-  out.params["map_tile"] = {float(double(kAtlasBorder) / width),
-                            float(double(kAtlasBorder) / height), float(double(map.width) / width),
-                            float(double(map.height) / height)};
   return out;
 }
 

@@ -23,10 +23,9 @@ inline constexpr int kAtlasBorder = 16;
 FloatImage atlas_around(const SceneFixture& fixture, const FloatImage& map);
 
 // `fixture` with its map moved into atlas_around()'s tile, uploaded on
-// `engine`;
-// ShadowParams' shadow_map_size is the atlas's and map_tile the tile's.
-// The map's own images (normalized_depth, linear_depth) stay for the
-// reference. Errors: the upload's.
+// `engine`; ShadowParams' shadow_map_size is the atlas's and map_tile the
+// tile's. The map's own images (normalized_depth, linear_depth) stay for
+// the reference. Errors: the upload's.
 Result<SceneFixture> atlas_fixture(Engine& engine, const SceneFixture& fixture);
 
 // `precision` widened by how far the float32 arithmetic that places a

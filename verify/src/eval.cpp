@@ -121,12 +121,7 @@ ParamBlock device_params(const EvalInputs& inputs, const FloatImage& receivers, 
   const auto tile = inputs.map_tile.value_or(std::array<int, 4>{0, 0, map.width, map.height});
   ParamBlock params = shadow_params(
       inputs.light, {tile[2], tile[3], receivers.width, receivers.height}, depth_scale);
-  if (inputs.map_tile) {
-    const auto w = double(map.width), h = double(map.height);
-    params["shadow_map_size"] = {float(w), float(h), float(1.0 / w), float(1.0 / h)};
-    params["map_tile"] = {float(tile[0] / w), float(tile[1] / h), float(tile[2] / w),
-                          float(tile[3] / h)};
-  }
+  if (inputs.map_tile) place_in_atlas(params, map.width, map.height, tile);
   return params;
 }
 

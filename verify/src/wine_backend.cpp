@@ -233,7 +233,8 @@ class WineBackend final : public Backend {
         std::to_string(fixture.scene.map_height) + " " +
         std::string(to_string(depth.reflection.map_encoding.value_or(MapEncoding::linear))) + " " +
         std::string(to_string(format));
-    if (auto known = maps_.find(key); known == maps_.end()) {
+    auto known = maps_.find(key);
+    if (known == maps_.end()) {
       PENUMBRA_TRY_ASSIGN(
           D3dMap map,
           engine_->render_depth(depth, reference::triangles(fixture.scene), fixture.scene.map_width,
@@ -241,17 +242,20 @@ class WineBackend final : public Backend {
       auto stored = std::make_shared<const FloatImage>(map.normalized);
       auto linear = std::make_shared<const FloatImage>(
           linear_depth_of(*stored, fixture.encoded, depth_scale_for(fixture.scene.far_z)));
-      maps_.emplace(key, RuntimeMap{std::move(map), std::move(stored), std::move(linear), false});
+      known =
+          maps_
+              .emplace(key, RuntimeMap{std::move(map), std::move(stored), std::move(linear), false})
+              .first;
     }
-    RuntimeMap& own = maps_.at(key);
+    RuntimeMap& own = known->second;
     if (!fixture.atlas) return &own;
     // An atlas variant's: the map this runtime drew, placed in an atlas as
     // the fixture's is, which then reports the map's depth check.
-    if (auto known = maps_.find(key + " atlas"); known != maps_.end()) return &known->second;
+    if (auto placed = maps_.find(key + " atlas"); placed != maps_.end()) return &placed->second;
     PENUMBRA_TRY_ASSIGN(D3dMap atlas, engine_->upload_map(atlas_around(fixture, *own.stored)));
-    RuntimeMap placed{std::move(atlas), own.stored, own.linear, own.checked};
+    RuntimeMap in_atlas{std::move(atlas), own.stored, own.linear, own.checked};
     own.checked = true;
-    return &maps_.emplace(key + " atlas", std::move(placed)).first->second;
+    return &maps_.emplace(key + " atlas", std::move(in_atlas)).first->second;
   }
 
   D3dRuntime runtime_;

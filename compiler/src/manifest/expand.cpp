@@ -216,18 +216,14 @@ bool allows_flag(const std::vector<bool>& values, const Variant& variant, Axis a
   return contains(values, flag.value_or(false));
 }
 
-// map_encoding is unset for linear (map_layout for single), which a
-// technique that takes the key matches without it; the others never have it.
-bool allows_encoding(const std::vector<std::string>& values, const Variant& variant) {
+// A key left unset for its default (map_encoding's linear, map_layout's
+// single), whose value `name` a technique that takes the key matches
+// without it; the others never have it.
+bool allows_defaulted(const std::vector<std::string>& values, const Variant& variant, Axis axis,
+                      std::string_view name) {
   if (values.empty()) return true;
-  if (!uses(variant.technique, Axis::map_encoding)) return false;
-  return contains(values, std::string(to_string(map_encoding(variant.keys))));
-}
-
-bool allows_layout(const std::vector<std::string>& values, const Variant& variant) {
-  if (values.empty()) return true;
-  if (!uses(variant.technique, Axis::map_layout)) return false;
-  return contains(values, std::string(to_string(map_layout(variant.keys))));
+  if (!uses(variant.technique, axis)) return false;
+  return contains(values, std::string(name));
 }
 
 bool matches(const AxisValues& match, const Variant& variant) {
@@ -243,7 +239,10 @@ bool matches(const AxisValues& match, const Variant& variant) {
          allows(match.rotation, variant.keys.rotation) &&
          allows_flag(match.receiver_plane, variant, Axis::receiver_plane,
                      variant.keys.receiver_plane) &&
-         allows_encoding(match.map_encoding, variant) && allows_layout(match.map_layout, variant);
+         allows_defaulted(match.map_encoding, variant, Axis::map_encoding,
+                          to_string(map_encoding(variant.keys))) &&
+         allows_defaulted(match.map_layout, variant, Axis::map_layout,
+                          to_string(map_layout(variant.keys)));
 }
 
 void apply(const Exclusion& exclusion, Variant& variant) {

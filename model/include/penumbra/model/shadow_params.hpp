@@ -4,6 +4,8 @@
 // theirs.
 #pragma once
 
+#include <array>
+
 #include "penumbra/model/light.hpp"
 #include "penumbra/support/param_block.hpp"
 
@@ -24,5 +26,12 @@ struct ParamSizes {
 // every member, source_size the map's size and minmax_info.x the map's
 // min-max top level (minmax_top_level).
 ParamBlock shadow_params(const LightParams& light, const ParamSizes& sizes, float depth_scale);
+
+// `params` of a light whose map is the tile (x, y, width, height in texels,
+// row 0 first) of an `atlas_width` x `atlas_height` atlas (map_layout
+// atlas): shadow_map_size becomes the atlas's, map_tile the tile in texture
+// coordinates.
+void place_in_atlas(ParamBlock& params, int atlas_width, int atlas_height,
+                    const std::array<int, 4>& tile);
 
 }  // namespace penumbra

@@ -41,8 +41,9 @@ inline constexpr double kMaxLightLength = 1e6;   // and light size (from 0), |bi
 
 // Checks the images (channels, sizes, no negative depth; a stored map's
 // values in [0, 1], its far plane beyond the near one; a tile inside the
-// map) and the light options (finite, in range); errors name the argument. NaN and infinite linear
-// depths are allowed: every technique defines them (docs/robustness.md).
+// map) and the light options (finite, in range); errors name the argument.
+// NaN and infinite linear depths are allowed: every technique defines them
+// (docs/robustness.md).
 Status check_eval_inputs(const EvalInputs& inputs);
 
 // The visibility image (Pf, the receivers' size) from the device, with the
