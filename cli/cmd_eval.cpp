@@ -32,6 +32,7 @@ struct EvalArgs {
   bool map_stored = false;          // --shadow-map holds an engine's stored values
   std::optional<double> far_plane;  // the engine's far plane, with map_stored
   std::string map_tile;             // "x,y,width,height": the light's tile of an atlas
+  std::string map_layer;            // "layer,count": the light's layer of an array
   std::string output;
   std::string texel_reads;  // optional Pf of the query's per-pixel texel reads
   std::string ambiguous;    // optional Pf of the reference's ambiguity mask
@@ -103,20 +104,24 @@ Status check_outputs_spare_inputs(const EvalArgs& args) {
 
 // --map-tile's "x,y,width,height": four integers (their range is the
 // inputs' check's, check_eval_inputs()).
-Result<std::array<int, 4>> parse_tile(const std::string& text) {
-  std::array<int, 4> tile{};
+// `text`, N integers separated by commas, given as `option`; errors say
+// what `expected`.
+template <std::size_t N>
+Result<std::array<int, N>> parse_integers(const std::string& text, const char* option,
+                                          const char* expected) {
+  std::array<int, N> values{};
   std::size_t at = 0;
-  for (std::size_t k = 0; k < tile.size(); ++k) {
-    const std::size_t end = k + 1 < tile.size() ? text.find(',', at) : text.size();
+  for (std::size_t k = 0; k < N; ++k) {
+    const std::size_t end = k + 1 < N ? text.find(',', at) : text.size();
     const std::string part = end == std::string::npos ? "" : text.substr(at, end - at);
-    const auto [last, error] = std::from_chars(part.data(), part.data() + part.size(), tile[k]);
+    const auto [last, error] = std::from_chars(part.data(), part.data() + part.size(), values[k]);
     if (part.empty() || error != std::errc() || last != part.data() + part.size()) {
-      return make_error(Error::Kind::bad_input, "--map-tile " + text,
-                        "expected x,y,width,height: four integers in texels of --shadow-map");
+      return make_error(Error::Kind::bad_input, std::string(option) + " " + text,
+                        std::string("expected ") + expected);
     }
     at = end + 1;
   }
-  return tile;
+  return values;
 }
 
 // What eval writes: the visibility (-o) and the file beside it, the texel
@@ -179,7 +184,16 @@ Result<EvalOutput> run_eval(const EvalArgs& args) {
   }
   inputs.stored_far = args.far_plane;
   if (!args.map_tile.empty()) {
-    PENUMBRA_TRY_ASSIGN(inputs.map_tile, parse_tile(args.map_tile));
+    PENUMBRA_TRY_ASSIGN(inputs.map_tile,
+                        parse_integers<4>(args.map_tile, "--map-tile",
+                                          "x,y,width,height: four integers in texels of "
+                                          "--shadow-map"));
+  }
+  if (!args.map_layer.empty()) {
+    PENUMBRA_TRY_ASSIGN(inputs.map_layer,
+                        parse_integers<2>(args.map_layer, "--map-layer",
+                                          "layer,count: two integers, the light's layer and "
+                                          "the layers stacked in --shadow-map"));
   }
   inputs.light = args.light;
   inputs.light.filter_radius_uv = args.filter_radius;
@@ -274,6 +288,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--map-tile", args->map_tile,
                   "x,y,width,height: the light's tile in texels of --shadow-map, an atlas of "
                   "several lights' maps (variants with map_layout atlas)");
+  cmd->add_option("--map-layer", args->map_layer,
+                  "layer,count: the light's layer of an array of count layers stacked in "
+                  "--shadow-map, layer 0's rows first (variants with map_layout array)");
   cmd->add_option("--no-receiver", args->no_receiver,
                   "Pf image of the receivers' size: a pixel not 0 has no receiver; it is lit, "
                   "and --ambiguous marks it");

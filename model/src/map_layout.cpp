@@ -1,6 +1,7 @@
 #include "penumbra/model/map_layout.hpp"
 
 #include "penumbra/model/enum_names.hpp"
+#include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
 
@@ -10,6 +11,8 @@ std::string_view to_string(MapLayout layout) {
       return "single";
     case MapLayout::atlas:
       return "atlas";
+    case MapLayout::array:
+      return "array";
   }
   return "single";
 }
@@ -25,6 +28,12 @@ std::string allowed_map_layouts() {
 MapLayout map_layout(const VariantKeys& keys) {
   return keys.map_layout ? parse_map_layout(*keys.map_layout).value_or(MapLayout::single)
                          : MapLayout::single;
+}
+
+std::string layout_unsupported(MapLayout layout, Target target) {
+  if (layout != MapLayout::array || traits(target).texture_arrays) return {};
+  return "map_layout array cannot be read on " + std::string(traits(target).name) +
+         " (Direct3D 9 has no texture arrays; map_layout atlas can)";
 }
 
 }  // namespace penumbra

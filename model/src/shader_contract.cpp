@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
@@ -298,7 +299,8 @@ bool can_emit(Technique technique, Target target) {
 }
 
 bool can_emit(const Variant& variant, Target target) {
-  return can_emit(variant.technique, target) && inexact_walk(variant, target).empty();
+  return can_emit(variant.technique, target) && inexact_walk(variant, target).empty() &&
+         layout_unsupported(map_layout(variant.keys), target).empty();
 }
 
 bool runs_pass(PassKind pass, const Variant& variant) {

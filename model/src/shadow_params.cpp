@@ -29,6 +29,8 @@ ParamBlock shadow_params(const LightParams& light, const ParamSizes& sizes, floa
        {static_cast<float>(minmax_top_level(sizes.map_width, sizes.map_height)), 0.0f, 0.0f, 0.0f}},
       // An atlas variant's tile: the whole texture, where the map fills it.
       {"map_tile", {0.0f, 0.0f, 1.0f, 1.0f}},
+      // An array variant's layer: the first.
+      {"map_layer", {0.0f, 0.0f, 0.0f, 0.0f}},
   };
 }
 

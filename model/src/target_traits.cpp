@@ -33,7 +33,8 @@ constexpr TargetTraits kTraits[] = {
      .disk_textures = true,
      .rolled_sample_loops = true,
      .walk_step_limit = 224,
-     .integer_ops = false},
+     .integer_ops = false,
+     .texture_arrays = false},
 };
 static_assert(std::size(kTraits) == kAllTargets.size());
 

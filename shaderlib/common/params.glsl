@@ -28,16 +28,27 @@ layout(set = 0, binding = PENUMBRA_SLOT_PARAMS, std140) uniform ShadowParams {
   // tile in the atlas (map_layout atlas), u and v of its first texel's outer
   // corner, its width and height, in texture coordinates.
   vec4 map_tile;
+#elif PENUMBRA_MAP_ARRAY
+  // Last, for the same reason: the light's layer of the array texture
+  // (map_layout array) in x, a whole number; y, z, w: 0.
+  vec4 map_layer;
 #endif
 } params;
 
-#if PENUMBRA_MAP_ATLAS
-// The light being shaded, which an atlas's caller names per call (the query
-// and deferred passes from the block, the function form from its
-// arguments): its `light` and `sampling` members, its tile, and the tile's
-// size in texels (W, H, 1/W, 1/H), in which every technique works.
+#if PENUMBRA_MAP_ATLAS || PENUMBRA_MAP_ARRAY
+// The light being shaded, which the caller of an atlas or array names per
+// call (the query and deferred passes from the block, the function form
+// from its arguments): its `light` and `sampling` members and its tile or
+// layer.
 vec4 call_light;
 vec4 call_sampling;
+#define PENUMBRA_LIGHT call_light
+#define PENUMBRA_SAMPLING call_sampling
+#endif
+
+#if PENUMBRA_MAP_ATLAS
+// The tile, and its size in texels (W, H, 1/W, 1/H), in which every
+// technique works.
 vec4 call_tile;
 vec4 call_map_size;
 
@@ -48,9 +59,20 @@ void set_call(vec4 light, vec4 sampling, vec4 tile) {
   call_map_size = vec4(params.shadow_map_size.xy * tile.zw, params.shadow_map_size.zw / tile.zw);
 }
 #define PENUMBRA_CALL_FROM_PARAMS() set_call(params.light, params.sampling, params.map_tile)
-#define PENUMBRA_LIGHT call_light
-#define PENUMBRA_SAMPLING call_sampling
 #define PENUMBRA_MAP_SIZE call_map_size
+#elif PENUMBRA_MAP_ARRAY
+// The layer, as the array coordinate the texture functions take. Every
+// layer has the array's size.
+float call_layer;
+
+void set_call(vec4 light, vec4 sampling, int layer) {
+  call_light = light;
+  call_sampling = sampling;
+  call_layer = float(layer);
+}
+#define PENUMBRA_CALL_FROM_PARAMS() \
+  set_call(params.light, params.sampling, int(params.map_layer.x))
+#define PENUMBRA_MAP_SIZE params.shadow_map_size
 #else
 #define PENUMBRA_CALL_FROM_PARAMS()
 #define PENUMBRA_LIGHT params.light

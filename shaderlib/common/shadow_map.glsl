@@ -5,16 +5,22 @@
 // or with PENUMBRA_MAP_ENCODING (the map_encoding key) an engine's hardware
 // depth for a projection from NEAR_PLANE to 1 / DEPTH_SCALE: 1, perspective;
 // 2, perspective reversed-Z; 3, orthographic (docs/techniques.md, "Map
-// encodings").
+// encodings"). With PENUMBRA_MAP_ATLAS the map is a tile of its texture,
+// with PENUMBRA_MAP_ARRAY a layer of a 2D array texture (map_layout).
 #ifndef PENUMBRA_SHADOW_MAP_GLSL
 #define PENUMBRA_SHADOW_MAP_GLSL
 
 #include "common/map_encoding.glsl"
 #include "common/params.glsl"
 
+#if PENUMBRA_MAP_ARRAY
+layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_DEPTH) uniform sampler2DArray shadow_depth;
+layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_CMP) uniform sampler2DArrayShadow shadow_cmp;
+#else
 layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_DEPTH) uniform sampler2D shadow_depth;
 #if PENUMBRA_HAS_COMPARISON_SAMPLER
 layout(set = 0, binding = PENUMBRA_SLOT_SHADOW_CMP) uniform sampler2DShadow shadow_cmp;
+#endif
 #endif
 // Shadow-map and mip texels read so far (the query pass's debug output .y):
 // a point read or a min-max node counts 1, a bilinear comparison 4. The
@@ -73,8 +79,18 @@ vec2 map_uv(vec2 uv) {
 #define map_uv(uv) (uv)
 #endif
 
-// The stored value of the texel nearest to uv.
+// The stored value of the texel nearest to uv; the comparison with the
+// hardware's bilinear filter, level 0. A layer clamps its reads as a map of
+// its own does. GLSL has no textureLod on a sampler2DArrayShadow: zero
+// gradients choose level 0 (every target's SampleCmpLevelZero).
+#if PENUMBRA_MAP_ARRAY
+#define MAP_READ(uv) textureLod(shadow_depth, vec3(uv, call_layer), 0.0).r
+#define MAP_COMPARE(uv, reference) \
+  textureGrad(shadow_cmp, vec4(uv, call_layer, reference), vec2(0.0), vec2(0.0))
+#else
 #define MAP_READ(uv) textureLod(shadow_depth, map_uv(uv), 0.0).r
+#define MAP_COMPARE(uv, reference) textureLod(shadow_cmp, vec3(map_uv(uv), reference), 0.0)
+#endif
 
 // Linear light-view z of the texel nearest to uv (point sampling).
 float shadow_depth_point(vec2 uv) {
@@ -99,7 +115,7 @@ float shadow_compare_bilinear(vec2 uv, float z_receiver) {
   penumbra_texel_reads += 4.0;
   float reference = shadow_reference(z_receiver);
 #if PENUMBRA_HAS_COMPARISON_SAMPLER
-  return textureLod(shadow_cmp, vec3(map_uv(uv), reference), 0.0);
+  return MAP_COMPARE(uv, reference);
 #else
   vec2 texel = uv * MAP_SIZE - 0.5;
   vec2 corner = floor(texel);

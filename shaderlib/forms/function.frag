@@ -12,9 +12,10 @@
 // view-projection matrix takes to `light_clip_position`. With the rotation
 // key, `pixel` is the fragment's integer column and row (floor of its
 // window position), which turns the samples. With receiver_plane, call it in
-// uniform control flow: it takes screen derivatives. With map_layout atlas,
-// each call names its light: ShadowParams' `light` and `sampling` members
-// for it, and its tile in the atlas (`map_tile`).
+// uniform control flow: it takes screen derivatives. With map_layout atlas
+// or array, each call names its light: ShadowParams' `light` and `sampling`
+// members for it, and its tile in the atlas (`map_tile`) or its layer of the
+// array (`map_layer`).
 #if PENUMBRA_ROTATION_IGN
 #define PENUMBRA_PIXEL_PARAMETER , vec2 pixel
 #define PENUMBRA_HARNESS_PIXEL , floor(gl_FragCoord.xy)
@@ -24,7 +25,10 @@
 #endif
 #if PENUMBRA_MAP_ATLAS
 #define PENUMBRA_LIGHT_PARAMETERS , vec4 light, vec4 sampling, vec4 map_tile
-#define PENUMBRA_HARNESS_LIGHT , params.light, params.sampling, params.map_tile
+#define PENUMBRA_HARNESS_LIGHT , harness_light, harness_sampling, harness_map_tile
+#elif PENUMBRA_MAP_ARRAY
+#define PENUMBRA_LIGHT_PARAMETERS , vec4 light, vec4 sampling, int map_layer
+#define PENUMBRA_HARNESS_LIGHT , harness_light, harness_sampling, harness_map_layer
 #else
 #define PENUMBRA_LIGHT_PARAMETERS
 #define PENUMBRA_HARNESS_LIGHT
@@ -38,6 +42,8 @@ float penumbra_visibility(vec4 light_clip_position PENUMBRA_PIXEL_PARAMETER
   penumbra_texel_reads = 0.0;
 #if PENUMBRA_MAP_ATLAS
   set_call(light, sampling, map_tile);
+#elif PENUMBRA_MAP_ARRAY
+  set_call(light, sampling, map_layer);
 #endif
   vec3 query = clip_to_query(light_clip_position);
 #if PENUMBRA_RECEIVER_PLANE
@@ -50,6 +56,18 @@ float penumbra_visibility(vec4 light_clip_position PENUMBRA_PIXEL_PARAMETER
 // leaves it out.
 layout(location = 0) in vec4 harness_clip_position;
 layout(location = 0) out vec4 harness_visibility;
+#if PENUMBRA_MAP_ATLAS || PENUMBRA_MAP_ARRAY
+// The light each call names, as an engine's own uniforms would give it: not
+// from ShadowParams, so that the reflection lists the block only where the
+// function itself reads it.
+layout(location = 1) in vec4 harness_light;
+layout(location = 2) in vec4 harness_sampling;
+#if PENUMBRA_MAP_ATLAS
+layout(location = 3) in vec4 harness_map_tile;
+#else
+layout(location = 3) flat in int harness_map_layer;
+#endif
+#endif
 
 void main() {
   float visible = penumbra_visibility(harness_clip_position PENUMBRA_HARNESS_PIXEL

@@ -87,14 +87,14 @@ std::set<std::uint32_t> compared_sampler_variables(std::span<const std::uint32_t
 void reflect_images(Compiler& compiler, const spirv_cross::ShaderResources& resources,
                     std::span<const std::uint32_t> spirv, ShaderInterface& iface) {
   for (const Resource& resource : resources.sampled_images) {
+    const spirv_cross::SPIRType::ImageType& image = compiler.get_type(resource.type_id).image;
     iface.sampled_images.push_back({resource.name, set_of(compiler, resource),
-                                    binding_of(compiler, resource),
-                                    compiler.get_type(resource.type_id).image.depth});
+                                    binding_of(compiler, resource), image.depth, image.arrayed});
   }
   for (const Resource& resource : resources.separate_images) {
+    const spirv_cross::SPIRType::ImageType& image = compiler.get_type(resource.type_id).image;
     iface.separate_images.push_back({resource.name, set_of(compiler, resource),
-                                     binding_of(compiler, resource),
-                                     compiler.get_type(resource.type_id).image.depth});
+                                     binding_of(compiler, resource), image.depth, image.arrayed});
   }
   const auto comparison = resources.separate_samplers.empty() ? std::set<std::uint32_t>()
                                                               : comparison_sampler_ids(compiler);

@@ -18,6 +18,12 @@ Status check_normalized_depth(const FloatImage& image) {
                           std::to_string(image.channels) + " channels and " +
                           std::to_string(image.data.size()) + " values");
   }
+  if (image.layers < 0 || (image.layers > 0 && image.height % image.layers != 0)) {
+    return make_error(Error::Kind::bad_input, "shadow map",
+                      "an array of " + std::to_string(image.layers) + " layers cannot stack in " +
+                          std::to_string(image.height) + " rows; expected whole layers of " +
+                          "equal height");
+  }
   for (int j = 0; j < image.height; ++j) {
     for (int i = 0; i < image.width; ++i) {
       const float d = image.at(i, j);

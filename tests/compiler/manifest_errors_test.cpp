@@ -326,9 +326,9 @@ TEST(ManifestErrors, MapEncodingIsAnEncodingOfATechniqueThatTakesOne) {
 // single is the key left out.
 TEST(ManifestErrors, MapLayoutIsALayoutOfATechniqueThatTakesOne) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "hard",
-                                              "map_layout": ["atlas", "array"]})")),
-                   "perms.json: /sets/1/map_layout/1: unknown map_layout 'array'; allowed map "
-                   "layouts: single, atlas (docs/techniques.md, \"Map layouts\")");
+                                              "map_layout": ["atlas", "cube"]})")),
+                   "perms.json: /sets/1/map_layout/1: unknown map_layout 'cube'; allowed map "
+                   "layouts: single, atlas, array (docs/techniques.md, \"Map layouts\")");
   expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 3,
                                               "map_layout": "atlas"})")),
                    "perms.json: /sets/1/map_layout: key 'map_layout' is used by none of this "
@@ -347,6 +347,21 @@ TEST(ManifestErrors, MapLayoutIsALayoutOfATechniqueThatTakesOne) {
                                              "pcf_grid_k3_perspective"}));
   EXPECT_FALSE((*variants)[0].keys.map_layout);
   EXPECT_EQ((*variants)[1].keys.map_layout, "atlas");
+}
+
+// Direct3D 9 has no texture arrays: a set that asks for the array layout
+// there is refused, naming where its targets came from.
+TEST(ManifestErrors, ArrayLayoutIsRefusedOnDirect3D9) {
+  expect_bad_input(manifest_error(with_set(R"({"technique": "hard", "map_layout": "array",
+                                              "target": ["spirv", "hlsl_dx9"]})")),
+                   "perms.json: /sets/1/target: map_layout array cannot be read on hlsl_dx9 "
+                   "(Direct3D 9 has no texture arrays; map_layout atlas can); leave hlsl_dx9 "
+                   "out of this set's 'target' list");
+  expect_bad_input(manifest_error(R"({"schema": 1, "targets": ["glsl330", "hlsl_dx9"],
+                                      "sets": [{"technique": "hard", "map_layout": "array"}]})"),
+                   "perms.json: /sets/0: map_layout array cannot be read on hlsl_dx9 "
+                   "(Direct3D 9 has no texture arrays; map_layout atlas can); this set takes "
+                   "the top-level targets: give it a 'target' list without hlsl_dx9");
 }
 
 TEST(ManifestErrors, TechniqueMissingAKeyItNeeds) {

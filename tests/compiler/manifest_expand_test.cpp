@@ -46,11 +46,13 @@ TEST(ManifestExpand, DefaultLibrary) {
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
   EXPECT_EQ(names(*variants), (std::vector<std::string>{
                                   "hard",
+                                  "hard_array",
                                   "hard_atlas",
                                   "hard_orthographic",
                                   "hard_perspective",
                                   "hard_perspective_reversed",
                                   "pcf_grid_k3",
+                                  "pcf_grid_k3_array",
                                   "pcf_grid_k3_atlas",
                                   "pcf_grid_k3_orthographic",
                                   "pcf_grid_k3_perspective",
@@ -75,6 +77,7 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "pcss_b16_p16_poisson_perspective_reversed",
                                   "pcss_b16_p16_poisson_receiver_plane",
                                   "pcss_b16_p16_poisson_receiver_plane_orthographic_atlas",
+                                  "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_array",
                                   "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_atlas",
                                   "pcss_b16_p16_poisson_ign",
                                   "pcss_b16_p16_square",

@@ -707,14 +707,15 @@ TEST(LoadLibrary, DiskPointsAndBlurWeightsOutOfRangeAreErrorsNamingTheJsonPath) 
 // 0.61 MB for 76, 0.71 MB for the same 76 once minmax_pcf and pcss_minmax
 // have deferred passes and function forms, and 0.73 MB once the
 // back-projections have them too. Schema 4 shares hlsl_dx9's records across
-// disks: 0.56 MB without bytecode, as built here (0.67 MB with it).
+// disks: 0.56 MB without bytecode, as built here (0.67 MB with it); 0.70 MB
+// for the 81 with the atlas variants, 0.77 MB for 84 with the array ones.
 TEST(BuildLibrary, DefaultLibraryIndexStaysSmall) {
   TempDir dir("default");
   auto variants =
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
   ASSERT_TRUE(build_library(*variants, dir.path / "out", {.jobs = 2}, ignore_diagnostics()).ok());
-  EXPECT_LT(std::filesystem::file_size(dir.path / "out" / "index.json"), 720'000u);
+  EXPECT_LT(std::filesystem::file_size(dir.path / "out" / "index.json"), 800'000u);
   ASSERT_TRUE(load_library(dir.path / "out").ok());
 }
 

@@ -63,7 +63,7 @@ std::string cell(const Reads& reads) {
   static const std::vector<std::string> kOrder = {
       "shadow_map_size",    "light",       "sampling",         "screen_size",
       "source_size",        "minmax_info", "camera_inverse_0", "light_view_proj_0",
-      "camera_depth_range", "map_tile"};
+      "camera_depth_range", "map_tile",    "map_layer"};
   const auto whole = [&](const std::string& member) {
     const auto found = reads.find(member);
     return found != reads.end() && found->second.size() == 4;
@@ -99,10 +99,12 @@ Tables library_reads(const Library& library) {
     if (!relative.empty()) add_reads(read_file(library.root / relative).value(), reads);
   };
   for (const LibraryVariant& variant : library.variants) {
-    // An atlas variant reads its light from elsewhere: a row of its own.
+    // An atlas or array variant reads its light from elsewhere: a row of
+    // its own.
+    const MapLayout layout = map_layout(variant.variant.keys);
     const std::string technique =
         std::string(to_string(variant.variant.technique)) +
-        (map_layout(variant.variant.keys) == MapLayout::atlas ? ", map_layout atlas" : "");
+        (layout == MapLayout::single ? "" : ", map_layout " + std::string(to_string(layout)));
     for (const auto& [pass, targets] : variant.passes) {
       const auto files = targets.find(Target::glsl450);
       if (files == targets.end()) continue;

@@ -29,7 +29,8 @@ const std::vector<std::string> kVariants = {
     "pcss_minmax_p16_poisson_orthographic",
     "backprojection_perspective_reversed",
     "bitmask_backprojection_bits64_perspective_reversed",
-    "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_atlas"};
+    "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_atlas",
+    "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_array"};
 
 Result<std::unique_ptr<Engine>> validated_engine() {
   return Engine::create({.device = "", .validation = true}, fail_on_validation_messages());

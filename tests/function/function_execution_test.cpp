@@ -16,8 +16,8 @@ namespace {
 // One variant per technique and encoding, and the keys that change what
 // the function takes or derives: rotation (the pixel) and receiver_plane
 // (screen derivatives). The min-max techniques read the mip the target's
-// build passes made of the map. An atlas variant takes its light at each
-// call.
+// build passes made of the map. An atlas or array variant takes its light
+// at each call.
 const std::vector<std::string> kVariants = {
     "hard",
     "pcf_grid_k3",
@@ -30,7 +30,9 @@ const std::vector<std::string> kVariants = {
     "backprojection_perspective",
     "bitmask_backprojection_bits64_orthographic",
     "pcf_poisson_p16_poisson_ign_atlas",
-    "pcss_b16_p16_poisson_receiver_plane_orthographic_atlas"};
+    "pcss_b16_p16_poisson_receiver_plane_orthographic_atlas",
+    "pcf_grid_k3_array",
+    "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_array"};
 
 class FunctionFormExecution : public ::testing::TestWithParam<std::string> {};
 

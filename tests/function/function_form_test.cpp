@@ -81,14 +81,16 @@ std::string engine_shader(Target target, const PassReflection& reflection,
                           const std::string& text) {
   const bool hlsl = traits(target).is_hlsl;
   const bool pixel = reflection.signature.find("pixel") != std::string::npos;
-  // An atlas variant's light, each call's: the whitepaper's light in the
-  // atlas's first quarter (constants a compiler folds: no 0 / 0 anywhere).
+  // An atlas or array variant's light, each call's: the whitepaper's light
+  // in the atlas's first quarter, or the array's layer 2 (constants a
+  // compiler folds: no 0 / 0 anywhere).
   const std::string vec4 = hlsl ? "float4" : "vec4";
-  const std::string light = reflection.signature.find("map_tile") == std::string::npos
-                                ? ""
-                                : ", " + vec4 + "(0.5, 3.75, 9.5, 0.125), " + vec4 +
-                                      "(0.01, 0.05, 0.03125, 32.0), " + vec4 +
-                                      "(0.0, 0.0, 0.5, 0.5)";
+  const std::string whitepaper =
+      ", " + vec4 + "(0.5, 3.75, 9.5, 0.125), " + vec4 + "(0.01, 0.05, 0.03125, 32.0), ";
+  const std::string light =
+      reflection.signature.find("map_tile") != std::string::npos
+          ? whitepaper + vec4 + "(0.0, 0.0, 0.5, 0.5)"
+          : (reflection.signature.find("map_layer") != std::string::npos ? whitepaper + "2" : "");
   std::string out;
   if (!hlsl) {
     out = target == Target::glsl450   ? "#version 450\n"
@@ -136,13 +138,14 @@ TEST_P(FunctionFormTest, IndexNamesAPrefixedFileThatCompilesInAnEngineShader) {
     const bool rotation = read.variant.keys.rotation.has_value();
     const std::string vec4 = hlsl ? "float4" : "vec4";
     const std::string vec2 = hlsl ? "float2" : "vec2";
-    const bool atlas = map_layout(read.variant.keys) == MapLayout::atlas;
-    EXPECT_EQ(
-        reflection.signature,
-        "float penumbra_visibility(" + vec4 + " light_clip_position" +
-            (rotation ? ", " + vec2 + " pixel" : "") +
-            (atlas ? ", " + vec4 + " light, " + vec4 + " sampling, " + vec4 + " map_tile" : "") +
-            ")");
+    const MapLayout layout = map_layout(read.variant.keys);
+    const std::string per_call = ", " + vec4 + " light, " + vec4 + " sampling, ";
+    EXPECT_EQ(reflection.signature, "float penumbra_visibility(" + vec4 + " light_clip_position" +
+                                        (rotation ? ", " + vec2 + " pixel" : "") +
+                                        (layout == MapLayout::atlas ? per_call + vec4 + " map_tile"
+                                         : layout == MapLayout::array ? per_call + "int map_layer"
+                                                                      : "") +
+                                        ")");
     const Result<std::string> text = read_file(library.root / form.file);
     ASSERT_TRUE(text.ok()) << text.error().to_string();
     EXPECT_NE(text->find(reflection.signature), std::string::npos);

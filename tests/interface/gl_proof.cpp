@@ -42,6 +42,10 @@ std::string gl_type(GLenum type) {
       return "sampler2D";
     case GL_SAMPLER_2D_SHADOW:
       return "sampler2DShadow";
+    case GL_SAMPLER_2D_ARRAY:
+      return "sampler2DArray";
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+      return "sampler2DArrayShadow";
     default:
       return "GL type " + std::to_string(type);
   }
@@ -115,14 +119,15 @@ void report_uniforms(GLuint program, Facts& facts) {
       }
       continue;
     }
-    const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_2D_SHADOW;
+    const bool shadow = type == GL_SAMPLER_2D_SHADOW || type == GL_SAMPLER_2D_ARRAY_SHADOW;
+    const bool sampler = shadow || type == GL_SAMPLER_2D || type == GL_SAMPLER_2D_ARRAY;
     GLint unit = -1;
     if (sampler) glGetUniformiv(program, glGetUniformLocation(program, name), &unit);
     for (std::string_view stage : referencing_stages(program, GL_UNIFORM, i)) {
       if (sampler) {
         facts[std::string(stage) + " texture " + name] =
             slot_text(kStyle, std::nullopt, static_cast<std::uint32_t>(unit)) + ", " +
-            texture_text(gl_type(type), type == GL_SAMPLER_2D_SHADOW);
+            texture_text(gl_type(type), shadow);
       } else {
         facts[std::string(stage) + " uniform " + name] = gl_type(type);
       }

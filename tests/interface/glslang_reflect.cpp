@@ -13,7 +13,8 @@ std::string type_name(const glslang::TType& type) {
   if (type.getBasicType() == glslang::EbtSampler) {
     const glslang::TSampler& sampler = type.getSampler();
     if (sampler.isPureSampler()) return sampler.isShadow() ? "samplerShadow" : "sampler";
-    return sampler.getString().c_str();  // "sampler2D", "sampler2DShadow", "texture2D"
+    // "sampler2D", "sampler2DShadow", "texture2D", "sampler2DArray", ...
+    return sampler.getString().c_str();
   }
   if (type.getBasicType() == glslang::EbtFloat && !type.isMatrix() && !type.isArray()) {
     return type.isVector() ? "vec" + std::to_string(type.getVectorSize()) : "float";

@@ -127,7 +127,9 @@ void observed_stage(ShaderStage stage, Target target, const GlslangReflection& t
       facts[key + " texture " + uniform.name] =
           sampler_text("s" + binding, "sampler2D", type == "sampler2DShadow");
     } else if (type.starts_with("texture2D")) {
-      facts[key + " texture " + uniform.name] = sampler_text("t" + binding, "Texture2D", false);
+      const bool array = type.starts_with("texture2DArray");
+      facts[key + " texture " + uniform.name] =
+          sampler_text("t" + binding, array ? "Texture2DArray" : "Texture2D", false);
     } else if (type == "sampler" || type == "samplerShadow") {
       const bool comparison = type == "samplerShadow";
       facts[key + " sampler " + uniform.name] = sampler_text(

@@ -1,7 +1,8 @@
 // Proves the spirv target's reflection by SPIRV-Cross's reflection of the
 // emitted .spv files: each stage's uniform blocks (set, binding, declared
 // size, member names, offsets and types), combined image samplers (set,
-// binding, sampler2D or sampler2DShadow, which is the comparison sampler),
+// binding, sampler2D or sampler2DShadow, which is the comparison sampler,
+// or their array twins),
 // the vertex stage's inputs (location, components, Vulkan format) and the
 // fragment stage's outputs (location). SPIRV-Cross lists everything the
 // module declares, used or not, so both directions are exact.
@@ -52,8 +53,11 @@ void observed_stage(std::string_view stage, const std::string& bytes, Facts& fac
   }
   for (const spirv_cross::Resource& image : resources.sampled_images) {
     const bool depth = module.get_type(image.type_id).image.depth;
+    const bool array = module.get_type(image.type_id).image.arrayed;
     facts[std::string(stage) + " texture " + image.name] =
-        binding(image.id) + ", " + texture_text(depth ? "sampler2DShadow" : "sampler2D", depth);
+        binding(image.id) + ", " +
+        texture_text(std::string(array ? "sampler2DArray" : "sampler2D") + (depth ? "Shadow" : ""),
+                     depth);
   }
   // Anything else the module binds has no place in the reflection.
   for (const auto* other :

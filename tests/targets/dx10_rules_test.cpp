@@ -70,6 +70,23 @@ TEST(Dx10Rules, GradientSampling) {
             prefix(Target::hlsl_dx10) + "gradient sampling (SampleGrad)" + kSamplingOnly);
 }
 
+// GLSL's way to compare at level 0 in a sampler2DArrayShadow: zero
+// gradients, which SampleCmpLevelZero is; any other gradient is refused.
+TEST(Dx10Rules, ComparisonWithZeroGradientsIsLevelZero) {
+  const auto compare_with = [](const std::string& gradients) {
+    RuleJob rule(Target::hlsl_dx10,
+                 {.globals = "%zero = OpConstantComposite %v2float %float_0 %float_0\n"
+                             "%null = OpConstantNull %v2float\n",
+                  .main_body = "%s = OpLoad %dsampled %cmp\n"
+                               "%c = OpImageSampleDrefExplicitLod %float %s %uv %float_0 Grad " +
+                               gradients + "\n" + store_out("%c")});
+    return rule.check();
+  };
+  EXPECT_EQ(compare_with("%zero %null"), "");
+  EXPECT_EQ(compare_with("%zero %uv"),
+            prefix(Target::hlsl_dx10) + "gradient sampling (SampleGrad)" + kSamplingOnly);
+}
+
 TEST(Dx10Rules, ComparisonAtALevelOtherThanZero) {
   EXPECT_EQ(check_dx10("%s = OpLoad %dsampled %cmp\n"
                        "%c = OpImageSampleDrefExplicitLod %float %s %uv %float_0 Lod %float_1\n" +

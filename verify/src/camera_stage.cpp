@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "atlas_fixture.hpp"
+#include "map_placement.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shadow_params.hpp"
@@ -25,8 +25,8 @@ Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Libr
                       load_executable(library, entry, PassKind::depth, target));
   PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, truths, depth.program, target,
                                                  out.stage.scene, out.view.receivers, map_format));
-  if (map_layout(entry.variant.keys) == MapLayout::atlas) {
-    PENUMBRA_TRY_ASSIGN(out.fixture, atlas_fixture(engine, out.fixture));
+  if (const MapLayout layout = map_layout(entry.variant.keys); layout != MapLayout::single) {
+    PENUMBRA_TRY_ASSIGN(out.fixture, placed_fixture(engine, out.fixture, layout));
   }
   out.depth = std::move(depth.program.reflection);
   return out;
@@ -128,7 +128,7 @@ Status judge_picture(EngineFormCheck& check, Engine& engine, const LibraryVarian
   EngineMap map{own_map ? *own_map : fixture.normalized_depth, fixture.encoded,
                 depth_scale_for(fixture.scene.far_z)};
   check.map_format = map.encoded ? map.encoded->format : DepthFormat::d32_float;
-  const reference::SamplingPrecision precision = atlas_precision(
+  const reference::SamplingPrecision precision = placement_precision(
       fixture, {static_cast<int>(std::max(1u, engine.device_info().sub_texel_precision_bits))});
   PENUMBRA_TRY_ASSIGN(
       const StagePictureCheck picture,

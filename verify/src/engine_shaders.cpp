@@ -60,13 +60,16 @@ std::string glsl_version(Target target) {
   return "#version 300 es\nprecision highp float;\n";
 }
 
-// ", vec4(...), vec4(...), vec4(...)": `call`'s arguments, or nothing.
+// ", vec4(...), vec4(...), vec4(...)" (an array's last argument its layer,
+// an int): `call`'s arguments, or nothing.
 std::string call_arguments(const std::optional<CallLight>& call, bool hlsl) {
   if (!call) return {};
   std::string out;
   for (const std::array<float, 4>* value : {&call->light, &call->sampling, &call->map_tile}) {
+    if (value == &call->map_tile && call->map_layer) break;
     out += ", " + row_literal({(*value)[0], (*value)[1], (*value)[2], (*value)[3]}, hlsl);
   }
+  if (call->map_layer) out += ", " + std::to_string(*call->map_layer);
   return out;
 }
 

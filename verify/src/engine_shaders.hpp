@@ -78,14 +78,15 @@ struct VertexOptions {
 std::string engine_vertex_shader(Target target, const Matrix4& camera, const Matrix4& light,
                                  const VertexOptions& options);
 
-// What an atlas variant's function takes at each call after the pixel
-// (docs/function-form.md): its light's `light` and `sampling` members of
-// ShadowParams and its tile, which the engine's stage passes as constants
-// of its own, as an engine passes a light of its own arrays.
+// What an atlas or array variant's function takes at each call after the
+// pixel (docs/function-form.md): its light's `light` and `sampling` members
+// of ShadowParams and its tile or layer, which the engine's stage passes as
+// constants of its own, as an engine passes a light of its own arrays.
 struct CallLight {
   std::array<float, 4> light{};
   std::array<float, 4> sampling{};
-  std::array<float, 4> map_tile{};
+  std::array<float, 4> map_tile{};  // map_layout atlas: the tile
+  std::optional<int> map_layer;     // map_layout array: the layer, in the tile's place
 };
 
 // The fragment stage around `function_text` (the function form's file),

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "eval_placement.hpp"
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shadow_params.hpp"
@@ -102,57 +103,6 @@ void mark_no_receiver(const EvalInputs& inputs, reference::ReferenceImage& image
   }
 }
 
-// The light's own map: the tile of an atlas, or the whole map.
-FloatImage light_map(const FloatImage& map, const EvalInputs& inputs) {
-  if (!inputs.map_tile) return map;
-  const auto [x, y, width, height] = *inputs.map_tile;
-  FloatImage tile(width, height, 1);
-  for (int j = 0; j < height; ++j) {
-    for (int i = 0; i < width; ++i) tile.at(i, j) = map.at(x + i, y + j);
-  }
-  return tile;
-}
-
-// The parameters of `inputs`' light for the device: its map's size (a
-// tile's, which the filter radius's default is in texels of) and, for an
-// atlas, the atlas's size and the tile in texture coordinates.
-ParamBlock device_params(const EvalInputs& inputs, const FloatImage& receivers, float depth_scale) {
-  const FloatImage& map = inputs.shadow_map;
-  const auto tile = inputs.map_tile.value_or(std::array<int, 4>{0, 0, map.width, map.height});
-  ParamBlock params = shadow_params(
-      inputs.light, {tile[2], tile[3], receivers.width, receivers.height}, depth_scale);
-  if (inputs.map_tile) place_in_atlas(params, map.width, map.height, tile);
-  return params;
-}
-
-// A tile is for a variant that reads one (map_layout atlas).
-Status check_tile_variant(const LibraryVariant& variant, const EvalInputs& inputs) {
-  if (!inputs.map_tile || map_layout(variant.variant.keys) == MapLayout::atlas) return {};
-  return make_error(Error::Kind::bad_input, "--map-tile",
-                    variant.variant.name +
-                        " reads a map of its own (map_layout single); allowed only for a variant "
-                        "with map_layout atlas");
-}
-
-// The tile inside the map, at least one texel each way.
-Status check_tile(const EvalInputs& inputs) {
-  if (!inputs.map_tile) return {};
-  const auto [x, y, width, height] = *inputs.map_tile;
-  const FloatImage& map = inputs.shadow_map;
-  if (x >= 0 && y >= 0 && width >= 1 && height >= 1 && x <= map.width - width &&
-      y <= map.height - height) {
-    return {};
-  }
-  return make_error(
-      Error::Kind::bad_input,
-      "--map-tile " + std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(width) +
-          "," + std::to_string(height),
-      "is not inside the " + std::to_string(map.width) + "x" + std::to_string(map.height) +
-          " map; allowed: x,y,width,height in texels, x >= 0, y >= 0, width and "
-          "height >= 1, x + width <= " +
-          std::to_string(map.width) + ", y + height <= " + std::to_string(map.height));
-}
-
 // One light option's range; `name` is its argument.
 Status check_range(const char* name, double value, double low, double high) {
   if (value >= low && value <= high) return {};  // false for NaN
@@ -204,7 +154,7 @@ Status check_images(const EvalInputs& inputs) {
                           std::to_string(mask.height) + " with " + std::to_string(mask.channels) +
                           " channel(s)");
   }
-  PENUMBRA_TRY(check_tile(inputs));
+  PENUMBRA_TRY(check_placement(inputs));
   if (inputs.stored_far) return check_stored_map(inputs.shadow_map);
   if (std::any_of(inputs.shadow_map.data.begin(), inputs.shadow_map.data.end(),
                   [](float z) { return z < 0.0f; })) {
@@ -243,10 +193,10 @@ Status check_eval_inputs(const EvalInputs& inputs) {
 Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant& variant,
                                    Target target, const EvalInputs& inputs, Engine& engine) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  PENUMBRA_TRY(check_tile_variant(variant, inputs));
+  PENUMBRA_TRY(check_placement_variant(variant, inputs));
   const float depth_scale = depth_scale_of(inputs);
-  auto map = engine.upload_shadow_map(
-      stored_map(inputs, encoding_of(variant, inputs, depth_scale), depth_scale));
+  auto map = engine.upload_shadow_map(device_map(
+      stored_map(inputs, encoding_of(variant, inputs, depth_scale), depth_scale), variant, inputs));
   if (!map) return map.error();
   const FloatImage receivers = masked_receivers(inputs);
   const ParamBlock params = device_params(inputs, receivers, depth_scale);
@@ -270,7 +220,7 @@ Result<QueryOutput> eval_on_device(const Library& library, const LibraryVariant&
 Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, Target target,
                                                  const EvalInputs& inputs) {
   PENUMBRA_TRY(check_eval_inputs(inputs));
-  PENUMBRA_TRY(check_tile_variant(variant, inputs));
+  PENUMBRA_TRY(check_placement_variant(variant, inputs));
   const float depth_scale = depth_scale_of(inputs);
   const auto encoded = encoding_of(variant, inputs, depth_scale);
   // An orthographic map's light is directional: --light-size is its half-slope.
@@ -281,13 +231,7 @@ Result<reference::ReferenceImage> eval_reference(const LibraryVariant& variant, 
   const FloatImage receivers = masked_receivers(inputs);
   // The limits verify_library holds `target`'s runs to: hlsl_dx9's step cap.
   const reference::ShaderLimits limits = reference::shader_limits(target);
-  // On the tile's texels, its placement in the atlas rounded as the shaders
-  // round it.
-  reference::SamplingPrecision precision;
-  if (inputs.map_tile) {
-    precision.coordinate_error =
-        reference::atlas_coordinate_error(inputs.shadow_map.width, inputs.shadow_map.height);
-  }
+  const reference::SamplingPrecision precision = placement_precision(inputs);
   auto image =
       encoded ? reference::evaluate_image(
                     variant.variant, light_map(stored_map(inputs, encoded, depth_scale), inputs),

@@ -75,13 +75,19 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, Ca
   draw.vertex = {takes_pixel(form->second.reflection), camera.width, camera.height};
   draw.function_text = text;
   draw.params = camera.fixture.params;
-  if (camera.fixture.atlas) {
-    // An atlas variant's function takes its light at each call; the block's
-    // members the call replaces are left zero, so that a function that read
-    // them instead fails.
-    draw.call =
-        CallLight{draw.params.at("light"), draw.params.at("sampling"), draw.params.at("map_tile")};
-    for (const char* member : {"light", "sampling", "map_tile"}) draw.params[member] = {};
+  if (camera.fixture.placed) {
+    // An atlas or array variant's function takes its light at each call;
+    // the block's members the call replaces are left zero, so that a
+    // function that read them instead fails.
+    std::optional<int> layer;
+    if (camera.fixture.placed->layers > 0) {
+      layer = static_cast<int>(draw.params.at("map_layer")[0]);
+    }
+    draw.call = CallLight{draw.params.at("light"), draw.params.at("sampling"),
+                          draw.params.at("map_tile"), layer};
+    for (const char* member : {"light", "sampling", "map_tile", "map_layer"}) {
+      draw.params[member] = {};
+    }
   }
   // The engine's own vertex input, render target and depth buffer: the
   // depth pass's position and depth format, and four floats.

@@ -4,9 +4,11 @@
 // itself, the others on its normalized depth.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <vector>
 
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/reference/techniques.hpp"
@@ -44,13 +46,13 @@ struct SceneFixture {
   // What a map of the scene is held against (a path that draws its own
   // checks it against the same).
   std::shared_ptr<const DepthTruth> depth_truth;
-  // An atlas variant's: the atlas that holds normalized_depth in one tile
-  // (atlas_fixture.hpp), which the devices read instead of it; `map` and
-  // `params` are the atlas's.
-  std::shared_ptr<const FloatImage> atlas;
+  // An atlas or array variant's: the texture that holds normalized_depth as
+  // one tile or one layer (map_placement.hpp), which the devices read
+  // instead of it; `map` and `params` are its.
+  std::shared_ptr<const FloatImage> placed;
 
-  // What a device uploads as the map: the atlas, or the map itself.
-  const FloatImage& device_map() const { return atlas ? *atlas : normalized_depth; }
+  // What a device uploads as the map: the atlas or array, or the map itself.
+  const FloatImage& device_map() const { return placed ? *placed : normalized_depth; }
 
   // The depth image the map's readers sample: D32_SFLOAT unless encoded.
   DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }
@@ -64,9 +66,9 @@ struct TargetScenes {
   // Whether the maps hold the min-max mip the target's own passes built, or
   // why they could not; absent until a variant that reads the mip asks.
   std::optional<Status> minmax;
-  // The same scenes, each map in an atlas tile (atlas_fixture()); absent
-  // until an atlas variant asks.
-  std::shared_ptr<TargetScenes> atlas;
+  // The same scenes, each map placed as a map layout reads it
+  // (placed_fixture()); each made when a variant of that layout first asks.
+  std::map<MapLayout, std::shared_ptr<TargetScenes>> placed;
 };
 
 // `linear` (a map of `scene` drawn by `target`'s depth pass, as linear z)

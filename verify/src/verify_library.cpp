@@ -6,10 +6,10 @@
 #include <thread>
 #include <tuple>
 
-#include "atlas_fixture.hpp"
 #include "backend.hpp"
 #include "camera_stage.hpp"
 #include "cpu_work.hpp"
+#include "map_placement.hpp"
 #include "minmax_check.hpp"
 #include "pair_queue.hpp"
 #include "penumbra/model/map_encoding.hpp"
@@ -77,20 +77,21 @@ EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend
   return out;
 }
 
-// The scenes `entry` reads: `scenes`, or for an atlas variant their atlas
-// (made ready by run_pair()).
+// The scenes `entry` reads: `scenes`, or for an atlas or array variant
+// their maps placed so (made ready by run_pair()).
 const TargetScenes& variant_scenes(const TargetScenes& scenes, const LibraryVariant& entry) {
-  return map_layout(entry.variant.keys) == MapLayout::atlas ? *scenes.atlas : scenes;
+  const MapLayout layout = map_layout(entry.variant.keys);
+  return layout == MapLayout::single ? scenes : *scenes.placed.at(layout);
 }
 
-// Every scene of `scenes` with its map in an atlas tile, on `engine`: an
-// atlas variant's. The min-max mip is not built on them: no atlas variant
-// reads it.
-Result<std::shared_ptr<TargetScenes>> prepare_atlas(Engine& engine, const TargetScenes& scenes) {
+// Every scene of `scenes` with its map placed as `layout` reads it, on
+// `engine`. The min-max mip is not built on them: no such variant reads it.
+Result<std::shared_ptr<TargetScenes>> prepare_placed(Engine& engine, const TargetScenes& scenes,
+                                                     MapLayout layout) {
   auto out = std::make_shared<TargetScenes>();
   for (const SceneFixture& fixture : scenes.scenes) {
-    PENUMBRA_TRY_ASSIGN(SceneFixture atlas, atlas_fixture(engine, fixture));
-    out->scenes.push_back(std::move(atlas));
+    PENUMBRA_TRY_ASSIGN(SceneFixture placed, placed_fixture(engine, fixture, layout));
+    out->scenes.push_back(std::move(placed));
   }
   return out;
 }
@@ -264,15 +265,16 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
     return result;
   }
   TargetScenes& scenes = ctx.scenes.at(key);
-  if (map_layout(entry.variant.keys) == MapLayout::atlas && !scenes.atlas) {
-    auto atlas = prepare_atlas(ctx.engine, scenes);
-    if (!atlas) {
+  if (const MapLayout layout = map_layout(entry.variant.keys);
+      layout != MapLayout::single && !scenes.placed.contains(layout)) {
+    auto placed = prepare_placed(ctx.engine, scenes, layout);
+    if (!placed) {
       target_runs.runs.push_back(
-          {failed_run(target, ctx.backends.front()->name(), atlas.error()), {}, {}, {}, {}});
+          {failed_run(target, ctx.backends.front()->name(), placed.error()), {}, {}, {}, {}});
       progress.finished(target_runs.label);
       return result;
     }
-    scenes.atlas = std::move(*atlas);
+    scenes.placed.emplace(layout, std::move(*placed));
   }
   if (pair.minmax_preparer && !scenes.minmax) {
     scenes.minmax = prepare_minmax(ctx, ctx.library.variants[*pair.minmax_preparer], target,
@@ -290,7 +292,7 @@ PairResult run_pair(Context& ctx, const VerifyPlan& plan, const PairQueue::Claim
     work.submit(
         [&ctx, &runs = target_runs, &entry, target, s, &fixture = read.scenes[s], &progress] {
           check_scene_of_runs(runs, entry.variant, target, s, fixture,
-                              atlas_precision(fixture, ctx.precision));
+                              placement_precision(fixture, ctx.precision));
           if (--runs.unchecked == 0) {
             runs.references.reset();
             progress.finished(runs.label);

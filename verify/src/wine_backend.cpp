@@ -10,9 +10,9 @@
 #include <memory>
 #include <mutex>
 
-#include "atlas_fixture.hpp"
 #include "backend.hpp"
 #include "engine_shaders.hpp"
+#include "map_placement.hpp"
 #include "penumbra/d3d/engine.hpp"
 #include "penumbra/model/shadow_params.hpp"
 #include "penumbra/reference/scene.hpp"
@@ -248,14 +248,17 @@ class WineBackend final : public Backend {
               .first;
     }
     RuntimeMap& own = known->second;
-    if (!fixture.atlas) return &own;
-    // An atlas variant's: the map this runtime drew, placed in an atlas as
-    // the fixture's is, which then reports the map's depth check.
-    if (auto placed = maps_.find(key + " atlas"); placed != maps_.end()) return &placed->second;
-    PENUMBRA_TRY_ASSIGN(D3dMap atlas, engine_->upload_map(atlas_around(fixture, *own.stored)));
-    RuntimeMap in_atlas{std::move(atlas), own.stored, own.linear, own.checked};
+    if (!fixture.placed) return &own;
+    // An atlas or array variant's: the map this runtime drew, placed as the
+    // fixture's is, which then reports the map's depth check.
+    const MapLayout layout = fixture.placed->layers > 0 ? MapLayout::array : MapLayout::atlas;
+    const std::string placed_key = key + " " + std::string(to_string(layout));
+    if (auto placed = maps_.find(placed_key); placed != maps_.end()) return &placed->second;
+    PENUMBRA_TRY_ASSIGN(D3dMap uploaded,
+                        engine_->upload_map(place_map(fixture, *own.stored, layout)));
+    RuntimeMap in_place{std::move(uploaded), own.stored, own.linear, own.checked};
     own.checked = true;
-    return &maps_.emplace(key + " atlas", std::move(in_atlas)).first->second;
+    return &maps_.emplace(placed_key, std::move(in_place)).first->second;
   }
 
   D3dRuntime runtime_;

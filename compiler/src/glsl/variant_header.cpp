@@ -104,9 +104,10 @@ std::string variant_header(const Variant* variant, Target target, MapEncoding en
     }
   }
   if (keys.receiver_plane.value_or(false)) out += "#define PENUMBRA_RECEIVER_PLANE 1\n";
-  // The map is one tile of an atlas, chosen per call (common/params.glsl's
-  // set_call(), common/shadow_map.glsl's map_uv()).
+  // The map is one tile of an atlas or one layer of an array, chosen per
+  // call (common/params.glsl's set_call(), common/shadow_map.glsl's reads).
   if (map_layout(keys) == MapLayout::atlas) out += "#define PENUMBRA_MAP_ATLAS 1\n";
+  if (map_layout(keys) == MapLayout::array) out += "#define PENUMBRA_MAP_ARRAY 1\n";
   if (keys.light_bits) {
     out += "#define LIGHT_GRID " + std::to_string(light_grid_side(*keys.light_bits)) + "\n";
   }

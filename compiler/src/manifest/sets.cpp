@@ -6,6 +6,7 @@
 
 #include "manifest/axes.hpp"
 #include "manifest/sections.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shader_contract.hpp"
 #include "penumbra/support/text.hpp"
 
@@ -96,6 +97,25 @@ Status check_set_exact(const JsonNode& node, const AxisValues& axes) {
   return {};
 }
 
+// A map layout a target cannot read (array on hlsl_dx9) is refused like the
+// techniques above, rather than that target dropped.
+Status check_set_layouts(const JsonNode& node, const AxisValues& axes) {
+  for (const std::string& name : axes.map_layout) {
+    const std::optional<MapLayout> layout = parse_map_layout(name);
+    for (Target target : axes.target) {
+      const std::string why = layout ? layout_unsupported(*layout, target) : "";
+      if (why.empty()) continue;
+      if (node.has("target")) {
+        return node.member("target").error(why + "; leave " + std::string(to_string(target)) +
+                                           " out of this set's 'target' list");
+      }
+      return node.error(why + "; this set takes the top-level targets: give it a 'target' " +
+                        "list without " + std::string(to_string(target)));
+    }
+  }
+  return {};
+}
+
 // "technique, ..., target, forms": a set's keys, the axes and its forms.
 constexpr std::array<std::string_view, kAxisKeys.size() + 1> kSetKeys = [] {
   std::array<std::string_view, kAxisKeys.size() + 1> keys{};
@@ -131,6 +151,7 @@ Result<VariantSet> read_set(const JsonNode& node, const Manifest& manifest) {
   if (set.axes.target.empty()) set.axes.target = manifest.targets;
   PENUMBRA_TRY(check_set_targets(node, set.axes));
   PENUMBRA_TRY(check_set_exact(node, set.axes));
+  PENUMBRA_TRY(check_set_layouts(node, set.axes));
   return set;
 }
 

@@ -89,7 +89,7 @@ class TargetReflector {
                     " is not a texture of the shader contract at its binding "
                     "(docs/shader-interface.md)");
       }
-      out.textures.push_back(texture_binding(*texture));
+      out.textures.push_back(texture_binding(*texture, image.arrayed));
       if (texture->constant) {
         if (variant_) out.textures.back().contents = texture_contents(texture->id, *variant_);
         if (!out.textures.back().contents) {
@@ -153,7 +153,8 @@ class TargetReflector {
     out.blocks.push_back(std::move(binding));
   }
 
-  TextureBinding texture_binding(const TextureDescription& texture) const {
+  // `arrayed`: a layer of a 2D array texture is read (map_layout array).
+  TextureBinding texture_binding(const TextureDescription& texture, bool arrayed) const {
     TextureBinding out;
     out.name = prefix_ + std::string(texture.name);
     const TextureFormat format = dialect_ == Dialect::d3d9 ? texture.dx9_format : texture.format;
@@ -176,7 +177,7 @@ class TargetReflector {
       case Dialect::essl300:
         break;
       case Dialect::d3d10:
-        out.type = "Texture2D";
+        out.type = arrayed ? "Texture2DArray" : "Texture2D";
         out.reg = "t" + slot;
         out.sampler.name = "_" + out.name + "_sampler";
         out.sampler.type = texture.sampler.comparison ? "SamplerComparisonState" : "SamplerState";
@@ -187,7 +188,10 @@ class TargetReflector {
         out.reg = "s" + slot;
         break;
     }
-    if (out.type.empty()) out.type = texture.sampler.comparison ? "sampler2DShadow" : "sampler2D";
+    if (out.type.empty()) {
+      out.type = std::string(arrayed ? "sampler2DArray" : "sampler2D") +
+                 (texture.sampler.comparison ? "Shadow" : "");
+    }
     return out;
   }
 

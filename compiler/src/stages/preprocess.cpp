@@ -2,6 +2,7 @@
 
 #include "glsl/glslang_setup.hpp"
 #include "glsl/variant_header.hpp"
+#include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/model.hpp"
 #include "stages/stages.hpp"
 
@@ -14,6 +15,11 @@ Status PreprocessStage::process(ShaderJob& job) const {
     if (!why.empty()) {
       return make_error(Error::Kind::bad_input, job.describe(),
                         why + "; build it for the other targets, or with a smaller kernel");
+    }
+    const std::string layout = layout_unsupported(map_layout(job.variant->keys), job.target);
+    if (!layout.empty()) {
+      return make_error(Error::Kind::bad_input, job.describe(),
+                        layout + "; build it for the other targets");
     }
   }
   const std::string header = variant_header(job.variant, job.target, job.map_encoding);

@@ -40,6 +40,19 @@ const char* gradient_construct(spv::Op op) {
   }
 }
 
+// Whether `id` is a constant zero: a scalar, a null or a vector of zeros.
+bool is_zero_constant(const SpirvModule& m, std::uint32_t id) {
+  const SpvInstruction* value = m.def(id);
+  if (!value) return false;
+  if (value->op == spv::OpConstantNull) return true;
+  if (value->op == spv::OpConstant) return value->operand(0) == 0;
+  if (value->op != spv::OpConstantComposite) return false;
+  for (std::size_t k = 0; k < value->operand_count(); ++k) {
+    if (!is_zero_constant(m, value->operand(k))) return false;
+  }
+  return true;
+}
+
 // Sampling other than SampleLevel and SampleCmpLevelZero; nullptr when fine.
 const char* sampling_construct(const SpirvModule& m, const SpvInstruction& in) {
   // The image-operands mask follows the coordinate (and the depth reference).
@@ -64,7 +77,13 @@ const char* sampling_construct(const SpirvModule& m, const SpvInstruction& in) {
       return nullptr;
   }
   const std::uint32_t operands = in.operand(mask);
-  if (operands & spv::ImageOperandsGradMask) return "gradient sampling (SampleGrad)";
+  if (operands & spv::ImageOperandsGradMask) {
+    // A comparison with zero gradients is level 0: GLSL's only way to say
+    // textureLod on a sampler2DArrayShadow, SampleCmpLevelZero in HLSL.
+    const bool level_zero = mask == 3 && is_zero_constant(m, in.operand(mask + 1)) &&
+                            is_zero_constant(m, in.operand(mask + 2));
+    if (!level_zero) return "gradient sampling (SampleGrad)";
+  }
   if (mask == 3 && (operands & spv::ImageOperandsLodMask)) {
     // The level follows the mask; SampleCmpLevelZero has no other level.
     const SpvInstruction* lod = m.def(in.operand(mask + 1));

@@ -75,6 +75,7 @@ struct D3D11Api {
   static constexpr auto rtv_dimension_texture2d = D3D11_RTV_DIMENSION_TEXTURE2D;
   static constexpr auto dsv_dimension_texture2d = D3D11_DSV_DIMENSION_TEXTURE2D;
   static constexpr auto srv_dimension_texture2d = D3D11_SRV_DIMENSION_TEXTURE2D;
+  static constexpr auto srv_dimension_texture2darray = D3D11_SRV_DIMENSION_TEXTURE2DARRAY;
   static constexpr auto input_per_vertex_data = D3D11_INPUT_PER_VERTEX_DATA;
   static constexpr auto filter_min_mag_mip_point = D3D11_FILTER_MIN_MAG_MIP_POINT;
   static constexpr auto filter_min_mag_linear_mip_point = D3D11_FILTER_MIN_MAG_LINEAR_MIP_POINT;

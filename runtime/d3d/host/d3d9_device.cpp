@@ -203,6 +203,7 @@ std::string D3d9Device::create_texture(int id, const TextureDesc& desc) {
     return "texture" + what +
            ": allowed formats D3DFMT_R32F, D3DFMT_G32R32F, D3DFMT_A32B32G32R32F, D3DFMT_D24X8";
   }
+  if (desc.layers != 0) return "texture" + what + ": Direct3D 9 has no texture arrays";
   const bool depth = desc.usage == Usage::depth;
   if (depth != (format->channels == 0) || desc.levels < 1 || (depth && desc.levels != 1) ||
       desc.width < 1 || desc.height < 1) {

@@ -38,6 +38,7 @@ struct TextureDesc {
   int height = 0;
   int levels = 1;  // every level is created; level l is max(1, size >> l)
   Usage usage = Usage::input;
+  int layers = 0;  // 0: a 2D texture; n: a 2D array of n layers (no Direct3D 9)
 };
 
 // The reflection's sampler state (shader_contract.hpp's SamplerState).
@@ -114,7 +115,8 @@ class Device {
   virtual std::string description() const = 0;
   virtual std::string create_texture(int id, const TextureDesc& desc) = 0;
   // `texels`: the level's rows top first, each texel's channels in
-  // R, G, B, A order as 32-bit floats (D3DFMT_A32B32G32R32F too).
+  // R, G, B, A order as 32-bit floats (D3DFMT_A32B32G32R32F too); an
+  // array's layers one after another.
   virtual std::string upload(int id, int level, const std::vector<float>& texels) = 0;
   virtual std::string create_buffer(int id, const std::vector<float>& data) = 0;
   virtual std::string create_shader(int id, Stage stage,

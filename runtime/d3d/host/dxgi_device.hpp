@@ -21,11 +21,13 @@
 
 #include <wrl/client.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -101,10 +103,10 @@ class DxgiDevice final : public Device {
   std::string make_texture(Texture& t, const typename Api::SubresourceData* data, int id);
   std::string make_staging(const Texture& t, int level, UINT cpu_access, ComPtr<Texture2D>& staging,
                            int id);
-  // Copies level `level` of `t` to a staging texture, maps it and calls
-  // use(data, row pitch) while mapped.
+  // Copies level `level` of `t`'s layer `layer` to a staging texture, maps
+  // it and calls use(data, row pitch) while mapped.
   template <typename Use>
-  std::string with_staged(const Texture& t, int level, int id, Use use);
+  std::string with_staged(const Texture& t, int level, int layer, int id, Use use);
   // How far a staged D24 texel's depth lies from bit 0 (read_unorm_rows()).
   std::string d24_depth_shift(unsigned& shift);
   std::string find_level(int id, int level, Texture*& t);
@@ -175,7 +177,7 @@ std::string DxgiDevice<Api>::make_texture(Texture& t, const typename Api::Subres
   desc.Width = static_cast<UINT>(t.desc.width);
   desc.Height = static_cast<UINT>(t.desc.height);
   desc.MipLevels = static_cast<UINT>(t.desc.levels);
-  desc.ArraySize = 1;
+  desc.ArraySize = static_cast<UINT>(std::max(1, t.desc.layers));
   desc.Format = t.format.format;
   desc.SampleDesc.Count = 1;
   desc.Usage = Api::usage_default;
@@ -255,13 +257,21 @@ std::string DxgiDevice<Api>::upload(int id, int level, const std::vector<float>&
   }
   const UINT row = level_size(t->desc.width, level) * t->format.bytes;
   const UINT rows = level_size(t->desc.height, level);
-  if (texels.size() * sizeof(float) != std::size_t{row} * rows) {
+  const auto layers = static_cast<UINT>(std::max(1, t->desc.layers));
+  const std::size_t layer_floats = std::size_t{row} / sizeof(float) * rows;
+  if (texels.size() != layer_floats * layers) {
     return "level " + std::to_string(level) + " of " + texture_name(id) + " takes " +
-           std::to_string(row / sizeof(float) * rows) + " floats, not " +
-           std::to_string(texels.size());
+           std::to_string(layer_floats * layers) + " floats, not " + std::to_string(texels.size());
   }
+  // Subresource level + layer * levels: each layer's level.
+  const auto subresource = [&](UINT layer) {
+    return static_cast<UINT>(level) + layer * static_cast<UINT>(t->desc.levels);
+  };
   if (t->desc.usage != Usage::depth) {
-    context_->UpdateSubresource(t->texture.Get(), level, nullptr, texels.data(), row, 0);
+    for (UINT layer = 0; layer < layers; ++layer) {
+      context_->UpdateSubresource(t->texture.Get(), subresource(layer), nullptr,
+                                  texels.data() + layer * layer_floats, row, 0);
+    }
     return {};
   }
   // UpdateSubresource may not write a depth-stencil resource; a copy from a
@@ -269,11 +279,14 @@ std::string DxgiDevice<Api>::upload(int id, int level, const std::vector<float>&
   // write one but the pipeline and its creation, so the map is made anew
   // with the texels as its initial data (it has one level).
   if (!depth_copies_) {
-    const typename Api::SubresourceData data{texels.data(), row, 0};
+    std::vector<typename Api::SubresourceData> data;
+    for (UINT layer = 0; layer < layers; ++layer) {
+      data.push_back({texels.data() + layer * layer_floats, row, 0});
+    }
     Texture fresh;
     fresh.desc = t->desc;
     fresh.format = t->format;
-    if (std::string error = make_texture(fresh, &data, id); !error.empty()) return error;
+    if (std::string error = make_texture(fresh, data.data(), id); !error.empty()) return error;
     *t = std::move(fresh);
     return {};
   }
@@ -282,13 +295,17 @@ std::string DxgiDevice<Api>::upload(int id, int level, const std::vector<float>&
       !error.empty()) {
     return error;
   }
-  typename Api::Mapped mapped{};
-  const HRESULT hr = Api::map(context_.Get(), staging.Get(), Api::map_write, mapped);
-  if (FAILED(hr)) return failed("Map (staging)", hr, texture_name(id));
-  write_rows(texels, row, mapped.pData, mapped.RowPitch);
-  Api::unmap(context_.Get(), staging.Get());
-  // A depth-stencil copy takes the whole subresource: no box.
-  context_->CopySubresourceRegion(t->texture.Get(), level, 0, 0, 0, staging.Get(), 0, nullptr);
+  for (UINT layer = 0; layer < layers; ++layer) {
+    typename Api::Mapped mapped{};
+    const HRESULT hr = Api::map(context_.Get(), staging.Get(), Api::map_write, mapped);
+    if (FAILED(hr)) return failed("Map (staging)", hr, texture_name(id));
+    write_rows(std::span(texels).subspan(layer * layer_floats, layer_floats), row, mapped.pData,
+               mapped.RowPitch);
+    Api::unmap(context_.Get(), staging.Get());
+    // A depth-stencil copy takes the whole subresource: no box.
+    context_->CopySubresourceRegion(t->texture.Get(), subresource(layer), 0, 0, 0, staging.Get(), 0,
+                                    nullptr);
+  }
   return {};
 }
 
@@ -372,8 +389,14 @@ std::string DxgiDevice<Api>::resource_view(Texture& t, int id, const std::string
   if (!cached) {
     typename Api::ShaderResourceViewDesc desc{};
     desc.Format = format.format;
-    desc.ViewDimension = Api::srv_dimension_texture2d;
-    desc.Texture2D.MipLevels = static_cast<UINT>(t.desc.levels);
+    if (t.desc.layers > 0) {
+      desc.ViewDimension = Api::srv_dimension_texture2darray;
+      desc.Texture2DArray.MipLevels = static_cast<UINT>(t.desc.levels);
+      desc.Texture2DArray.ArraySize = static_cast<UINT>(t.desc.layers);
+    } else {
+      desc.ViewDimension = Api::srv_dimension_texture2d;
+      desc.Texture2D.MipLevels = static_cast<UINT>(t.desc.levels);
+    }
     const HRESULT hr = device_->CreateShaderResourceView(t.texture.Get(), &desc, &cached);
     if (FAILED(hr)) {
       t.views.erase(format.format);
@@ -619,13 +642,14 @@ std::string DxgiDevice<Api>::copy(int src, int src_level, int dst, int dst_level
 
 template <typename Api>
 template <typename Use>
-std::string DxgiDevice<Api>::with_staged(const Texture& t, int level, int id, Use use) {
+std::string DxgiDevice<Api>::with_staged(const Texture& t, int level, int layer, int id, Use use) {
   ComPtr<Texture2D> staging;
   if (std::string error = make_staging(t, level, Api::cpu_access_read, staging, id);
       !error.empty()) {
     return error;
   }
-  context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, t.texture.Get(), level, nullptr);
+  const UINT subresource = static_cast<UINT>(level + layer * t.desc.levels);
+  context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, t.texture.Get(), subresource, nullptr);
   typename Api::Mapped mapped{};
   const HRESULT hr = Api::map(context_.Get(), staging.Get(), Api::map_read, mapped);
   if (FAILED(hr)) return failed("Map (staging)", hr, texture_name(id));
@@ -650,7 +674,7 @@ std::string DxgiDevice<Api>::d24_depth_shift(unsigned& shift) {
     std::uint32_t texel = 0;
     if (error.empty()) {
       context_->ClearDepthStencilView(view, Api::clear_depth, 0.5f, 0);
-      error = with_staged(probe, 0, kProbe,
+      error = with_staged(probe, 0, 0, kProbe,
                           [&](const void* data, UINT) { std::memcpy(&texel, data, sizeof texel); });
     }
     if (!error.empty()) return error + " (the D24 layout probe)";
@@ -680,10 +704,15 @@ std::vector<float> DxgiDevice<Api>::read(int id, int level, std::string& error) 
   const UINT width = level_size(t->desc.width, level);
   const UINT rows = level_size(t->desc.height, level);
   std::vector<float> texels;
-  error = with_staged(*t, level, id, [&](const void* data, UINT pitch) {
-    texels = t->format.unorm_bits ? read_unorm_rows(data, pitch, width, rows, t->format, shift)
-                                  : read_rows(data, pitch, width * t->format.bytes, rows);
-  });
+  // An array's layers one after another, as upload() takes them.
+  for (int layer = 0; layer < std::max(1, t->desc.layers) && error.empty(); ++layer) {
+    error = with_staged(*t, level, layer, id, [&](const void* data, UINT pitch) {
+      const std::vector<float> rows_read =
+          t->format.unorm_bits ? read_unorm_rows(data, pitch, width, rows, t->format, shift)
+                               : read_rows(data, pitch, width * t->format.bytes, rows);
+      texels.insert(texels.end(), rows_read.begin(), rows_read.end());
+    });
+  }
   return texels;
 }
 

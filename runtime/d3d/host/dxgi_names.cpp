@@ -113,6 +113,11 @@ std::string check_texture(const TextureDesc& desc, DxgiFormat& format) {
   }
   // The depth-stencil view writes level 0 only.
   if (desc.usage == Usage::depth && desc.levels != 1) return "a depth texture has one level";
+  // Arrays are uploaded and sampled (map_layout array), never drawn into.
+  if (desc.layers < 0 || (desc.layers > 0 && desc.usage == Usage::target)) {
+    return std::to_string(desc.layers) + " layers (allowed: 0, a 2D texture; or more for an " +
+           "input or depth array, which is uploaded, not drawn into)";
+  }
   return {};
 }
 
@@ -243,7 +248,7 @@ std::vector<float> read_unorm_rows(const void* data, UINT pitch, UINT width, UIN
   return texels;
 }
 
-void write_rows(const std::vector<float>& texels, UINT row_bytes, void* data, UINT pitch) {
+void write_rows(std::span<const float> texels, UINT row_bytes, void* data, UINT pitch) {
   auto* bytes = static_cast<unsigned char*>(data);
   const std::size_t rows = texels.size() * sizeof(float) / row_bytes;
   for (std::size_t row = 0; row < rows; ++row) {

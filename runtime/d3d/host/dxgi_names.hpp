@@ -9,6 +9,7 @@
 
 #include <compare>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -85,7 +86,7 @@ std::vector<float> read_rows(const void* data, UINT pitch, UINT row_bytes, UINT 
 std::vector<float> read_unorm_rows(const void* data, UINT pitch, UINT width, UINT rows,
                                    const DxgiFormat& format, unsigned shift);
 // The other way: `texels`' rows of `row_bytes` into mapped rows `pitch` bytes apart.
-void write_rows(const std::vector<float>& texels, UINT row_bytes, void* data, UINT pitch);
+void write_rows(std::span<const float> texels, UINT row_bytes, void* data, UINT pitch);
 
 // The adapter's description (IDXGIAdapter::GetDesc) of a Direct3D 10 or 11
 // device, as UTF-8; empty, with `error` set, if it cannot be had.

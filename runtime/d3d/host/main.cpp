@@ -4,7 +4,8 @@
 // reflection and reads the results back (docs/verification.md, "Direct3D
 // runtimes"). The protocol, one command a line on stdin:
 //
-//   texture ID FORMAT WIDTH HEIGHT LEVELS target|depth|input
+//   texture ID FORMAT WIDTH HEIGHT LEVELS target|depth|input LAYERS
+//                                 LAYERS 0: a 2D texture, else a 2D array
 //   upload ID LEVEL PATH          raw float32 texels (device.hpp's upload())
 //   buffer ID PATH                raw float32 vertices
 //   shader ID vs|ps PATH          compiled bytecode (.d3dbc, .dxbc)
@@ -16,7 +17,7 @@
 //     texture REG ID [VIEW_FORMAT]
 //     sampler REG FILTER MIP_FILTER ADDRESS compare|compare_greater|plain
 //   copy SRC SRC_LEVEL DST DST_LEVEL
-//   read ID LEVEL PATH            raw float32 texels
+//   read ID LEVEL PATH            raw float32 texels, an array's layers one after another
 //   release ID
 //   sync TAG                      answers "ok TAG", or "error TAG <message>"
 //                                 with the first error since the last sync
@@ -182,7 +183,7 @@ std::string run_command(Device& device, const std::string& line, std::istream& i
     int id = 0;
     TextureDesc desc;
     std::string usage;
-    in >> id >> desc.format >> desc.width >> desc.height >> desc.levels >> usage;
+    in >> id >> desc.format >> desc.width >> desc.height >> desc.levels >> usage >> desc.layers;
     if (in.fail()) return "malformed '" + line + "'";
     desc.usage = parse_usage(usage, error);
     if (!error.empty()) return error;

@@ -133,21 +133,29 @@ Result<runtime::Texture> D3dDevice::upload(TextureId as, const FloatImage& image
       break;
     case TextureId::shadow_depth:
       // A map as the depth pass would have drawn it in D32 (Direct3D 9's
-      // R32F), kept on the host like one: an engine's atlas, say.
+      // R32F), kept on the host like one: an engine's atlas, say, or its
+      // array of maps (Direct3D 10 and 11).
       PENUMBRA_TRY(check_normalized_depth(image));
       held.channels = 1;
       texels = image.data;
       if (job_.runtime() == D3dRuntime::d3d9) {
+        if (image.layers > 0) {
+          return make_error(Error::Kind::bad_input, "shadow map",
+                            "Direct3D 9 has no texture arrays; an array of " +
+                                std::to_string(image.layers) + " layers cannot be uploaded");
+        }
         held.format = api_format(target, TextureFormat::r32_float);
         held.id = job_.texture(held.format, image.width, image.height, 1, "input");
       } else {
         std::tie(held.format, held.view_format) =
             map_formats(job_.runtime(), DepthFormat::d32_float);
-        held.id = job_.texture(held.format, image.width, image.height, 1, "depth");
+        held.layers = image.layers;
+        held.id =
+            job_.texture(held.format, image.width, image.layer_height(), 1, "depth", image.layers);
       }
       job_.keep(held.id);
       job_.upload(held.id, 0, texels);
-      return hold(std::move(held), image.width, image.height);
+      return hold(std::move(held), image.width, image.layer_height());
     default:
       return make_error(Error::Kind::bad_input, std::string(describe(as).name),
                         "the Direct3D runtime uploads maps, receivers, a scene colour and a "
@@ -244,7 +252,8 @@ Result<std::vector<FloatImage>> D3dDevice::read_all(std::span<const runtime::Tex
   std::vector<std::size_t> reads;
   for (runtime::Texture texture : textures) {
     PENUMBRA_TRY_ASSIGN(const Held held, find(texture, "readback"));
-    reads.push_back(job_.read(held.id, 0, texture.width, texture.height, held.channels));
+    reads.push_back(
+        job_.read(held.id, 0, texture.width, texture.height, held.channels, held.layers));
   }
   PENUMBRA_TRY(job_.run());
   std::vector<FloatImage> images;

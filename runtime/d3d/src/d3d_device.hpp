@@ -46,6 +46,7 @@ class D3dDevice final : public runtime::Device {
     std::string view_format;
     int channels = 0;
     int levels = 1;
+    int layers = 0;  // a 2D array's (an engine's array of maps), else 0
   };
 
   runtime::Texture hold(Held held, int width, int height);

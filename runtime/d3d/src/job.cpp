@@ -37,12 +37,12 @@ std::filesystem::path Job::data_file() {
   return folder_ / (std::to_string(files_++) + ".f32");
 }
 
-int Job::texture(std::string_view format, int width, int height, int levels,
-                 std::string_view usage) {
+int Job::texture(std::string_view format, int width, int height, int levels, std::string_view usage,
+                 int layers) {
   const int id = engine_.next_id();
   commands_ += "texture " + std::to_string(id) + " " + std::string(format) + " " +
                std::to_string(width) + " " + std::to_string(height) + " " + std::to_string(levels) +
-               " " + std::string(usage) + "\n";
+               " " + std::string(usage) + " " + std::to_string(layers) + "\n";
   own_.push_back(id);
   return id;
 }
@@ -106,11 +106,13 @@ void Job::copy(int source, int source_level, int destination, int destination_le
                std::to_string(destination) + " " + std::to_string(destination_level) + "\n";
 }
 
-std::size_t Job::read(int id, int level, int width, int height, int channels) {
+std::size_t Job::read(int id, int level, int width, int height, int channels, int layers) {
   const auto file = data_file();
   commands_ +=
       "read " + std::to_string(id) + " " + std::to_string(level) + " " + file.string() + "\n";
-  reads_.push_back({file, FloatImage(width, height, channels)});
+  FloatImage image(width, height * std::max(1, layers), channels);
+  image.layers = layers;
+  reads_.push_back({file, std::move(image)});
   return reads_.size() - 1;
 }
 

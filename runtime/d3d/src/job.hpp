@@ -24,8 +24,10 @@ class Job {
 
   D3dRuntime runtime() const { return engine_.runtime(); }
 
-  // A texture (main.cpp's `texture` command); `usage` target, depth or input.
-  int texture(std::string_view format, int width, int height, int levels, std::string_view usage);
+  // A texture (main.cpp's `texture` command); `usage` target, depth or input;
+  // `layers` 0 for a 2D texture, else a 2D array of that many layers.
+  int texture(std::string_view format, int width, int height, int levels, std::string_view usage,
+              int layers = 0);
   // Leaves texture `id` on the host after the job (a map the engine keeps).
   void keep(int id);
   void upload(int id, int level, const std::vector<float>& texels);
@@ -37,8 +39,9 @@ class Job {
   // Command lines as they are (a draw block).
   void append(const std::string& lines);
   void copy(int source, int source_level, int destination, int destination_level);
-  // Reads level `level` back after run(): take(returned index).
-  std::size_t read(int id, int level, int width, int height, int channels);
+  // Reads level `level` back after run(): take(returned index); an array's
+  // `layers` stacked (FloatImage::layers).
+  std::size_t read(int id, int level, int width, int height, int channels, int layers = 0);
 
   // Sends the commands written since the last run and waits for the host's
   // answer; the host's error names the failing command.

@@ -48,7 +48,7 @@ Result<runtime::Texture> GlDevice::upload_map(const FloatImage& normalized_depth
   Held held;
   held.image = std::make_unique<FloatImage>(normalized_depth);
   held.depth = format;
-  return hold(std::move(held), normalized_depth.width, normalized_depth.height);
+  return hold(std::move(held), normalized_depth.width, normalized_depth.layer_height());
 }
 
 Result<runtime::Texture> GlDevice::upload(TextureId as, const FloatImage& image) {

@@ -62,10 +62,13 @@ using VertexArray = Name<DeleteVertexArray>;
 using Sampler = Name<DeleteSampler>;
 
 // New objects of each kind (glCreate*: created and initialized at once).
-inline Texture create_texture_2d() {
+inline Texture create_texture(GLenum target) {
   GLuint name = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &name);
+  glCreateTextures(target, 1, &name);
   return Texture(name);
+}
+inline Texture create_texture_2d() {
+  return create_texture(GL_TEXTURE_2D);
 }
 inline Buffer create_buffer() {
   GLuint name = 0;

@@ -72,6 +72,8 @@ constexpr GlslType kTypes[] = {
     {"vec4", GL_FLOAT_VEC4},
     {"sampler2D", GL_SAMPLER_2D},
     {"sampler2DShadow", GL_SAMPLER_2D_SHADOW},
+    {"sampler2DArray", GL_SAMPLER_2D_ARRAY},
+    {"sampler2DArrayShadow", GL_SAMPLER_2D_ARRAY_SHADOW},
 };
 
 std::string type_name(GLenum type) {

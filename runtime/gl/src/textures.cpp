@@ -67,6 +67,17 @@ Status check_scene_colour(const FloatImage& scene_colour, const FloatImage& rece
 Result<Texture> upload(const FloatImage& image, const TexelFormat& format,
                        const std::string& what) {
   const std::vector<float> texels = padded(image, format.channels);
+  if (image.layers > 0) {
+    // The layers lie one after another, as glTextureSubImage3D reads them.
+    const int height = image.layer_height();
+    Texture texture = create_texture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(texture.get(), 1, format.internal_format, image.width, height, image.layers);
+    glTextureSubImage3D(texture.get(), 0, 0, 0, 0, image.width, height, image.layers,
+                        format.pixel_format, GL_FLOAT, texels.data());
+    PENUMBRA_TRY(check_gl("uploading " + what + " (" + std::string(format.name()) + ", " +
+                          std::to_string(image.layers) + " layers)"));
+    return texture;
+  }
   Texture texture = create_texture_2d();
   glTextureStorage2D(texture.get(), 1, format.internal_format, image.width, image.height);
   glTextureSubImage2D(texture.get(), 0, 0, 0, image.width, image.height, format.pixel_format,

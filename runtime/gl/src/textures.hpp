@@ -26,8 +26,8 @@ Status check_scene_colour(const FloatImage& scene_colour, const FloatImage& rece
 
 // One immutable level in `format` holding `image`, which has at most the
 // format's channels; channels the image lacks are zero (receivers' (u, v,
-// z_r) in GL_RGBA32F). Errors (device): a GL error. `what` names it in
-// errors.
+// z_r) in GL_RGBA32F). An image with layers is a GL_TEXTURE_2D_ARRAY. Errors (device): a GL error.
+// `what` names it in errors.
 Result<Texture> upload(const FloatImage& image, const TexelFormat& format, const std::string& what);
 
 // One level in `format`, a pass's colour target.

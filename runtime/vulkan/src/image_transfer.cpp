@@ -15,19 +15,21 @@ namespace {
 
 VkBufferImageCopy image_region(const vk::Image& image, std::uint32_t level, VkExtent2D extent) {
   VkBufferImageCopy region{};
-  // Zero row length and height: the buffer is tightly packed, row 0 first.
-  region.imageSubresource = {image.desc().aspect, level, 0, 1};
+  // Zero row length and height: the buffer is tightly packed, row 0 first,
+  // layer after layer.
+  region.imageSubresource = {image.desc().aspect, level, 0, image.desc().layer_count()};
   region.imageExtent = {extent.width, extent.height, 1};
   return region;
 }
 
 // `bytes_per_texel` bytes of each texel in [0, extent) of level `level`,
-// tightly packed, row 0 first.
+// tightly packed, row 0 first, layer after layer.
 Result<std::vector<std::byte>> read_bytes(const vk::Device& device, vk::CommandContext& commands,
                                           const vk::Image& image, VkImageLayout layout,
                                           std::uint32_t level, VkExtent2D extent,
                                           std::size_t bytes_per_texel, std::string_view what) {
-  std::vector<std::byte> bytes(std::size_t{extent.width} * extent.height * bytes_per_texel);
+  std::vector<std::byte> bytes(std::size_t{extent.width} * extent.height *
+                               image.desc().layer_count() * bytes_per_texel);
   auto staging = vk::Buffer::create(device, bytes.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                     "the readback buffer for " + std::string(what));
   if (!staging) return staging.error();

@@ -14,15 +14,15 @@
 
 namespace penumbra::detail {
 
-// Copies `texels` (tightly packed 32-bit floats, row 0 first, exactly the
-// image's size) into `image`, whose old contents are discarded, and leaves it
+// Copies `texels` (tightly packed 32-bit floats, row 0 first, layer after
+// layer, exactly the image's size) into `image`, whose old contents are discarded, and leaves it
 // in `final_layout`. `what` names the image in errors.
 Status upload_image(const vk::Device& device, vk::CommandContext& commands, const vk::Image& image,
                     std::span<const float> texels, VkImageLayout final_layout,
                     std::string_view what);
 
 // Reads `image`'s level 0, which is in `layout` and is left in it, as
-// `components` floats per texel, row 0 first.
+// `components` floats per texel, row 0 first, layer after layer.
 Result<std::vector<float>> read_image(const vk::Device& device, vk::CommandContext& commands,
                                       const vk::Image& image, VkImageLayout layout,
                                       std::uint32_t components, std::string_view what);

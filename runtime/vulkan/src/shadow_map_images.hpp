@@ -40,9 +40,11 @@ struct ShadowMapImages {
 
 // Both images, uninitialized (layout UNDEFINED), usable as attachments,
 // sampled images and transfer source/destination; the depth image in
-// `depth_format`, an Error where the device cannot use it so.
+// `depth_format`, an Error where the device cannot use it so. With `layers`
+// (map_layout array), both are 2D arrays of that many layers, to be
+// uploaded and sampled, not drawn into.
 Result<std::unique_ptr<ShadowMapImages>> create_shadow_map_images(
     const Context& context, int width, int height,
-    DepthFormat depth_format = DepthFormat::d32_float);
+    DepthFormat depth_format = DepthFormat::d32_float, int layers = 0);
 
 }  // namespace penumbra::detail

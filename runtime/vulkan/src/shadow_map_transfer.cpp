@@ -10,7 +10,9 @@ namespace penumbra::detail {
 Result<std::unique_ptr<ShadowMapImages>> upload_shadow_map(Context& context,
                                                            const FloatImage& normalized_depth) {
   PENUMBRA_TRY(check_normalized_depth(normalized_depth));
-  auto images = create_shadow_map_images(context, normalized_depth.width, normalized_depth.height);
+  auto images =
+      create_shadow_map_images(context, normalized_depth.width, normalized_depth.layer_height(),
+                               DepthFormat::d32_float, normalized_depth.layers);
   if (!images) return images.error();
   PENUMBRA_TRY(upload_image(*context.device, *context.commands, (*images)->depth,
                             normalized_depth.data, kMapDepthLayout,
@@ -29,7 +31,10 @@ Result<FloatImage> read_map_image(Context& context, const vk::Image& image, VkIm
                     ? read_depth_image(*context.device, *context.commands, image, layout, what)
                     : read_image(*context.device, *context.commands, image, layout, 1, what);
   if (!texels) return texels.error();
-  FloatImage out(static_cast<int>(image.desc().width), static_cast<int>(image.desc().height), 1);
+  const auto layers = static_cast<int>(image.desc().layers);
+  FloatImage out(static_cast<int>(image.desc().width),
+                 static_cast<int>(image.desc().height * image.desc().layer_count()), 1);
+  out.layers = layers;
   out.data = std::move(*texels);
   return out;
 }

@@ -116,7 +116,7 @@ Result<runtime::Texture> VulkanDevice::upload(TextureId as, const FloatImage& im
       return make_error(Error::Kind::bad_input, std::string(describe(as).name),
                         "is drawn by a pass or filled from the reflection, not uploaded");
   }
-  return hold(std::move(held), image.width, image.height);
+  return hold(std::move(held), image.width, image.layer_height());
 }
 
 Status VulkanDevice::offer(const runtime::Draw& draw, PassResources& resources) const {

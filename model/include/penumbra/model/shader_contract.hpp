@@ -187,8 +187,9 @@ const TechniqueDescription& describe(Technique technique);
 // integer_ops technique on a target without integers (hlsl_dx9).
 bool can_emit(Technique technique, Target target);
 // Whether `variant` can be built for `target`: its technique can be emitted
-// there and keeps its promise there (minmax_pcf's exact count:
-// inexact_walk()). A manifest asking otherwise is refused.
+// there, keeps its promise there (minmax_pcf's exact count: inexact_walk())
+// and its map layout is read there (layout_unsupported()). A manifest asking
+// otherwise is refused.
 bool can_emit(const Variant& variant, Target target);
 
 // True when `variant` is built with `pass`: its technique runs it and one of

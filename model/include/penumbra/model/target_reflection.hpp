@@ -63,8 +63,8 @@ struct SamplerBinding {
 };
 
 struct TextureBinding {
-  std::string name;                      // the variable, as the API reports it: "shadow_cmp"
-  std::string type;                      // "sampler2D", "sampler2DShadow", "Texture2D"
+  std::string name;  // the variable, as the API reports it: "shadow_cmp"
+  std::string type;  // "sampler2D", "sampler2DShadow", "Texture2D"; arrays: "sampler2DArray", ...
   std::optional<std::uint32_t> set;      // spirv
   std::optional<std::uint32_t> binding;  // spirv, glsl450
   std::string reg;                       // hlsl_dx10: "t2"; hlsl_dx9: "s1"

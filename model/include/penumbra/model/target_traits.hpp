@@ -42,6 +42,9 @@ struct TargetTraits {
   // Has integers and bit operations (false for hlsl_dx9: Shader Model 3
   // computes in floats only), which bitmask_backprojection needs.
   bool integer_ops = true;
+  // Has 2D array textures (false for hlsl_dx9: Direct3D 9 has none), which
+  // map_layout array reads.
+  bool texture_arrays = true;
 };
 
 TargetTraits traits(Target target);

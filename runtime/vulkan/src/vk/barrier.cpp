@@ -37,7 +37,8 @@ void image_barrier(VkCommandBuffer commands, const Image& image, VkImageLayout f
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image.get();
-  barrier.subresourceRange = {image.desc().aspect, 0, image.desc().mip_levels, 0, 1};
+  barrier.subresourceRange = {image.desc().aspect, 0, image.desc().mip_levels, 0,
+                              image.desc().layer_count()};
   vkCmdPipelineBarrier(commands, before.stages, after.stages, 0, 0, nullptr, 0, nullptr, 1,
                        &barrier);
 }

@@ -10,16 +10,18 @@ namespace penumbra::vk {
 Result<Image> Image::create(const Device& device, const ImageDesc& desc, std::string_view what) {
   const std::string levels =
       desc.mip_levels > 1 ? ", " + std::to_string(desc.mip_levels) + " mip levels" : "";
+  const std::string layers =
+      desc.layers > 0 ? ", " + std::to_string(desc.layers) + " array layers" : "";
   const std::string name = std::string(what) + " (" + std::to_string(desc.width) + "x" +
                            std::to_string(desc.height) + " " + format_name(desc.format) + levels +
-                           ")";
+                           layers + ")";
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc.format;
   info.extent = {desc.width, desc.height, 1};
   info.mipLevels = desc.mip_levels;
-  info.arrayLayers = 1;
+  info.arrayLayers = desc.layer_count();
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = desc.usage;
@@ -40,9 +42,9 @@ Result<Image> Image::create(const Device& device, const ImageDesc& desc, std::st
   VkImageViewCreateInfo view_info{};
   view_info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
   view_info.image = raw_image;
-  view_info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  view_info.viewType = desc.layers > 0 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view_info.format = desc.format;
-  view_info.subresourceRange = {desc.aspect, 0, desc.mip_levels, 0, 1};
+  view_info.subresourceRange = {desc.aspect, 0, desc.mip_levels, 0, desc.layer_count()};
   VkImageView raw_view = VK_NULL_HANDLE;
   PENUMBRA_TRY(check(vkCreateImageView(device.get(), &view_info, nullptr, &raw_view),
                      "vkCreateImageView", "creating a view of " + name));

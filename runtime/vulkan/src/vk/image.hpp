@@ -1,6 +1,6 @@
-// Image: a 2D VkImage in device-local memory with one or more mip levels, and
-// a view of all of them. Layouts are managed by whoever records commands on
-// it, for all levels at once.
+// Image: a 2D VkImage (or 2D array) in device-local memory with one or more
+// mip levels, and a view of all of them. Layouts are managed by whoever
+// records commands on it, for all levels and layers at once.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -22,6 +22,10 @@ struct ImageDesc {
   VkImageUsageFlags usage = 0;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;  // of the view and of transfers
   std::uint32_t mip_levels = 1;  // level m is max(1, width >> m) x max(1, height >> m)
+  std::uint32_t layers = 0;      // 0: a 2D image and view; n: n layers, an array view
+
+  // The image's array layers: 1 for a 2D image.
+  std::uint32_t layer_count() const { return layers > 0 ? layers : 1; }
 };
 
 class Image {

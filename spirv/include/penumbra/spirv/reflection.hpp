@@ -47,6 +47,7 @@ struct SampledImage {
   std::uint32_t set = 0;
   std::uint32_t binding = 0;
   bool comparison = false;  // sampler2DShadow (the image type has Depth = 1)
+  bool arrayed = false;     // sampler2DArray, sampler2DArrayShadow (Arrayed = 1)
   bool operator==(const SampledImage&) const = default;
 };
 
@@ -58,6 +59,7 @@ struct SeparateImage {
   // Depth = 1: a depth image. glslang's HLSL front end marks a Texture2D so
   // when it is read with SampleCmp.
   bool depth = false;
+  bool arrayed = false;  // Texture2DArray (Arrayed = 1)
   bool operator==(const SeparateImage&) const = default;
 };
 

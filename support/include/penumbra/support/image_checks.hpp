@@ -10,7 +10,8 @@
 namespace penumbra {
 
 // Errors (bad_input, "shadow map"): not one channel of width * height values,
-// or a texel that is not finite depth in [0, 1].
+// layers that do not stack in its height, or a texel that is not finite
+// depth in [0, 1].
 Status check_normalized_depth(const FloatImage& image);
 
 // Errors (bad_input, "receivers"): not 3 or 4 channels (u, v, z_r) of

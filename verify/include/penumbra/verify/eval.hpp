@@ -31,6 +31,11 @@ struct EvalInputs {
   // tile, where `shadow_map` is an atlas of several lights' maps (an atlas
   // variant's, map_layout atlas). None: the whole map.
   std::optional<std::array<int, 4>> map_tile;
+  // Layer, count: `shadow_map` stacks the count layers of a 2D array
+  // texture, each of an equal share of its rows, layer 0 first, and the
+  // light's is that layer (an array variant's, map_layout array). None: an
+  // array variant's map is the array's one layer.
+  std::optional<std::array<int, 2>> map_layer;
 };
 
 // The light options' range (lengths in light-view units; the bias and the
@@ -40,8 +45,8 @@ inline constexpr double kMinLightLength = 1e-6;  // frustum width, near plane, f
 inline constexpr double kMaxLightLength = 1e6;   // and light size (from 0), |bias|
 
 // Checks the images (channels, sizes, no negative depth; a stored map's
-// values in [0, 1], its far plane beyond the near one; a tile inside the
-// map) and the light options (finite, in range); errors name the argument.
+// values in [0, 1], its far plane beyond the near one; a tile or a layer
+// inside the map) and the light options (finite, in range); errors name the argument.
 // NaN and infinite linear depths are allowed: every technique defines them
 // (docs/robustness.md).
 Status check_eval_inputs(const EvalInputs& inputs);
