@@ -150,8 +150,9 @@ bool bind_function_inputs(GLuint program, const nlohmann::json& reflection, GLui
   GLuint unit = 0;
   for (const nlohmann::json& texture : frag.value("textures", nlohmann::json::array())) {
     const std::string name = texture.at("name");
+    const bool array = texture.at("type").get<std::string>().find("Array") != std::string::npos;
     glActiveTexture(GL_TEXTURE0 + unit);
-    glBindTexture(GL_TEXTURE_2D, map);
+    glBindTexture(array ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, map);
     glBindSampler(unit, sampler_object(texture.at("sampler")));
     glUniform1i(glGetUniformLocation(program, name.c_str()), GLint(unit));
     ++unit;
@@ -189,17 +190,27 @@ bool bind_function_inputs(GLuint program, const nlohmann::json& reflection, GLui
   return true;
 }
 
-GLuint depth_target(int width, int height) {
+GLuint depth_target(int width, int height, int layers) {
+  const GLenum target = layers > 0 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
   GLuint map = 0;
   glGenTextures(1, &map);
-  glBindTexture(GL_TEXTURE_2D, map);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, width, height, 0, GL_DEPTH_COMPONENT,
-               GL_FLOAT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(target, map);
+  if (layers > 0) {
+    glTexImage3D(target, 0, GL_DEPTH_COMPONENT32F, width, height, layers, 0, GL_DEPTH_COMPONENT,
+                 GL_FLOAT, nullptr);
+  } else {
+    glTexImage2D(target, 0, GL_DEPTH_COMPONENT32F, width, height, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                 nullptr);
+  }
+  glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
   GLuint framebuffer = 0;
   glGenFramebuffers(1, &framebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map, 0);
+  if (layers > 0) {
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, map, 0, 0);
+  } else {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map, 0);
+  }
   glDrawBuffer(GL_NONE);
   return map;
 }

@@ -1,4 +1,4 @@
-// What both OpenGL programs (engine_consumer_gl, engine_consumer_gl_atlas)
+// What both OpenGL programs (engine_consumer_gl, engine_consumer_gl_lights)
 // do as an engine of their own would: an OpenGL 3.3 core context, programs,
 // vertex arrays, the function form's inputs bound from its reflection, and
 // the PNG. Needs a GL context current for all but create_context() and
@@ -58,15 +58,17 @@ GLuint sampler_object(const nlohmann::json& state);
 
 // Binds the function form's textures and constants in `program` as its
 // reflection names them, ShadowParams' members from `values` by name: the
-// map on consecutive units from 0, each through a sampler object in its
-// reflected state; ShadowParams as loose uniforms (glsl330 has them; one
-// the function does not read may be gone), or as a block at binding 0.
+// map on consecutive units from 0 (a 2D array where the reflection's type
+// says so), each through a sampler object in its reflected state;
+// ShadowParams as loose uniforms (glsl330 has them; one the function does
+// not read may be gone), or as a block at binding 0.
 bool bind_function_inputs(GLuint program, const nlohmann::json& reflection, GLuint map,
                           const nlohmann::json& values, std::string& log);
 
 // A width x height GL_DEPTH_COMPONENT32F texture, one level, attached to a
 // new framebuffer left bound (no colour buffer): the engine's shadow map.
-GLuint depth_target(int width, int height);
+// With `layers`, a 2D array of that many, layer 0 attached.
+GLuint depth_target(int width, int height, int layers = 0);
 
 // A kImageSize x kImageSize RGBA8 texture attached to a new framebuffer
 // left bound: the picture. Created before the function's textures are

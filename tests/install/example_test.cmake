@@ -3,8 +3,8 @@
 # warnings are errors), runs it on the default Vulkan device (lavapipe) and
 # reads its PNG back with CHECKER (shadow_png_check.cpp); with EXPECT_GL,
 # also engine_consumer_gl (the function form in an OpenGL engine's shaders)
-# and engine_consumer_gl_atlas (two lights' maps in one atlas), whose
-# pictures must match engine_consumer's.
+# and engine_consumer_gl_lights (two lights' maps in one atlas, then in one
+# array), whose pictures must match engine_consumer's.
 # Inputs: BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR CXX_COMPILER CONFIG SANITIZE
 # CHECKER EXPECT_GL.
 include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
@@ -47,15 +47,17 @@ if(EXPECT_GL)
   endif()
   run(${CHECKER} ${WORK_DIR}/shadow_gl.png ${WORK_DIR}/shadow.png)
   message(STATUS "${run_output}")
-  # Two lights' maps as an atlas's tiles, shaded in one loop: light 0's
-  # picture is engine_consumer's.
-  run(${example}/engine_consumer_gl_atlas ${WORK_DIR}/shadow_gl_atlas.png)
-  message(STATUS "${run_output}")
-  if(NOT run_output MATCHES
-     "pcss_b16_p16_whitepaper16_perspective_atlas on .*: wrote .*shadow_gl_atlas.png")
-    message(FATAL_ERROR "install test: the OpenGL atlas example printed '${run_output}'")
-  endif()
-  run(${CHECKER} ${WORK_DIR}/shadow_gl_atlas.png ${WORK_DIR}/shadow.png)
-  message(STATUS "${run_output}")
+  # Two lights' maps as an atlas's tiles or an array's layers, shaded in one
+  # loop: light 0's picture is engine_consumer's.
+  foreach(layout atlas array)
+    run(${example}/engine_consumer_gl_lights ${layout} ${WORK_DIR}/shadow_gl_${layout}.png)
+    message(STATUS "${run_output}")
+    if(NOT run_output MATCHES
+       "pcss_b16_p16_whitepaper16_perspective_${layout} on .*: wrote .*shadow_gl_${layout}.png")
+      message(FATAL_ERROR "install test: the OpenGL ${layout} example printed '${run_output}'")
+    endif()
+    run(${CHECKER} ${WORK_DIR}/shadow_gl_${layout}.png ${WORK_DIR}/shadow.png)
+    message(STATUS "${run_output}")
+  endforeach()
 endif()
 message(STATUS "install test: the engine-consumer example passed")

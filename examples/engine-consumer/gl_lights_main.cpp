@@ -1,13 +1,15 @@
-// engine_consumer_gl_atlas [OUT.png]: engine_consumer_gl's box lit by two
-// spot lights whose maps the OpenGL engine keeps as the two tiles of one
-// atlas texture, as Godot's and Unity's keep their spot lights'. One loop
-// in the ground's shader calls the atlas variant's function form once per
+// engine_consumer_gl_lights atlas|array [OUT.png]: engine_consumer_gl's box
+// lit by two spot lights whose maps the OpenGL engine keeps in one texture:
+// as its two tiles (atlas), as Godot's and Unity's keep their spot lights',
+// or as its two layers (array), as Filament's and Babylon.js's keep theirs.
+// One loop in the ground's shader calls that layout's function form once per
 // light, each call naming that light's matrix, ShadowParams `light` and
-// `sampling` and its tile (docs/techniques.md, "Map layouts"). Light 0 is
-// engine_consumer's light, drawn into the atlas's right tile; light 1 the
-// same light mirrored in x with half its size, in the left. The picture is
-// light 0's visibility, which must be engine_consumer's (by default
-// shadow_gl_atlas.png); it prints each light's penumbra.
+// `sampling` and its tile or layer (docs/techniques.md, "Map layouts").
+// Light 0 is engine_consumer's light, in the atlas's right tile or the
+// array's layer 1; light 1 the same light mirrored in x with half its size,
+// in the left tile or layer 0. The picture is light 0's visibility, which
+// must be engine_consumer's (by default shadow_gl_LAYOUT.png); it prints
+// each light's penumbra.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -24,35 +26,35 @@ using namespace gl_engine;
 constexpr int kLights = 2;
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "engine_consumer_gl_atlas: %s\n", message.c_str());
+  std::fprintf(stderr, "engine_consumer_gl_lights: %s\n", message.c_str());
   return 1;
 }
 
-// A light of the atlas as the engine keeps it in its uniform arrays.
-struct AtlasLight {
+// A light as the engine keeps it in its uniform arrays.
+struct Light {
   Mat4 matrix{};
   std::vector<float> light;     // ShadowParams' `light` for it
   std::vector<float> sampling;  // and `sampling`
-  std::vector<float> tile;      // its tile: u, v, width, height
-  int viewport_x = 0;           // the tile's first column in the atlas
+  std::vector<float> tile;      // atlas: its tile, u, v, width, height
+  int place = 0;                // its tile's column of maps in the atlas, or its layer
 };
 
-AtlasLight atlas_light(float size, bool mirrored, int tile) {
-  AtlasLight out;
+Light make_light(float size, bool mirrored, int place) {
+  Light out;
   out.matrix = light_matrix();
   if (mirrored) out.matrix[0] = -out.matrix[0];  // x negated before the projection
   const float m = kMapSize;
   out.light = {size, kFrustumWidth, kNear, size / kFrustumWidth};
   out.sampling = {2 / m, 0.0f, 1 / kFar, kFar};  // the ground is no caster: no bias
-  out.tile = {0.5f * float(tile), 0.0f, 0.5f, 1.0f};
-  out.viewport_x = tile * kMapSize;
+  out.tile = {0.5f * float(place), 0.0f, 0.5f, 1.0f};
+  out.place = place;
   return out;
 }
 
-// The block's values: the atlas's size; the members each call names
-// instead are left zero, the rest unread.
-nlohmann::json block_values() {
-  const float w = kLights * kMapSize, h = kMapSize;
+// The block's values: the texture's size (an atlas's; an array's layers');
+// the members each call names instead are left zero, the rest unread.
+nlohmann::json block_values(bool array) {
+  const float w = array ? kMapSize : kLights * kMapSize, h = kMapSize;
   const std::vector<float> zero(4, 0.0f);
   return {{"shadow_map_size", {w, h, 1 / w, 1 / h}},
           {"light", zero},
@@ -60,7 +62,8 @@ nlohmann::json block_values() {
           {"screen_size", zero},
           {"source_size", zero},
           {"minmax_info", zero},
-          {"map_tile", zero}};
+          {"map_tile", zero},
+          {"map_layer", zero}};
 }
 
 const char* kPositionStage =
@@ -74,9 +77,9 @@ const char* kPositionStage =
     "  gl_Position = camera * vec4(position, 1.0);\n"
     "}\n";
 
-// Every light's tile of the atlas, bound as its depth target: the box from
-// that light, through the tile's viewport.
-bool draw_tiles(const std::vector<AtlasLight>& lights, std::string& log) {
+// Every light's map, drawn into the bound depth target: the box from that
+// light, through its tile's viewport or into its layer.
+bool draw_maps(const std::vector<Light>& lights, GLuint map, bool array, std::string& log) {
   const GLuint depth_program = link(kPositionStage, "#version 330 core\nvoid main() {}\n", log);
   if (depth_program == 0) return false;
   glUseProgram(depth_program);
@@ -86,29 +89,37 @@ bool draw_tiles(const std::vector<AtlasLight>& lights, std::string& log) {
   glClear(GL_DEPTH_BUFFER_BIT);
   const std::vector<Vec3> box = box_triangles();
   glBindVertexArray(vertex_array(box));
-  for (const AtlasLight& light : lights) {
+  for (const Light& light : lights) {
     glUniformMatrix4fv(glGetUniformLocation(depth_program, "camera"), 1, GL_FALSE,
                        light.matrix.data());
-    glViewport(light.viewport_x, 0, kMapSize, kMapSize);
+    if (array) {
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, map, 0, light.place);
+      glViewport(0, 0, kMapSize, kMapSize);
+      glClear(GL_DEPTH_BUFFER_BIT);
+    } else {
+      glViewport(light.place * kMapSize, 0, kMapSize, kMapSize);
+    }
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(box.size()));
   }
   return true;
 }
 
 // The ground's program: every light's visibility in one loop, light i's
-// in channel i.
-GLuint shading_program(const std::string& function, std::string& log) {
+// in channel i; `light_places` are the tiles (vec4) or the layers (int).
+GLuint shading_program(const std::string& function, bool array, std::string& log) {
   const std::string stage = "#version 330 core\n" + function +
                             "\nin vec4 light_clip_position[2];\n"
                             "uniform vec4 light_params[2];\n"
                             "uniform vec4 light_sampling[2];\n"
-                            "uniform vec4 light_tiles[2];\n"
+                            "uniform " +
+                            (array ? "int" : "vec4") +
+                            " light_places[2];\n"
                             "out vec4 colour;\n"
                             "void main() {\n"
                             "  colour = vec4(0.0, 0.0, 0.0, 1.0);\n"
                             "  for (int i = 0; i < 2; ++i) {\n"
                             "    colour[i] = penumbra_visibility(light_clip_position[i],\n"
-                            "        light_params[i], light_sampling[i], light_tiles[i]);\n"
+                            "        light_params[i], light_sampling[i], light_places[i]);\n"
                             "  }\n"
                             "}\n";
   return link(kPositionStage, stage, log);
@@ -120,13 +131,17 @@ GLint element(GLuint program, std::string name, int i) {
   return glGetUniformLocation(program, name.c_str());
 }
 
-void set_lights(GLuint program, const std::vector<AtlasLight>& lights) {
+void set_lights(GLuint program, const std::vector<Light>& lights, bool array) {
   for (int i = 0; i < kLights; ++i) {
-    const AtlasLight& light = lights[std::size_t(i)];
+    const Light& light = lights[std::size_t(i)];
     glUniformMatrix4fv(element(program, "lights", i), 1, GL_FALSE, light.matrix.data());
     glUniform4fv(element(program, "light_params", i), 1, light.light.data());
     glUniform4fv(element(program, "light_sampling", i), 1, light.sampling.data());
-    glUniform4fv(element(program, "light_tiles", i), 1, light.tile.data());
+    if (array) {
+      glUniform1i(element(program, "light_places", i), light.place);
+    } else {
+      glUniform4fv(element(program, "light_places", i), 1, light.tile.data());
+    }
   }
 }
 
@@ -137,25 +152,31 @@ std::ptrdiff_t penumbra_pixels(const std::vector<png_byte>& grey) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = argc > 1 ? argv[1] : "shadow_gl_atlas.png";
+  const std::string layout = argc > 1 ? argv[1] : "";
+  if (layout != "atlas" && layout != "array") {
+    return fail("usage: engine_consumer_gl_lights atlas|array [OUT.png]");
+  }
+  const bool array = layout == "array";
+  const std::string out = argc > 2 ? argv[2] : "shadow_gl_" + layout + ".png";
   nlohmann::json reflection;
   std::string log;
   const penumbra::shaders::Function* function =
-      pcss_function({.map_encoding = "perspective", .map_layout = "atlas"}, reflection, log);
+      pcss_function({.map_encoding = "perspective", .map_layout = layout}, reflection, log);
   if (function == nullptr) return fail(log);
   if (!create_context()) return fail("no EGL display can make an OpenGL 3.3 core context current");
 
-  const std::vector<AtlasLight> lights = {atlas_light(kLightSize, false, 1),
-                                          atlas_light(0.5f * kLightSize, true, 0)};
-  const GLuint atlas = depth_target(kLights * kMapSize, kMapSize);
-  if (!draw_tiles(lights, log)) return fail("the depth program: " + log);
+  const std::vector<Light> lights = {make_light(kLightSize, false, 1),
+                                     make_light(0.5f * kLightSize, true, 0)};
+  const GLuint map = array ? depth_target(kMapSize, kMapSize, kLights)
+                           : depth_target(kLights * kMapSize, kMapSize);
+  if (!draw_maps(lights, map, array, log)) return fail("the depth program: " + log);
 
   picture_target();
-  const GLuint ground_program = shading_program(std::string(function->text), log);
+  const GLuint ground_program = shading_program(std::string(function->text), array, log);
   if (ground_program == 0) return fail("the ground's program: " + log);
   glUseProgram(ground_program);
-  set_lights(ground_program, lights);
-  if (!bind_function_inputs(ground_program, reflection, atlas, block_values(), log)) {
+  set_lights(ground_program, lights, array);
+  if (!bind_function_inputs(ground_program, reflection, map, block_values(array), log)) {
     return fail(log);
   }
   draw_ground(ground_program);
@@ -166,7 +187,7 @@ int main(int argc, char** argv) {
   if (penumbra_pixels(second) == 0) return fail("light 1 casts no soft shadow");
   if (!write_png(out, first)) return fail("cannot write " + out);
   std::printf(
-      "engine_consumer_gl_atlas: %s on %s: wrote %s (%dx%d; pixels in the penumbra: light 0 "
+      "engine_consumer_gl_lights: %s on %s: wrote %s (%dx%d; pixels in the penumbra: light 0 "
       "%td, light 1 %td)\n",
       std::string(function->variant).c_str(),
       reinterpret_cast<const char*>(glGetString(GL_RENDERER)), out.c_str(), kImageSize, kImageSize,
