@@ -64,13 +64,11 @@ std::string glsl_version(Target target) {
 // an int): `call`'s arguments, or nothing.
 std::string call_arguments(const std::optional<CallLight>& call, bool hlsl) {
   if (!call) return {};
-  std::string out;
-  for (const std::array<float, 4>* value : {&call->light, &call->sampling, &call->map_tile}) {
-    if (value == &call->map_tile && call->map_layer) break;
-    out += ", " + row_literal({(*value)[0], (*value)[1], (*value)[2], (*value)[3]}, hlsl);
-  }
-  if (call->map_layer) out += ", " + std::to_string(*call->map_layer);
-  return out;
+  const auto vector = [&](const std::array<float, 4>& v) {
+    return ", " + row_literal({v[0], v[1], v[2], v[3]}, hlsl);
+  };
+  return vector(call->light) + vector(call->sampling) +
+         (call->map_layer ? ", " + std::to_string(*call->map_layer) : vector(call->map_tile));
 }
 
 }  // namespace

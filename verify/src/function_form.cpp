@@ -80,7 +80,7 @@ Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, Ca
     // the block's members the call replaces are left zero, so that a
     // function that read them instead fails.
     std::optional<int> layer;
-    if (camera.fixture.placed->layers > 0) {
+    if (camera.fixture.layout() == MapLayout::array) {
       layer = static_cast<int>(draw.params.at("map_layer")[0]);
     }
     draw.call = CallLight{draw.params.at("light"), draw.params.at("sampling"),

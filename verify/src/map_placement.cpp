@@ -53,7 +53,7 @@ Result<SceneFixture> placed_fixture(Engine& engine, const SceneFixture& fixture,
 
 reference::SamplingPrecision placement_precision(const SceneFixture& fixture,
                                                  reference::SamplingPrecision precision) {
-  if (fixture.placed && fixture.placed->layers == 0) {
+  if (fixture.layout() == MapLayout::atlas) {
     precision.coordinate_error =
         reference::atlas_coordinate_error(fixture.placed->width, fixture.placed->height);
   }

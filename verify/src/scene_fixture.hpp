@@ -53,6 +53,11 @@ struct SceneFixture {
 
   // What a device uploads as the map: the atlas or array, or the map itself.
   const FloatImage& device_map() const { return placed ? *placed : normalized_depth; }
+  // The layout the devices read the map in: an array's placement has layers.
+  MapLayout layout() const {
+    if (!placed) return MapLayout::single;
+    return placed->layers > 0 ? MapLayout::array : MapLayout::atlas;
+  }
 
   // The depth image the map's readers sample: D32_SFLOAT unless encoded.
   DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }

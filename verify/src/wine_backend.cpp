@@ -248,10 +248,10 @@ class WineBackend final : public Backend {
               .first;
     }
     RuntimeMap& own = known->second;
-    if (!fixture.placed) return &own;
+    const MapLayout layout = fixture.layout();
+    if (layout == MapLayout::single) return &own;
     // An atlas or array variant's: the map this runtime drew, placed as the
     // fixture's is, which then reports the map's depth check.
-    const MapLayout layout = fixture.placed->layers > 0 ? MapLayout::array : MapLayout::atlas;
     const std::string placed_key = key + " " + std::string(to_string(layout));
     if (auto placed = maps_.find(placed_key); placed != maps_.end()) return &placed->second;
     PENUMBRA_TRY_ASSIGN(D3dMap uploaded,
