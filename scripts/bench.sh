@@ -19,6 +19,10 @@
 #                                     binds, against the uncapped walk, on busy
 #                                     maps and the report's stage
 #                                     (penumbra_bench_capped, CPU only)
+#   scripts/bench.sh cascades [ARGS]  cascaded variants' reference on the cascaded
+#                                     stage: error per cascade against the exact
+#                                     directional light, the jump at each boundary
+#                                     (penumbra_bench_cascades, CPU only)
 #   scripts/bench.sh jobs [ARGS]      verify and report with --jobs 1 against
 #                                     --jobs N (every core), side by side, and
 #                                     their results compared (penumbra_bench_jobs)
@@ -41,7 +45,7 @@ source scripts/lib/setup.sh
 
 bench=minmax
 if [[ $# -gt 0 && ($1 == minmax || $1 == bytecode || $1 == build || $1 == accuracy ||
-  $1 == capped || $1 == jobs || $1 == gpu || $1 == verify) ]]; then
+  $1 == capped || $1 == cascades || $1 == jobs || $1 == gpu || $1 == verify) ]]; then
   bench=$1
   shift
 fi

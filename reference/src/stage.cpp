@@ -58,6 +58,7 @@ Stage report_stage() {
   };
   scene.plane_z0 = 16.0;
   stage.ground_half_width = 4.2;
+  stage.ground_y = {-4.2, 4.2};
   scene.map_width = 512;
   scene.map_height = 512;
   scene.receivers_width = 320;
@@ -83,8 +84,8 @@ StageView view(const Stage& stage, int width, int height) {
       if (d[2] > 0.0) {  // the ground plane z = z0 (level: the stage's plane has no slope)
         const double t = (scene.plane_z0 - camera.eye[2]) / d[2];
         const double x = camera.eye[0] + t * d[0], y = camera.eye[1] + t * d[1];
-        if (t > 0.0 && std::abs(x) <= stage.ground_half_width &&
-            std::abs(y) <= stage.ground_half_width) {
+        if (t > 0.0 && std::abs(x) <= stage.ground_half_width && y >= stage.ground_y[0] &&
+            y <= stage.ground_y[1]) {
           nearest = t;
           surface = Surface::ground;
         }

@@ -37,8 +37,9 @@ struct CameraFrame {
 CameraFrame camera_frame(const Camera& camera, int width, int height);
 
 struct Stage {
-  Scene scene;                     // the boxes, light and receiver plane (the ground)
-  double ground_half_width = 4.2;  // the ground tile: |x|, |y| <= this, inside the map
+  Scene scene;                                // the boxes, light and receiver plane (the ground)
+  double ground_half_width = 4.2;             // the ground tile: |x| <= this, inside the map ...
+  std::array<double, 2> ground_y{-4.2, 4.2};  // ... and y in this range
   Camera camera;
 
   bool operator==(const Stage&) const = default;
