@@ -1,6 +1,7 @@
 #include "penumbra/model/map_layout.hpp"
 
 #include "penumbra/model/enum_names.hpp"
+#include "penumbra/model/shader_contract.hpp"
 #include "penumbra/model/target_traits.hpp"
 
 namespace penumbra {
@@ -28,6 +29,13 @@ std::string allowed_map_layouts() {
 MapLayout map_layout(const VariantKeys& keys) {
   return keys.map_layout ? parse_map_layout(*keys.map_layout).value_or(MapLayout::single)
                          : MapLayout::single;
+}
+
+std::string layouts_refused(Technique technique) {
+  if (!describe(technique).reads_minmax) return {};
+  return std::string(to_string(technique)) +
+         " reads a min-max mip built over a whole texture: its nodes would mix an atlas's tiles, "
+         "and it has no levels per array layer";
 }
 
 std::string layout_unsupported(MapLayout layout, Target target) {

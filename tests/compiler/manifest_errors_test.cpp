@@ -245,17 +245,21 @@ TEST(ManifestErrors, RotationIsIgnWhereSamplesAreBaked) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": 3,
                                               "rotation": "ign"})")),
                    "perms.json: /sets/1/rotation: key 'rotation' is used by none of this set's "
-                   "techniques");
+                   "techniques"
+                   "; techniques that use it: pcf_poisson, pcss, pcss_minmax");
 }
 
 TEST(ManifestErrors, TraversalAndMaxNodesOnlyWhereUsed) {
   expect_bad_input(
       manifest_error(
           with_set(R"({"technique": "pcf_grid", "kernel": 3, "traversal": "brute_force"})")),
-      "perms.json: /sets/1/traversal: key 'traversal' is used by none of this set's techniques");
+      "perms.json: /sets/1/traversal: key 'traversal' is used by none of this set's techniques"
+      "; techniques that use it: minmax_pcf, backprojection, "
+      "bitmask_backprojection");
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 8, "max_nodes": 64})")),
-      "perms.json: /sets/1/max_nodes: key 'max_nodes' is used by none of this set's techniques");
+      "perms.json: /sets/1/max_nodes: key 'max_nodes' is used by none of this set's techniques"
+      "; techniques that use it: backprojection, bitmask_backprojection");
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "minmax_pcf", "traversal": "brute_force"})")),
       "perms.json: /sets/1: technique minmax_pcf needs key 'kernel'; minmax_pcf uses "
@@ -305,7 +309,9 @@ TEST(ManifestErrors, MapEncodingIsAnEncodingOfATechniqueThatTakesOne) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "screen_blur", "blur_radius": 4,
                                               "map_encoding": "perspective"})")),
                    "perms.json: /sets/1/map_encoding: key 'map_encoding' is used by none of this "
-                   "set's techniques");
+                   "set's techniques"
+                   "; techniques that use it: hard, pcf_grid, pcf_poisson, pcss, "
+                   "minmax_pcf, backprojection, pcss_minmax, bitmask_backprojection");
   const std::string both = R"({"schema": 1, "sets": [
     {"technique": "hard", "map_encoding": ["linear", "perspective_reversed"]}],
     "exclude": [{"map_encoding": "linear", "target": "spirv"}]})";
@@ -332,7 +338,10 @@ TEST(ManifestErrors, MapLayoutIsALayoutOfATechniqueThatTakesOne) {
   expect_bad_input(manifest_error(with_set(R"({"technique": "minmax_pcf", "kernel": 3,
                                               "map_layout": "atlas"})")),
                    "perms.json: /sets/1/map_layout: key 'map_layout' is used by none of this "
-                   "set's techniques");
+                   "set's techniques"
+                   " (minmax_pcf reads a min-max mip built over a whole texture: its "
+                   "nodes would mix an atlas's tiles, and it has no levels per array "
+                   "layer); techniques that use it: hard, pcf_grid, pcf_poisson, pcss");
   const std::string both = R"({"schema": 1, "sets": [
     {"technique": "pcf_grid", "kernel": 3, "map_encoding": ["linear", "perspective"],
      "map_layout": ["single", "atlas"]}],
@@ -380,7 +389,8 @@ TEST(ManifestErrors, KeyNoTechniqueUses) {
   expect_bad_input(manifest_error(with_set(R"({"technique": ["hard", "pcf_grid"], "kernel": 3,
                                               "pcf_samples": 16})")),
                    "perms.json: /sets/1/pcf_samples: key 'pcf_samples' is used by none of this "
-                   "set's techniques");
+                   "set's techniques"
+                   "; techniques that use it: pcf_poisson, pcss, pcss_minmax");
 }
 
 TEST(ManifestErrors, SetsAndExclusions) {
@@ -435,10 +445,12 @@ TEST(ManifestErrors, BlurKeysOnlyForScreenBlur) {
   expect_bad_input(
       manifest_error(with_set(R"({"technique": "pcf_grid", "kernel": 3, "blur_radius": 4})")),
       "perms.json: /sets/1/blur_radius: key 'blur_radius' is used by none of this set's "
-      "techniques");
+      "techniques"
+      "; techniques that use it: screen_blur");
   expect_bad_input(manifest_error(with_set(R"({"technique": "hard", "depth_aware": true})")),
                    "perms.json: /sets/1/depth_aware: key 'depth_aware' is used by none of this "
-                   "set's techniques");
+                   "set's techniques"
+                   "; techniques that use it: screen_blur");
   expect_bad_input(manifest_error(with_set(R"({"technique": "screen_blur", "depth_aware": true})")),
                    "perms.json: /sets/1: technique screen_blur needs key 'blur_radius'; "
                    "screen_blur uses blur_radius, depth_aware (optional)");

@@ -76,6 +76,7 @@ TEST(ManifestExpand, DefaultLibrary) {
                                   "pcss_b16_p16_poisson_perspective",
                                   "pcss_b16_p16_poisson_perspective_reversed",
                                   "pcss_b16_p16_poisson_receiver_plane",
+                                  "pcss_b16_p16_poisson_receiver_plane_orthographic_array",
                                   "pcss_b16_p16_poisson_receiver_plane_orthographic_atlas",
                                   "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_array",
                                   "pcss_b16_p16_poisson_receiver_plane_perspective_reversed_atlas",

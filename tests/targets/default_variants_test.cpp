@@ -18,7 +18,7 @@ TEST(DefaultVariants, PassEveryTargetsRules) {
   auto variants =
       load_variants(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "permutations" / "default.json");
   ASSERT_TRUE(variants.ok()) << variants.error().to_string();
-  ASSERT_EQ(variants->size(), 84u);
+  ASSERT_EQ(variants->size(), 85u);
   const Pipeline pipeline(embedded_shaderlib(), std::nullopt);
   std::set<std::pair<Target, const PassStageSource*>> shared;
   // Each shared shader compiled once per target and the map encoding it is

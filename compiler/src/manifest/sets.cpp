@@ -13,6 +13,25 @@
 namespace penumbra::manifest_detail {
 namespace {
 
+// "key 'K' is used by none of this set's techniques", why not where the
+// model says, and the techniques that use it.
+std::string unused_key(const AxisValues& axes, Axis axis) {
+  std::string out =
+      "key '" + std::string(axis_name(axis)) + "' is used by none of this set's techniques";
+  if (axis == Axis::map_layout) {
+    for (Technique technique : axes.technique) {
+      const std::string why = layouts_refused(technique);
+      if (!why.empty()) out += " (" + why + ")";
+    }
+  }
+  std::string users;
+  for (Technique technique : kAllTechniques) {
+    if (!uses(technique, axis)) continue;
+    users += (users.empty() ? "" : ", ") + std::string(to_string(technique));
+  }
+  return out + "; techniques that use it: " + users;
+}
+
 // Every technique has the keys it needs, and every key given is used by one of
 // them (a key nobody uses is most likely a mistake).
 Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
@@ -31,9 +50,7 @@ Status check_set_keys(const JsonNode& node, const AxisValues& axes) {
                           describe_axes(technique));
       }
     }
-    if (given && !used) {
-      return node.member(key).error("key '" + key + "' is used by none of this set's techniques");
-    }
+    if (given && !used) return node.member(key).error(unused_key(axes, axis));
   }
   return {};
 }

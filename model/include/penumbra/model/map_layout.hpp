@@ -31,6 +31,11 @@ std::string allowed_map_layouts();
 // unset (or not a name parse_map_layout() takes).
 MapLayout map_layout(const VariantKeys& keys);
 
+// Why `technique` takes no map_layout, for a manifest's message: the
+// min-max techniques' mip would mix an atlas's tiles and an array's layers.
+// Empty where it takes one, or has no reason to give.
+std::string layouts_refused(Technique technique);
+
 // Why `layout` cannot be read on `target` (array on hlsl_dx9: Direct3D 9 has
 // no texture arrays), naming both; empty where it can.
 std::string layout_unsupported(MapLayout layout, Target target);
