@@ -75,7 +75,10 @@ void print_summary(const VerifyReport& report, bool quiet) {
                 << (c.map_format == DepthFormat::d32_float
                         ? std::string()
                         : ", " + std::string(to_string(c.map_format)) + " map")
-                << "] on the camera's stage: ";
+                << "] on "
+                << (c.cascade ? "the cascaded stage, cascade " + std::to_string(*c.cascade)
+                              : std::string("the camera's stage"))
+                << ": ";
       if (!c.error.empty()) {
         std::cout << c.error << "\n";
         continue;

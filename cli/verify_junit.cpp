@@ -117,8 +117,10 @@ JunitReport to_junit(const VerifyReport& report) {
                                      std::pair{"deferred_mask", &report.deferred_checks}}) {
     for (const EngineFormCheck& c : *checks) {
       JunitCase check = make_case(
-          form, c.variant + "/" + std::string(to_string(c.target)) + "/" + c.backend, c.seconds,
-          c.pass,
+          form,
+          c.variant + "/" + std::string(to_string(c.target)) + "/" + c.backend +
+              (c.cascade ? "/cascade" + std::to_string(*c.cascade) : ""),
+          c.seconds, c.pass,
           std::to_string(c.comparison.over_tolerance) + " of " +
               std::to_string(c.comparison.compared) + " pixels over the tolerance (max error " +
               number(c.comparison.max_abs_error) + "), camera agreement " +

@@ -14,6 +14,8 @@
 #include "hlsl_compiler.hpp"
 #include "penumbra/compiler/targets.hpp"
 #include "penumbra/model/map_encoding.hpp"
+#include "penumbra/model/map_layout.hpp"
+#include "penumbra/reference/cascades.hpp"
 #include "penumbra/reference/scene.hpp"
 #include "penumbra/verify/verify.hpp"
 
@@ -82,15 +84,23 @@ TEST(Direct3DRuntimes, EveryDefaultVariantMatchesTheReferenceOnItsRuntime) {
     EXPECT_EQ(maps[runtime], reference::builtin_scenes().size() * encodings.size()) << runtime;
   }
   // Every function form inside an engine's own HLSL, compiled to bytecode,
-  // loaded by its target's runtime and drawn over the report's stage.
+  // loaded by its target's runtime and drawn over the report's stage, and
+  // a directional light's in an atlas or array over each cascade of the
+  // cascaded stage too.
   std::size_t function_forms = 0, deferred_passes = 0;
   for (const LibraryVariant& entry : (*built)->library().variants) {
-    function_forms += entry.function.size();
+    const Variant& variant = entry.variant;
+    const std::size_t stages = map_encoding(variant.keys) == MapEncoding::orthographic &&
+                                       map_layout(variant.keys) != MapLayout::single
+                                   ? 1 + reference::cascaded_stage().cascades.size()
+                                   : 1;
+    function_forms += stages * entry.function.size();
     if (const auto deferred = entry.reflection.find(PassKind::deferred);
         deferred != entry.reflection.end()) {
-      deferred_passes += std::ranges::count_if(deferred->second, [](const auto& by_target) {
-        return kRuntimes.contains(by_target.first);
-      });
+      deferred_passes +=
+          stages * std::ranges::count_if(deferred->second, [](const auto& by_target) {
+            return kRuntimes.contains(by_target.first);
+          });
     }
   }
   EXPECT_EQ(report->function_checks.size(), function_forms);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "fixtures.hpp"
@@ -96,12 +97,33 @@ TEST(Cascades, ACascadesSceneHasTheStagesExactVisibility) {
   }
 }
 
+TEST(Cascades, ACascadesStageSeesTheStagePixelForPixel) {
+  const CascadedStage stage = cascaded_stage();
+  const StageView whole = reference::view(stage.stage, 160, 120);
+  for (std::size_t c = 0; c < stage.cascades.size(); ++c) {
+    const Cascade& cascade = stage.cascades[c];
+    EXPECT_EQ(cascade.centre_x, 0.0) << "cascade " << c;
+    const Stage moved = cascade_stage(stage, c);
+    Scene expected = cascade_scene(stage, c);
+    expected.name = "cascaded_stage, cascade " + std::to_string(c);
+    EXPECT_EQ(moved.scene, expected);
+    const StageView view = reference::view(moved, 160, 120);
+    ASSERT_EQ(view.surfaces, whole.surfaces) << "cascade " << c;
+    for (std::size_t i = 0; i < view.points.size(); ++i) {
+      if (view.surfaces[i] == Surface::none) continue;
+      EXPECT_NEAR(view.points[i][0], whole.points[i][0] - cascade.centre_x, 1e-9);
+      EXPECT_NEAR(view.points[i][1], whole.points[i][1] - cascade.centre_y, 1e-9);
+      EXPECT_NEAR(view.points[i][2], whole.points[i][2], 1e-9);
+    }
+  }
+}
+
 // The seams' mean jump over the penumbra pixels of each boundary's band.
 std::vector<SeamFigures> penumbra_seams(const CascadedStage& stage, const Variant& variant,
                                         const std::vector<CascadeMap>& maps) {
   const Scene& scene = stage.stage.scene;
   const StageView view =
-      reference::view(stage.stage, scene.receivers_width, scene.receivers_height);
+      reference::view(stage.stage, 2 * scene.receivers_width, 2 * scene.receivers_height);
   const FloatImage exact = exact_visibility_image(scene, view);
   std::vector<bool> penumbra(view.surfaces.size());
   for (std::size_t i = 0; i < penumbra.size(); ++i) {

@@ -164,10 +164,13 @@ class PictureReferences;  // penumbra/verify/stage_picture.hpp
 
 // `entry`'s function form for `target` drawn on `backend`, the scene's map
 // drawn on `engine` by the target's depth pass, from `stages`, judged
-// against a reference from `references` (function_form.cpp).
+// against a reference from `references` (function_form.cpp): on the
+// report's stage, or with `cascade` on the cascaded stage, called for that
+// cascade.
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
                                             PictureReferences& references, const Library& library,
-                                            const LibraryVariant& entry, Target target);
+                                            const LibraryVariant& entry, Target target,
+                                            std::optional<int> cascade);
 
 // `entry`'s query (or screen_blur's four passes), each loaded by `load`,
 // run on `engine` over the maps (and min-max mips) the scenes hold: the
@@ -177,10 +180,12 @@ Result<LoadedPasses> load_on_engine(Engine& engine, const LibraryVariant& entry,
 
 // `entry`'s deferred pass for `target` run on `backend`, the scene's map
 // drawn on `engine` by the target's depth pass, from `stages`, judged
-// against a reference from `references` (deferred_mask.cpp).
+// against a reference from `references` (deferred_mask.cpp); `cascade` as
+// check_function_form()'s.
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
                                             PictureReferences& references, const Library& library,
-                                            const LibraryVariant& entry, Target target);
+                                            const LibraryVariant& entry, Target target,
+                                            std::optional<int> cascade);
 
 // `draw` on `engine` over `fixture`'s map with `program`, the deferred pass
 // loaded for the Vulkan engine (the paths that run on it). A technique that

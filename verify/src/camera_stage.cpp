@@ -7,17 +7,28 @@
 #include "penumbra/model/map_encoding.hpp"
 #include "penumbra/model/map_layout.hpp"
 #include "penumbra/model/shadow_params.hpp"
+#include "penumbra/reference/cascades.hpp"
 #include "penumbra/reference/precision.hpp"
 #include "scene_truths.hpp"
 
 namespace penumbra {
 
 Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Library& library,
-                                 const LibraryVariant& entry, Target target,
-                                 DepthFormat map_format) {
+                                 const LibraryVariant& entry, Target target, DepthFormat map_format,
+                                 std::optional<int> cascade) {
   CameraStage out;
-  out.stage = reference::report_stage();
-  out.stage.scene = reference::for_map_encoding(out.stage.scene, map_encoding(entry.variant.keys));
+  const MapLayout layout = map_layout(entry.variant.keys);
+  MapPlacement placement = scene_placement(layout);
+  if (cascade) {
+    const reference::CascadedStage cascaded = reference::cascaded_stage();
+    out.stage = reference::cascade_stage(cascaded, std::size_t(*cascade));
+    placement.slot = *cascade;
+    placement.slots = int(cascaded.cascades.size());
+  } else {
+    out.stage = reference::report_stage();
+    out.stage.scene =
+        reference::for_map_encoding(out.stage.scene, map_encoding(entry.variant.keys));
+  }
   out.width = out.stage.scene.receivers_width;
   out.height = out.stage.scene.receivers_height;
   out.view = truths.view(out.stage, out.width, out.height);
@@ -25,32 +36,45 @@ Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Libr
                       load_executable(library, entry, PassKind::depth, target));
   PENUMBRA_TRY_ASSIGN(out.fixture, prepare_scene(engine, truths, depth.program, target,
                                                  out.stage.scene, out.view.receivers, map_format));
-  if (const MapLayout layout = map_layout(entry.variant.keys); layout != MapLayout::single) {
-    PENUMBRA_TRY_ASSIGN(out.fixture, placed_fixture(engine, out.fixture, layout));
+  if (layout != MapLayout::single) {
+    PENUMBRA_TRY_ASSIGN(out.fixture, placed_fixture(engine, out.fixture, placement));
   }
   out.depth = std::move(depth.program.reflection);
   return out;
 }
 
+std::vector<std::optional<int>> engine_form_stages(const Variant& variant) {
+  std::vector<std::optional<int>> out{std::nullopt};
+  if (map_encoding(variant.keys) != MapEncoding::orthographic ||
+      map_layout(variant.keys) == MapLayout::single) {
+    return out;
+  }
+  static const std::size_t cascades = reference::cascaded_stage().cascades.size();
+  for (std::size_t c = 0; c < cascades; ++c) out.emplace_back(int(c));
+  return out;
+}
+
 Result<const CameraStage*> CameraStages::get(const Library& library, const LibraryVariant& entry,
-                                             Target target) {
+                                             Target target, std::optional<int> cascade) {
   std::string key;  // stays empty without a depth pass: camera_stage() then errs
   if (const auto depth = entry.passes.find(PassKind::depth); depth != entry.passes.end()) {
     if (const auto files = depth->second.find(target); files != depth->second.end()) {
       key = std::string(to_string(target)) + " " +
             std::string(to_string(map_encoding(entry.variant.keys))) + " " +
             std::string(to_string(map_layout(entry.variant.keys))) + " " + files->second.vert +
-            " " + files->second.frag;
+            " " + files->second.frag + (cascade ? " cascade " + std::to_string(*cascade) : "");
     }
   }
   if (const auto known = stages_.find(key); known != stages_.end()) return &known->second;
   PENUMBRA_TRY_ASSIGN(CameraStage stage,
-                      camera_stage(engine_, truths_, library, entry, target, map_format_));
+                      camera_stage(engine_, truths_, library, entry, target, map_format_, cascade));
   return &stages_.emplace(key, std::move(stage)).first->second;
 }
 
-EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend) {
+EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend,
+                              std::optional<int> cascade) {
   EngineFormCheck check;
+  check.cascade = cascade;
   check.variant = entry.variant.name;
   check.target = target;
   check.backend = backend.name();

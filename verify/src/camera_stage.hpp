@@ -1,10 +1,12 @@
-// The report's stage as the engine-form checks see it (function_form.cpp,
-// deferred_mask.cpp): through the report's camera, on the map the target's
-// depth pass drew, and the judging of a picture of it.
+// The report's stage, or one cascade of the cascaded stage, as the
+// engine-form checks see it (function_form.cpp, deferred_mask.cpp): through
+// its camera, on the map the target's depth pass drew, and the judging of a
+// picture of it.
 #pragma once
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -29,11 +31,19 @@ struct CameraStage {
 
 // The report's stage for `entry`'s checks on `target` (its view and ray
 // cast from `truths`), its map drawn on `engine` into a `map_format` depth
-// image where prepare_scene() allows. Errors: loading or running the depth
-// pass.
+// image where prepare_scene() allows. With `cascade`, the cascaded stage
+// as that cascade's map sees it (reference::cascade_stage()), its map in
+// layer `cascade` of one per cascade, or tile `cascade` of as many. Errors:
+// loading or running the depth pass.
 Result<CameraStage> camera_stage(Engine& engine, SceneTruths& truths, const Library& library,
-                                 const LibraryVariant& entry, Target target,
-                                 DepthFormat map_format);
+                                 const LibraryVariant& entry, Target target, DepthFormat map_format,
+                                 std::optional<int> cascade = {});
+
+// The stages verify draws `variant`'s engine forms on: the report's (none),
+// then, for a directional light's variant (the orthographic encoding) in an
+// atlas or an array, as engines keep their cascades, each cascade of the
+// cascaded stage.
+std::vector<std::optional<int>> engine_form_stages(const Variant& variant);
 
 // The report's stage per depth pass and encoding, drawn once for every
 // engine-form check that reads it (camera_stage() of the first entry that
@@ -46,10 +56,11 @@ class CameraStages {
   // prepare_scene() allows.
   CameraStages(Engine& engine, DepthFormat map_format) : engine_(engine), map_format_(map_format) {}
 
-  // camera_stage(engine, truths, library, entry, target, map_format), or
-  // the one already drawn with the same depth pass files and encoding.
-  Result<const CameraStage*> get(const Library& library, const LibraryVariant& entry,
-                                 Target target);
+  // camera_stage(engine, truths, library, entry, target, map_format,
+  // cascade), or the one already drawn with the same depth pass files,
+  // encoding, layout and cascade.
+  Result<const CameraStage*> get(const Library& library, const LibraryVariant& entry, Target target,
+                                 std::optional<int> cascade = {});
 
  private:
   Engine& engine_;
@@ -58,8 +69,10 @@ class CameraStages {
   std::map<std::string, CameraStage> stages_;
 };
 
-// A check of `entry` on `target` by `backend`, its results to come.
-EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend);
+// A check of `entry` on `target` by `backend` (on `cascade`'s stage), its
+// results to come.
+EngineFormCheck started_check(const LibraryVariant& entry, Target target, const Backend& backend,
+                              std::optional<int> cascade);
 
 // The receivers a GPU may have used where it computed `exact` (3 channels: u,
 // v, z_r) in float32, in its own order and each pixel on its own: they may lie

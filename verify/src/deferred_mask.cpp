@@ -213,16 +213,17 @@ FloatImage rebuild_error_bound(const FloatImage& depth, const Matrix4& camera_in
 
 Result<EngineFormCheck> check_deferred_mask(Engine& engine, Backend& backend, CameraStages& stages,
                                             PictureReferences& references, const Library& library,
-                                            const LibraryVariant& entry, Target target) {
+                                            const LibraryVariant& entry, Target target,
+                                            std::optional<int> cascade) {
   const auto pass = entry.reflection.find(PassKind::deferred);
   if (pass == entry.reflection.end() || !pass->second.contains(target)) {
     return make_error(
         Error::Kind::bad_input, entry.variant.name,
         "the library has no deferred pass for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(const CameraStage* stage, stages.get(library, entry, target));
+  PENUMBRA_TRY_ASSIGN(const CameraStage* stage, stages.get(library, entry, target, cascade));
   const CameraStage& camera = *stage;
-  EngineFormCheck check = started_check(entry, target, backend);
+  EngineFormCheck check = started_check(entry, target, backend, cascade);
   const Matrix4 camera_matrix = camera_clip(camera.stage, camera.width, camera.height, target);
   const Matrix4 camera_inverse = inverse(camera_matrix);
   const LightClipDepth light_depth =
@@ -282,7 +283,7 @@ Result<EngineFormCheck> check_deferred_mask(Engine& engine, const Library& libra
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
   CameraStages stages(engine, map_format);
   PictureReferences references;
-  return check_deferred_mask(engine, *vulkan, stages, references, library, entry, target);
+  return check_deferred_mask(engine, *vulkan, stages, references, library, entry, target, {});
 }
 
 }  // namespace penumbra

@@ -17,8 +17,9 @@ namespace {
 std::vector<std::array<float, 3>> stage_triangles(const reference::Stage& stage) {
   std::vector<std::array<float, 3>> out = reference::triangles(stage.scene);
   const auto h = float(stage.ground_half_width);
+  const auto y0 = float(stage.ground_y[0]), y1 = float(stage.ground_y[1]);
   const auto z = float(stage.scene.plane_z0);
-  const std::array<float, 3> corners[] = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
+  const std::array<float, 3> corners[] = {{-h, y0, z}, {h, y0, z}, {h, y1, z}, {-h, y1, z}};
   for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(corners[k]);
   return out;
 }
@@ -53,16 +54,17 @@ FloatImage clip_error_bound(const FloatImage& clip, int w_channel, const LightCl
 
 Result<EngineFormCheck> check_function_form(Engine& engine, Backend& backend, CameraStages& stages,
                                             PictureReferences& references, const Library& library,
-                                            const LibraryVariant& entry, Target target) {
+                                            const LibraryVariant& entry, Target target,
+                                            std::optional<int> cascade) {
   const auto form = entry.function.find(target);
   if (form == entry.function.end()) {
     return make_error(
         Error::Kind::bad_input, entry.variant.name,
         "the library has no function form for target " + std::string(to_string(target)));
   }
-  PENUMBRA_TRY_ASSIGN(const CameraStage* stage, stages.get(library, entry, target));
+  PENUMBRA_TRY_ASSIGN(const CameraStage* stage, stages.get(library, entry, target, cascade));
   const CameraStage& camera = *stage;
-  EngineFormCheck check = started_check(entry, target, backend);
+  EngineFormCheck check = started_check(entry, target, backend, cascade);
   PENUMBRA_TRY_ASSIGN(const std::string text, read_file(library.root / form->second.file));
   SurfaceDraw draw;
   draw.library = &library;
@@ -121,7 +123,7 @@ Result<EngineFormCheck> check_function_form(Engine& engine, const Library& libra
   const std::unique_ptr<Backend> vulkan = vulkan_backend(engine);
   CameraStages stages(engine, map_format);
   PictureReferences references;
-  return check_function_form(engine, *vulkan, stages, references, library, entry, target);
+  return check_function_form(engine, *vulkan, stages, references, library, entry, target, {});
 }
 
 }  // namespace penumbra

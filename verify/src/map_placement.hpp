@@ -23,19 +23,25 @@ inline constexpr int kAtlasBorder = 16;
 inline constexpr int kArrayLayers = 3;
 inline constexpr int kArrayLayer = 1;
 
-// `map` (a map of `fixture`'s scene as stored) placed as `layout` (atlas or
-// array) reads it: the tile of an atlas kAtlasBorder texels larger on every
-// side, or layer kArrayLayer of kArrayLayers. Every other texel holds the
-// nearest depth the fixture's encoding stores: an occluder at the near
-// plane, so that a read that leaves the tile or layer shadows.
-FloatImage place_map(const SceneFixture& fixture, const FloatImage& map, MapLayout layout);
+// Where verify's scenes put a map for `layout`: layer kArrayLayer of
+// kArrayLayers, or the one tile of an atlas.
+MapPlacement scene_placement(MapLayout layout);
 
-// `fixture` with its map placed as `layout` reads it (place_map()), uploaded
-// on `engine`; ShadowParams name the tile (shadow_map_size the atlas's,
-// map_tile the tile's) or the layer (map_layer). The map's own images
-// (normalized_depth, linear_depth) stay for the reference. Errors: the
-// upload's.
-Result<SceneFixture> placed_fixture(Engine& engine, const SceneFixture& fixture, MapLayout layout);
+// `map` (a map of `fixture`'s scene as stored) placed as `placement` says:
+// layer `slot` of `slots`, or tile `slot` of an atlas of `slots` tiles in a
+// square grid, row by row, each tile kAtlasBorder texels larger on every
+// side than the map. Every other texel holds the nearest depth the
+// fixture's encoding stores: an occluder at the near plane, so that a read
+// that leaves the tile or layer shadows.
+FloatImage place_map(const SceneFixture& fixture, const FloatImage& map,
+                     const MapPlacement& placement);
+
+// `fixture` with its map placed (place_map()), uploaded on `engine`;
+// ShadowParams name the tile (shadow_map_size the atlas's, map_tile the
+// tile's) or the layer (map_layer). The map's own images (normalized_depth,
+// linear_depth) stay for the reference. Errors: the upload's.
+Result<SceneFixture> placed_fixture(Engine& engine, const SceneFixture& fixture,
+                                    const MapPlacement& placement);
 
 // `precision` widened by how far the float32 arithmetic that places a
 // receiver's samples in `fixture`'s atlas (shaderlib's map_uv()) may move

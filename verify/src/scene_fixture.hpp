@@ -29,6 +29,16 @@ struct DepthTruth {
 // `scene`'s truth for a `width` x `height` map.
 DepthTruth depth_truth(const reference::Scene& scene, int width, int height);
 
+// Where a placed texture holds a map: one of `slots` layers of an array, or
+// one of `slots` tiles of an atlas (map_placement.hpp).
+struct MapPlacement {
+  MapLayout layout = MapLayout::single;
+  int slot = 0;   // the map's layer, or its tile
+  int slots = 1;  // the array's layers, or the atlas's tiles
+
+  bool operator==(const MapPlacement&) const = default;
+};
+
 struct SceneFixture {
   reference::Scene scene;
   ParamBlock params;
@@ -50,14 +60,12 @@ struct SceneFixture {
   // one tile or one layer (map_placement.hpp), which the devices read
   // instead of it; `map` and `params` are its.
   std::shared_ptr<const FloatImage> placed;
+  MapPlacement placement;  // where `placed` holds the map; single without one
 
   // What a device uploads as the map: the atlas or array, or the map itself.
   const FloatImage& device_map() const { return placed ? *placed : normalized_depth; }
-  // The layout the devices read the map in: an array's placement has layers.
-  MapLayout layout() const {
-    if (!placed) return MapLayout::single;
-    return placed->layers > 0 ? MapLayout::array : MapLayout::atlas;
-  }
+  // The layout the devices read the map in.
+  MapLayout layout() const { return placement.layout; }
 
   // The depth image the map's readers sample: D32_SFLOAT unless encoded.
   DepthFormat map_format() const { return encoded ? encoded->format : DepthFormat::d32_float; }

@@ -48,6 +48,8 @@ nlohmann::json function_json(const EngineFormCheck& c) {
                         {"pass", c.pass}};
   // Float maps are every check that names no format.
   if (c.map_format != DepthFormat::d32_float) out["map_format"] = to_string(c.map_format);
+  // The report's stage is every check that names no cascade.
+  if (c.cascade) out["cascade"] = *c.cascade;
   if (!c.error.empty()) out["error"] = c.error;
   return out;
 }

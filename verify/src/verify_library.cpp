@@ -60,17 +60,20 @@ struct Context {
 // `backend`; one that cannot run fails with why.
 using EngineFormChecker = Result<EngineFormCheck> (*)(Engine&, Backend&, CameraStages&,
                                                       PictureReferences&, const Library&,
-                                                      const LibraryVariant&, Target);
+                                                      const LibraryVariant&, Target,
+                                                      std::optional<int>);
 EngineFormCheck run_engine_form(Context& ctx, EngineFormChecker checker, Backend& backend,
                                 PictureReferences& references, const LibraryVariant& entry,
-                                Target target) {
+                                Target target, std::optional<int> cascade) {
   const auto start = Clock::now();
-  auto check = checker(ctx.engine, backend, ctx.cameras, references, ctx.library, entry, target);
+  auto check =
+      checker(ctx.engine, backend, ctx.cameras, references, ctx.library, entry, target, cascade);
   EngineFormCheck out = check ? std::move(*check) : EngineFormCheck{};
   if (!check) {
     out.variant = entry.variant.name;
     out.target = target;
     out.backend = backend.name();
+    out.cascade = cascade;
     out.error = check.error().to_string();
   }
   out.seconds = seconds_since(start);
@@ -90,7 +93,8 @@ Result<std::shared_ptr<TargetScenes>> prepare_placed(Engine& engine, const Targe
                                                      MapLayout layout) {
   auto out = std::make_shared<TargetScenes>();
   for (const SceneFixture& fixture : scenes.scenes) {
-    PENUMBRA_TRY_ASSIGN(SceneFixture placed, placed_fixture(engine, fixture, layout));
+    PENUMBRA_TRY_ASSIGN(SceneFixture placed,
+                        placed_fixture(engine, fixture, scene_placement(layout)));
     out->scenes.push_back(std::move(placed));
   }
   return out;
@@ -206,22 +210,27 @@ Status prepare_minmax(Context& ctx, const LibraryVariant& entry, Target target,
 void run_engine_forms(Context& ctx, const VerifyPlan& plan, const LibraryVariant& entry,
                       Target target, PairChecks& report) {
   PictureReferences references;
-  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-    if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
-        !backend->missing().empty() || !plan.runs_path(backend->name())) {
-      continue;
+  const std::vector<std::optional<int>> stages = engine_form_stages(entry.variant);
+  for (const std::optional<int>& cascade : stages) {
+    for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+      if (!entry.function.contains(target) || !backend->draws_surfaces(target) ||
+          !backend->missing().empty() || !plan.runs_path(backend->name())) {
+        continue;
+      }
+      report.function_checks.push_back(
+          run_engine_form(ctx, check_function_form, *backend, references, entry, target, cascade));
     }
-    report.function_checks.push_back(
-        run_engine_form(ctx, check_function_form, *backend, references, entry, target));
   }
-  for (const std::unique_ptr<Backend>& backend : ctx.backends) {
-    if (!runs_pass(PassKind::deferred, entry.variant) || !backend->executes(target) ||
-        !backend->missing().empty() || !backend->not_executed(entry, target).empty() ||
-        !plan.runs_path(backend->name())) {
-      continue;
+  for (const std::optional<int>& cascade : stages) {
+    for (const std::unique_ptr<Backend>& backend : ctx.backends) {
+      if (!runs_pass(PassKind::deferred, entry.variant) || !backend->executes(target) ||
+          !backend->missing().empty() || !backend->not_executed(entry, target).empty() ||
+          !plan.runs_path(backend->name())) {
+        continue;
+      }
+      report.deferred_checks.push_back(
+          run_engine_form(ctx, check_deferred_mask, *backend, references, entry, target, cascade));
     }
-    report.deferred_checks.push_back(
-        run_engine_form(ctx, check_deferred_mask, *backend, references, entry, target));
   }
 }
 

@@ -252,10 +252,12 @@ class WineBackend final : public Backend {
     if (layout == MapLayout::single) return &own;
     // An atlas or array variant's: the map this runtime drew, placed as the
     // fixture's is, which then reports the map's depth check.
-    const std::string placed_key = key + " " + std::string(to_string(layout));
+    const std::string placed_key = key + " " + std::string(to_string(layout)) + " " +
+                                   std::to_string(fixture.placement.slot) + "/" +
+                                   std::to_string(fixture.placement.slots);
     if (auto placed = maps_.find(placed_key); placed != maps_.end()) return &placed->second;
     PENUMBRA_TRY_ASSIGN(D3dMap uploaded,
-                        engine_->upload_map(place_map(fixture, *own.stored, layout)));
+                        engine_->upload_map(place_map(fixture, *own.stored, fixture.placement)));
     RuntimeMap in_place{std::move(uploaded), own.stored, own.linear, own.checked};
     own.checked = true;
     return &maps_.emplace(placed_key, std::move(in_place)).first->second;

@@ -66,6 +66,12 @@ CascadedStage cascaded_stage();
 // the same in it as in the stage (the light is directional).
 Scene cascade_scene(const CascadedStage& stage, std::size_t c);
 
+// The whole stage as cascade `c`'s map sees it: cascade_scene() named
+// "cascaded_stage, cascade c", with the camera and the ground moved with
+// it, so that its view is the stage's, pixel for pixel, in that map's
+// coordinates. What verify draws a cascade's call on.
+Stage cascade_stage(const CascadedStage& stage, std::size_t c);
+
 // Which cascades shade a point at view depth `depth`: `first`, and `next`
 // with weight `next_weight` where the depth lies in the last `blend_band`
 // of first's range (linear across it). first is -1 beyond the last

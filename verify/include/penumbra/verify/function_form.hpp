@@ -6,6 +6,8 @@
 // reference on the receivers the GPU derived.
 #pragma once
 
+#include <optional>
+
 #include "penumbra/library/library.hpp"
 #include "penumbra/model/depth_format.hpp"
 #include "penumbra/reference/compare.hpp"
@@ -19,8 +21,11 @@ struct EngineFormCheck {
   std::string variant;
   Target target = Target::glsl450;
   std::string backend = "vulkan";  // the path that ran it (verify.json's backend)
-  Execution execution;             // how the shaders reached the device
-  std::string error;               // why it could not run (verify_library's checks)
+  // On the cascaded stage, the cascade it was called for (its map that
+  // cascade's layer or tile); none on the report's stage.
+  std::optional<int> cascade;
+  Execution execution;  // how the shaders reached the device
+  std::string error;    // why it could not run (verify_library's checks)
   // The depth image the map was read from: an encoded map's D24 or D16 on
   // the paths that read the Vulkan engine's map (docs/verification.md).
   DepthFormat map_format = DepthFormat::d32_float;
