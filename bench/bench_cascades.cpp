@@ -79,12 +79,11 @@ Status run(const std::string& manifest, const std::vector<std::string>& names) {
       std::snprintf(text, sizeof text, "%.4f (%zu) ", e.value(), e.count);
       per_cascade += text;
     }
-    const std::size_t count = stage.cascades.size();
-    for (const reference::SeamFigures& s : reference::seam_jumps(image, penumbra, count)) {
+    for (const reference::SeamFigures& s : reference::seam_jumps(image, penumbra)) {
       std::snprintf(text, sizeof text, "%.4f (%zu) ", s.mean, s.pixels);
       per_seam += text;
     }
-    for (const reference::SeamFigures& s : reference::seam_jumps(control, penumbra, count)) {
+    for (const reference::SeamFigures& s : reference::seam_jumps(control, penumbra)) {
       std::snprintf(text, sizeof text, "%.4f ", s.mean);
       per_control += text;
     }

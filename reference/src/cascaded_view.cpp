@@ -33,12 +33,16 @@ std::vector<CascadeMap> sized_as_nearest(const CascadedStage& stage, std::vector
 }
 
 FloatImage cascade_receivers(const StageView& view, const Cascade& cascade) {
+  LightParams light;  // the cascade's map, as project() takes it
+  light.projection = LightProjection::orthographic;
+  light.frustum_width = cascade.width;
   FloatImage out = view.receivers;
   for (std::size_t i = 0; i < view.points.size(); ++i) {
     if (view.surfaces[i] == Surface::none) continue;
     const auto& p = view.points[i];
-    out.data[i * 3] = float(0.5 + (p[0] - cascade.centre_x) / cascade.width);
-    out.data[i * 3 + 1] = float(0.5 + (p[1] - cascade.centre_y) / cascade.width);
+    const UV uv = project(light, p[0] - cascade.centre_x, p[1] - cascade.centre_y, p[2]);
+    out.data[i * 3] = float(uv.u);
+    out.data[i * 3 + 1] = float(uv.v);
   }
   return out;
 }
@@ -77,9 +81,8 @@ Result<CascadedImage> evaluate_cascaded(const Variant& variant, const CascadedSt
   return out;
 }
 
-std::vector<SeamFigures> seam_jumps(const CascadedImage& image, const std::vector<bool>& region,
-                                    std::size_t cascade_count) {
-  std::vector<SeamFigures> seams(cascade_count > 0 ? cascade_count - 1 : 0);
+std::vector<SeamFigures> seam_jumps(const CascadedImage& image, const std::vector<bool>& region) {
+  std::vector<SeamFigures> seams(image.cascades.empty() ? 0 : image.cascades.size() - 1);
   for (std::size_t i = 0; i < image.choices.size(); ++i) {
     const CascadeChoice& choice = image.choices[i];
     if (choice.next < 0 || !region[i]) continue;

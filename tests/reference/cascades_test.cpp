@@ -131,7 +131,7 @@ std::vector<SeamFigures> penumbra_seams(const CascadedStage& stage, const Varian
   }
   const Result<CascadedImage> image = evaluate_cascaded(variant, stage, view, maps);
   EXPECT_TRUE(image) << image.error().to_string();
-  return image ? seam_jumps(*image, penumbra, stage.cascades.size()) : std::vector<SeamFigures>{};
+  return image ? seam_jumps(*image, penumbra) : std::vector<SeamFigures>{};
 }
 
 TEST(Cascades, APenumbraSizedInTheWorldKeepsTheSeamsLow) {

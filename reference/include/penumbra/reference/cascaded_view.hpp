@@ -45,7 +45,7 @@ Result<CascadedImage> evaluate_cascaded(const Variant& variant, const CascadedSt
                                         const ShaderLimits& limits = {});
 
 // The jump a cascade boundary would show without blending: over the
-// pixels of `region` (non-zero where measured) that read both cascades of
+// pixels of `region` (true where measured) that read both cascades of
 // a boundary, |visibility in one - in the other|.
 struct SeamFigures {
   std::size_t pixels = 0;
@@ -53,7 +53,6 @@ struct SeamFigures {
   double max = 0.0;
 };
 // One per boundary: [c] between cascades c and c + 1.
-std::vector<SeamFigures> seam_jumps(const CascadedImage& image, const std::vector<bool>& region,
-                                    std::size_t cascade_count);
+std::vector<SeamFigures> seam_jumps(const CascadedImage& image, const std::vector<bool>& region);
 
 }  // namespace penumbra::reference
